@@ -1,0 +1,26 @@
+#pragma once
+// A lesson: the scene it simulates plus what the workbench shows around it.
+// Plain data: the loader fills it from a lesson file, the writer turns it back
+// into one, the workbench and the CLI read it.
+
+#include "sim/scene.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace forcelab {
+
+struct Lesson {
+    int format = 1;
+    QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
+    QString title;
+    int stage = 0;       ///< curriculum stage, 0 for the showcase, > 29 beyond the tutorial
+    QString text;        ///< teaching text (simple rich text)
+    QStringList challenges;
+    QStringList controls; ///< parameter names shown first in the Parameters dock
+    QStringList overlays; ///< overlays switched on, e.g. "velocity", "readout"
+    QString source;      ///< where it was loaded from (file path or ":/lessons/…")
+    sim::Scene scene;
+};
+
+} // namespace forcelab

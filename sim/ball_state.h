@@ -1,0 +1,56 @@
+#pragma once
+// The state of N balls, stored as columns so that hot loops are whole-array
+// expressions: positions and velocities are 2×N, the per-ball scalars are
+// vectors of length N. Ball i is column / entry i everywhere.
+
+#include "types.h"
+
+#include <span>
+#include <vector>
+
+namespace forcelab::sim {
+
+/// Density of the default mass: m = density × (4/3) π r³ (equal-density spheres).
+inline constexpr double kDefaultDensity = 1.0;
+
+/// Mass of an equal-density sphere of radius r (density 1).
+double sphereMass(double radius);
+
+/// One ball as a plain value, for building and inspecting a state.
+struct Ball {
+    Vec2 position{0.0, 0.0}; ///< px
+    Vec2 velocity{0.0, 0.0}; ///< px/s
+    double radius = 10.0;    ///< px
+    double mass = 0.0;       ///< mass units; 0 means sphereMass(radius)
+    Rgb color = 0x5080e0;
+    Vec2 home{0.0, 0.0};     ///< px, where homing pulls this ball
+};
+
+struct BallState {
+    Matrix2X position; ///< px
+    Matrix2X velocity; ///< px/s
+    VectorX radius;    ///< px
+    VectorX mass;      ///< mass units (density 1 sphere of radius r by default)
+    VectorX inverseMass; ///< 1/mass, kept in step with mass
+    std::vector<Rgb> color;
+    Matrix2X home;     ///< px, home of each ball's colour (homing)
+    /// Set by the collision stage: 1 if the ball touches another ball this step.
+    std::vector<unsigned char> colliding;
+
+    int size() const { return static_cast<int>(position.cols()); }
+    bool empty() const { return size() == 0; }
+
+    void clear();
+    /// Resizes to n balls; new entries are zero and must be filled by the caller.
+    void resize(int n);
+    /// Replaces the state with these balls; a mass of 0 becomes sphereMass(radius).
+    void assign(std::span<const Ball> balls);
+    /// Appends one ball (O(N): for spawning one ball at a time, not for building).
+    void append(const Ball& ball);
+    /// Writes ball i; a mass of 0 becomes sphereMass(radius).
+    void set(int i, const Ball& ball);
+    Ball ball(int i) const;
+    void setMass(int i, double mass);
+};
+
+} // namespace forcelab::sim

@@ -1,0 +1,98 @@
+#pragma once
+// A world: balls, the settings that act on them, and the step that moves them.
+
+#include "ball_state.h"
+#include "collision/collision_system.h"
+#include "force_model.h"
+#include "integrators.h"
+#include "scene.h"
+#include "world_settings.h"
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <string>
+
+namespace forcelab::sim {
+
+struct Energy {
+    double kinetic = 0.0;   ///< ½ Σ m v²
+    double potential = 0.0; ///< uniform gravity, mutual gravity, springs, homing, point force
+    double total() const { return kinetic + potential; }
+};
+
+/// Counters of one step (all of its sub-steps).
+struct StepStats {
+    std::int64_t forceEvaluations = 0; ///< calls of the force model (each evaluates all balls)
+    std::int64_t wallHits = 0;         ///< ball–wall bounces
+    std::int64_t pairsTested = 0;      ///< narrow-phase distance tests
+    std::int64_t contacts = 0;         ///< ball–ball contacts found
+    std::int64_t acceptedSteps = 0;    ///< rk45 only
+    std::int64_t rejectedSteps = 0;    ///< rk45 only
+    double seconds = 0.0;              ///< wall-clock time of the step
+    StepStats& operator+=(const StepStats& o);
+};
+
+class World {
+public:
+    World();
+    explicit World(const Scene& scene);
+
+    /// Replaces settings and balls and restarts time at 0. Returns an error
+    /// (and changes nothing) when the scene's settings are invalid.
+    std::optional<std::string> reset(const Scene& scene);
+
+    /// Pushes new settings between steps. An invalid set is refused whole: the
+    /// world keeps its settings and the message names the field.
+    std::optional<std::string> setSettings(const WorldSettings& settings);
+    const WorldSettings& settings() const { return m_settings; }
+
+    const BallState& balls() const { return m_balls; }
+    /// Direct access for tools that move balls (drag-and-throw, tests).
+    BallState& mutableBalls();
+
+    void setPointer(const PointerInput& pointer);
+    const PointerInput& pointer() const { return m_inputs.pointer; }
+
+    /// Advances the world by settings().time.dt.
+    void step();
+
+    double time() const { return m_time; }
+    std::int64_t stepCount() const { return m_stepCount; }
+    const StepStats& lastStep() const { return m_last; }
+    const StepStats& totals() const { return m_totals; }
+
+    Energy energy() const;
+    Vec2 momentum() const;          ///< Σ m v
+    double angularMomentum() const; ///< Σ m (x × v) about the origin, z component
+
+    /// Acceleration of every ball in the current state (for the readout).
+    Matrix2X accelerations() const;
+    /// The wind acting now on a reference ball, px/s² (+ blows right).
+    double wind() const { return m_inputs.wind; }
+    const std::vector<Contact>& contacts() const { return m_collisions.contacts(); }
+
+private:
+    void subStep(double h);
+    void drawStepRandomness(double h);
+    std::int64_t applyWalls(const Matrix2X& startPosition, const Matrix2X& startVelocity, double h);
+
+    WorldSettings m_settings;
+    BallState m_balls;
+    StepInputs m_inputs;
+    Integrator m_integrator;
+    CollisionSystem m_collisions;
+    std::mt19937_64 m_rng;
+    double m_time = 0.0;
+    std::int64_t m_stepCount = 0;
+    StepStats m_last;
+    StepStats m_totals;
+    Matrix2X m_startPosition; // scratch: state at the start of a sub-step
+    Matrix2X m_startVelocity;
+};
+
+/// Checks a full settings struct. Returns the first problem as
+/// "key.path: what is wrong" using the lesson file's key paths.
+std::optional<std::string> validateSettings(const WorldSettings& settings);
+
+} // namespace forcelab::sim

@@ -1,0 +1,145 @@
+#pragma once
+// Every setting of a world in one plain struct. The UI edits a copy and pushes
+// the whole struct to the world between steps (World::setSettings), so a step
+// never sees half an edit. A model whose `enabled` is false costs nothing: the
+// step does not call it.
+
+#include "types.h"
+
+#include <cstdint>
+
+namespace forcelab::sim {
+
+/// Reference ball used by the "radius" and "mass" scalings: a 10 px ball of
+/// density 1. A ball of this size gets exactly the model's nominal
+/// acceleration whatever the scaling, so switching scaling only changes how
+/// smaller and larger balls differ from it.
+inline constexpr double kReferenceRadius = 10.0;
+
+enum class WallModel {
+    Clamp,  ///< put the ball back on the wall; the overshoot is lost
+    Mirror, ///< reflect the overshoot back into the box
+    Exact,  ///< find the time of impact inside the step, bounce, finish the step
+};
+
+struct BoxSettings {
+    double width = 600.0;  ///< px
+    double height = 400.0; ///< px
+};
+
+struct WallSettings {
+    bool left = true;
+    bool right = true;
+    bool top = true;
+    bool bottom = true;
+    WallModel model = WallModel::Clamp;
+    double restitution = 1.0; ///< 1, share of the normal speed a bounce keeps, [0, 1]
+};
+
+struct GravitySettings {
+    bool enabled = false;
+    Vec2 g{0.0, 980.0}; ///< px/s², uniform acceleration (y down)
+};
+
+enum class DragLaw {
+    Linear,    ///< a = -k v
+    Quadratic, ///< a = -k |v| v
+};
+
+struct DragSettings {
+    bool enabled = false;
+    DragLaw law = DragLaw::Linear;
+    double k = 0.1; ///< 1/s for linear drag, 1/px for quadratic drag
+};
+
+enum class WindMode { Off, Random, Smoothed, Noise, Pointer };
+enum class ForceScale {
+    None,   ///< every ball gets the same acceleration
+    Radius, ///< acceleration × (reference radius / r)
+    Mass,   ///< a force: acceleration × (reference mass / m)
+};
+
+struct WindSettings {
+    WindMode mode = WindMode::Off;
+    double strength = 50.0;        ///< px/s², largest horizontal acceleration of a reference ball
+    ForceScale scale = ForceScale::None;
+    double smoothedStep = 0.1;     ///< 1, largest change per step of the smoothed wind, as a share of strength
+    double noiseFrequency = 0.5;   ///< Hz, how fast the noise wind changes
+};
+
+enum class PointKind { Attract, Repel };
+
+struct PointForceSettings {
+    bool enabled = false;
+    PointKind kind = PointKind::Attract;
+    Vec2 position{300.0, 200.0}; ///< px
+    double strength = 1e6;       ///< px³/s², a = strength / d² for a reference ball
+    double maxAccel = 0.0;       ///< px/s², clamp on the acceleration; 0 = no clamp
+    ForceScale scale = ForceScale::None;
+};
+
+struct SpringSettings {
+    bool enabled = false;
+    Vec2 anchor{300.0, 200.0}; ///< px
+    double k = 4.0;            ///< 1/s², stiffness per unit mass: a = -k (x - anchor), ω = √k
+};
+
+struct MutualGravitySettings {
+    bool enabled = false;
+    double G = 1000.0;     ///< px³/(mass·s²); negative pushes every pair apart
+    double softening = 0.0; ///< px, ε in F = G m₁ m₂ / (r² + ε²)
+};
+
+struct HomingSettings {
+    bool enabled = false;
+    double strength = 5.0; ///< 1/s², a = strength × (home - x), a spring to the ball's home
+};
+
+struct PointerSettings {
+    bool enabled = false;
+    double strength = 2e6; ///< px³/s², inverse-square pull (hover) or push (pressed)
+    double maxAccel = 3000.0; ///< px/s², clamp near the pointer; 0 = no clamp
+};
+
+struct SpeedLimitSettings {
+    bool enabled = false;
+    double max = 800.0; ///< px/s
+};
+
+enum class Detection { Brute, Halved, Sweep, Grid };
+enum class Response { None, Flag, Reverse1D, Elastic1D, Axis2D, Impulse2D };
+
+struct CollisionSettings {
+    Detection detection = Detection::Sweep;
+    Response response = Response::None; ///< None: the collision stage is skipped entirely
+    double restitution = 1.0;           ///< 1, ball–ball restitution e, [0, 1]
+    bool continuous = false;            ///< find the time of impact inside the step
+};
+
+enum class IntegratorKind { Euler, SemiImplicitEuler, Verlet, Rk4, Yoshida4, Rk45, Exact };
+
+struct TimeSettings {
+    IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
+    double dt = 1.0 / 60.0;   ///< s, one step of the world
+    int substeps = 1;         ///< 1, a step is split into this many equal sub-steps
+    double tolerance = 1e-9;  ///< 1, rk45 local error tolerance (absolute and relative)
+    std::uint64_t seed = 1;   ///< random generator seed (wind)
+};
+
+struct WorldSettings {
+    BoxSettings box;
+    WallSettings walls;
+    TimeSettings time;
+    GravitySettings gravity;
+    DragSettings drag;
+    WindSettings wind;
+    PointForceSettings point;
+    SpringSettings spring;
+    MutualGravitySettings mutualGravity;
+    HomingSettings homing;
+    PointerSettings pointer;
+    SpeedLimitSettings speedLimit;
+    CollisionSettings collisions;
+};
+
+} // namespace forcelab::sim
