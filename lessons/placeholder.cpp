@@ -1,0 +1,1 @@
+namespace forcelab { int lessonsPlaceholder = 0; }
