@@ -11,7 +11,8 @@ namespace forcelab::sim {
 
 class GradientNoise1D {
 public:
-    explicit GradientNoise1D(std::uint64_t seed = 1);
+    GradientNoise1D() : GradientNoise1D(1) {}
+    explicit GradientNoise1D(std::uint64_t seed);
     /// Noise at t, in [-1, 1] after scaling; 0 at every whole number.
     double operator()(double t) const;
 

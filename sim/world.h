@@ -74,8 +74,7 @@ public:
 
 private:
     void subStep(double h);
-    void drawStepRandomness(double h);
-    std::int64_t applyWalls(const Matrix2X& startPosition, const Matrix2X& startVelocity, double h);
+    void drawStepRandomness();
 
     WorldSettings m_settings;
     BallState m_balls;
@@ -83,7 +82,8 @@ private:
     Integrator m_integrator;
     CollisionSystem m_collisions;
     std::mt19937_64 m_rng;
-    double m_time = 0.0;
+    double m_time = 0.0;    // s, at the start of the current step
+    double m_subTime = 0.0; // s, time into the current step covered by its sub-steps
     std::int64_t m_stepCount = 0;
     StepStats m_last;
     StepStats m_totals;

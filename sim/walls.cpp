@@ -1,0 +1,170 @@
+#include "walls.h"
+
+#include <cmath>
+#include <limits>
+
+namespace forcelab::sim {
+namespace {
+
+// The range the centre of a ball may occupy along one axis, and which of its
+// two walls are on. A ball wider than the box can only sit in the middle.
+struct Axis {
+    double lo;
+    double hi;
+    bool loOn;
+    bool hiOn;
+};
+
+bool outside(const Axis& ax, double p)
+{
+    return (ax.loOn && p < ax.lo) || (ax.hiOn && p > ax.hi);
+}
+
+// clamp: put the ball on the wall it crossed; the overshoot is forgotten.
+// A ball already moving away keeps its velocity.
+void clampAxis(const Axis& ax, double e, double& p, double& u)
+{
+    if (ax.loOn && p < ax.lo) {
+        p = ax.lo;
+        if (u < 0.0)
+            u = -e * u;
+    } else if (ax.hiOn && p > ax.hi) {
+        p = ax.hi;
+        if (u > 0.0)
+            u = -e * u;
+    }
+}
+
+// mirror: the distance travelled past the wall is travelled back into the box.
+// Over a step the ball then moves as far as it would have, but the bounce
+// happened at the wrong speed, so energy is gained or lost.
+void mirrorAxis(const Axis& ax, double e, double& p, double& u)
+{
+    if (ax.loOn && p < ax.lo) {
+        p = ax.lo + (ax.lo - p);
+        if (u < 0.0)
+            u = -e * u;
+    } else if (ax.hiOn && p > ax.hi) {
+        p = ax.hi - (p - ax.hi);
+        if (u > 0.0)
+            u = -e * u;
+    }
+    if (outside(ax, p)) // overshoot larger than the box: fall back to clamping
+        clampAxis(ax, e, p, u);
+}
+
+// Smallest t in [0, tMax] with p0 + u t + ½ a t² = wall, or NaN. Uses the
+// cancellation-free form of the quadratic formula: q = −½ (B + sign(B) √D),
+// roots q / A and C / q.
+double firstRoot(double p0, double u, double a, double wall, double tMax)
+{
+    const double A = 0.5 * a;
+    const double B = u;
+    const double C = p0 - wall;
+    double best = std::numeric_limits<double>::quiet_NaN();
+    auto consider = [&](double t) {
+        if (t >= 0.0 && t <= tMax && !(t >= best))
+            best = t;
+    };
+    if (A == 0.0) {
+        if (B != 0.0)
+            consider(-C / B);
+        return best;
+    }
+    const double disc = B * B - 4.0 * A * C;
+    if (disc < 0.0)
+        return best;
+    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    if (q != 0.0) {
+        consider(q / A);
+        consider(C / q);
+    } else {
+        consider(0.0);
+    }
+    return best;
+}
+
+// exact: during the step the ball moves along p(t) = p0 + u0 t + ½ a t² with the
+// step's mean acceleration a = (u1 − u0) / h (exactly its path when the
+// acceleration is constant). Find when the edge touches the wall, reverse the
+// normal speed there (times e), and follow the parabola for the rest of the
+// step. A ball resting on the floor bounces many times a step with ever less
+// speed; after a few the remainder is tiny and the ball is set on the wall.
+void exactAxis(const Axis& ax, double e, double p0, double u0, double h, double& p, double& u, std::int64_t& hits)
+{
+    if (outside(ax, p0)) { // started outside (spawned there): nothing to solve
+        clampAxis(ax, e, p, u);
+        ++hits;
+        return;
+    }
+    const double a = (u - u0) / h;
+    double start = p0, speed = u0, left = h;
+    for (int bounce = 0; bounce < 16; ++bounce) {
+        // The integrator's end point is outside (that is why we are here); after
+        // a bounce, the parabola's end point decides.
+        const double end = start + speed * left + 0.5 * a * left * left;
+        if (bounce > 0 && !outside(ax, end)) {
+            p = end;
+            u = speed + a * left;
+            return;
+        }
+        double tLo = ax.loOn ? firstRoot(start, speed, a, ax.lo, left) : std::nan("");
+        double tHi = ax.hiOn ? firstRoot(start, speed, a, ax.hi, left) : std::nan("");
+        const bool hitLo = !std::isnan(tLo) && (std::isnan(tHi) || tLo <= tHi);
+        const double t = hitLo ? tLo : tHi;
+        if (std::isnan(t)) { // the parabola and the integrator disagree: fall back
+            clampAxis(ax, e, p, u);
+            ++hits;
+            return;
+        }
+        const double hitSpeed = speed + a * t;
+        start = hitLo ? ax.lo : ax.hi;
+        speed = -e * hitSpeed;
+        left -= t;
+        ++hits;
+    }
+    // Still bouncing after 16 bounces in one step: the ball is resting on the wall.
+    p = std::min(std::max(start, ax.lo), ax.hi);
+    u = 0.0;
+}
+
+} // namespace
+
+std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const VectorX& radius,
+                        const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x, Matrix2X& v)
+{
+    const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
+    const double size[2] = {box.width, box.height};
+    const double e = walls.restitution;
+    std::int64_t hits = 0;
+    for (int d = 0; d < 2; ++d) {
+        if (!on[d][0] && !on[d][1])
+            continue;
+        for (Eigen::Index i = 0; i < x.cols(); ++i) {
+            const double r = radius[i];
+            Axis ax{r, size[d] - r, on[d][0], on[d][1]};
+            if (ax.lo > ax.hi) // wider than the box
+                ax.lo = ax.hi = 0.5 * size[d];
+            double& p = x(d, i);
+            if (!outside(ax, p))
+                continue;
+            double& u = v(d, i);
+            switch (walls.model) {
+            case WallModel::Clamp:
+                clampAxis(ax, e, p, u);
+                ++hits;
+                break;
+            case WallModel::Mirror:
+                mirrorAxis(ax, e, p, u);
+                ++hits;
+                break;
+            case WallModel::Exact:
+                exactAxis(ax, e, x0(d, i), v0(d, i), h, p, u, hits);
+                break;
+            }
+        }
+    }
+    return hits;
+}
+
+} // namespace forcelab::sim

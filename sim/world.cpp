@@ -1,0 +1,281 @@
+#include "world.h"
+
+#include "names.h"
+#include "walls.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace forcelab::sim {
+
+StepStats& StepStats::operator+=(const StepStats& o)
+{
+    forceEvaluations += o.forceEvaluations;
+    wallHits += o.wallHits;
+    pairsTested += o.pairsTested;
+    contacts += o.contacts;
+    acceptedSteps += o.acceptedSteps;
+    rejectedSteps += o.rejectedSteps;
+    seconds += o.seconds;
+    return *this;
+}
+
+// ---------------------------------------------------------------------------
+// Validation: every field is checked with the key path of the lesson format,
+// so the loader, the CLI and the UI all report a problem the same way.
+
+namespace {
+
+class Checker {
+public:
+    void finite(const char* key, double v)
+    {
+        if (!m_error && !std::isfinite(v))
+            fail(key, "must be a finite number");
+    }
+    void range(const char* key, double v, double lo, double hi, bool loOpen = false)
+    {
+        if (m_error)
+            return;
+        if (!std::isfinite(v) || v > hi || (loOpen ? v <= lo : v < lo)) {
+            std::ostringstream s;
+            s.precision(17);
+            s << v << " is outside " << (loOpen ? "(" : "[") << lo << ", " << hi << "]";
+            fail(key, s.str());
+        }
+    }
+    void fail(const char* key, const std::string& what)
+    {
+        if (!m_error)
+            m_error = std::string(key) + ": " + what;
+    }
+    std::optional<std::string> result() const { return m_error; }
+
+private:
+    std::optional<std::string> m_error;
+};
+
+} // namespace
+
+std::optional<std::string> validateSettings(const WorldSettings& s)
+{
+    Checker c;
+    c.range("world.width", s.box.width, 0.0, 1e7, true);
+    c.range("world.height", s.box.height, 0.0, 1e7, true);
+    c.range("world.restitution", s.walls.restitution, 0.0, 1.0);
+    c.range("time.dt", s.time.dt, 0.0, 1.0, true);
+    c.range("time.substeps", s.time.substeps, 1, 1000);
+    c.range("time.tolerance", s.time.tolerance, 1e-15, 1.0);
+    c.range("models.gravity.x", s.gravity.g.x(), -1e7, 1e7);
+    c.range("models.gravity.y", s.gravity.g.y(), -1e7, 1e7);
+    c.range("models.drag.k", s.drag.k, 0.0, 1e6);
+    c.range("models.wind.strength", s.wind.strength, 0.0, 1e7);
+    c.range("models.wind.smoothed_step", s.wind.smoothedStep, 0.0, 1.0, true);
+    c.range("models.wind.frequency", s.wind.noiseFrequency, 0.0, 1e3, true);
+    c.finite("models.point.x", s.point.position.x());
+    c.finite("models.point.y", s.point.position.y());
+    c.range("models.point.strength", s.point.strength, 0.0, 1e15);
+    c.range("models.point.max_accel", s.point.maxAccel, 0.0, 1e9);
+    c.finite("models.spring.x", s.spring.anchor.x());
+    c.finite("models.spring.y", s.spring.anchor.y());
+    c.range("models.spring.k", s.spring.k, 0.0, 1e6);
+    c.range("models.mutual_gravity.G", s.mutualGravity.G, -1e12, 1e12);
+    c.range("models.mutual_gravity.softening", s.mutualGravity.softening, 0.0, 1e6);
+    c.range("models.homing.strength", s.homing.strength, 0.0, 1e6);
+    c.range("models.pointer.strength", s.pointer.strength, 0.0, 1e15);
+    c.range("models.pointer.max_accel", s.pointer.maxAccel, 0.0, 1e9);
+    c.range("models.speed_limit.max", s.speedLimit.max, 0.0, 1e9, true);
+    c.range("models.collisions.restitution", s.collisions.restitution, 0.0, 1.0);
+    if (s.time.integrator == IntegratorKind::Exact) {
+        if (const char* why = nonConstantAccelerationReason(s))
+            c.fail("time.integrator",
+                   std::string("exact needs a constant acceleration, but ") + why +
+                       "; pick another integrator or switch that model off");
+    }
+    return c.result();
+}
+
+// ---------------------------------------------------------------------------
+
+World::World()
+{
+    reset(Scene{});
+}
+
+World::World(const Scene& scene)
+{
+    if (auto error = reset(scene))
+        reset(Scene{}); // an invalid scene leaves an empty default world
+}
+
+std::optional<std::string> World::reset(const Scene& scene)
+{
+    if (auto error = validateSettings(scene.settings))
+        return error;
+    m_settings = scene.settings;
+    m_balls = buildBalls(scene);
+    m_inputs = StepInputs{};
+    m_inputs.noise = GradientNoise1D(m_settings.time.seed);
+    m_rng.seed(m_settings.time.seed);
+    m_integrator.invalidate();
+    m_time = 0.0;
+    m_stepCount = 0;
+    m_last = StepStats{};
+    m_totals = StepStats{};
+    return std::nullopt;
+}
+
+std::optional<std::string> World::setSettings(const WorldSettings& settings)
+{
+    if (auto error = validateSettings(settings))
+        return error;
+    m_settings = settings;
+    m_integrator.invalidate();
+    return std::nullopt;
+}
+
+BallState& World::mutableBalls()
+{
+    m_integrator.invalidate();
+    return m_balls;
+}
+
+void World::setPointer(const PointerInput& pointer)
+{
+    if (pointer == m_inputs.pointer)
+        return;
+    m_inputs.pointer = pointer;
+    m_integrator.invalidate();
+}
+
+// Random values are drawn once per step, before any force is evaluated, so
+// every stage of a multi-stage integrator sees the same wind and a run with the
+// same seed is the same run.
+void World::drawStepRandomness()
+{
+    const WindSettings& w = m_settings.wind;
+    const double before = m_inputs.wind;
+    // A uniform value in [-1, 1) from the top 53 bits: the standard does not fix
+    // the output of std::uniform_real_distribution, mt19937_64 it does.
+    auto symmetric = [this] { return static_cast<double>(m_rng() >> 11) * 0x1.0p-52 - 1.0; };
+    switch (w.mode) {
+    case WindMode::Off:
+    case WindMode::Noise:
+        m_inputs.wind = 0.0;
+        break;
+    case WindMode::Random: // a fresh value every step, centred on zero
+        m_inputs.wind = w.strength * symmetric();
+        break;
+    case WindMode::Smoothed: // a bounded random walk: small changes, never beyond ±strength
+        m_inputs.wind = std::clamp(m_inputs.wind + w.smoothedStep * w.strength * symmetric(), -w.strength,
+                                   w.strength);
+        break;
+    case WindMode::Pointer: { // blows away from the pointer's side, harder the further out
+        const PointerInput& p = m_inputs.pointer;
+        const double half = 0.5 * m_settings.box.width;
+        m_inputs.wind = p.inside ? -w.strength * std::clamp((p.position.x() - half) / half, -1.0, 1.0) : 0.0;
+        break;
+    }
+    }
+    if (m_inputs.wind != before)
+        m_integrator.invalidate();
+}
+
+void World::step()
+{
+    const auto started = std::chrono::steady_clock::now();
+    m_last = StepStats{};
+    drawStepRandomness();
+    m_subTime = 0.0;
+    const int substeps = m_settings.time.substeps;
+    const double h = m_settings.time.dt / substeps;
+    for (int k = 0; k < substeps; ++k)
+        subStep(h);
+    ++m_stepCount;
+    m_time += m_settings.time.dt;
+    m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    m_totals += m_last;
+}
+
+// One sub-step of length h, in stages.
+void World::subStep(double h)
+{
+    const WorldSettings& s = m_settings;
+    const ForceModel forces(s, m_balls, m_inputs);
+    const bool keepStart = s.walls.model == WallModel::Exact ||
+                           (s.collisions.response != Response::None && s.collisions.continuous);
+    if (keepStart) {
+        m_startPosition = m_balls.position;
+        m_startVelocity = m_balls.velocity;
+    }
+
+    // 1. Integrate: forces are evaluated at the integrator's stages.
+    IntegratorStats integration;
+    m_integrator.advance(s.time.integrator, forces, m_balls.position, m_balls.velocity, m_time + m_subTime, h,
+                         s.time.tolerance, integration);
+    m_subTime += h;
+
+    // 2. Speed limit: a crude stand-in for terminal velocity, |v| ≤ max.
+    bool touched = false;
+    if (s.speedLimit.enabled) {
+        const Eigen::ArrayXd speed = m_balls.velocity.colwise().norm().transpose().array();
+        const Eigen::ArrayXd factor = (s.speedLimit.max / speed).min(1.0);
+        if ((factor < 1.0).any()) {
+            m_balls.velocity.array().rowwise() *= factor.transpose();
+            touched = true;
+        }
+    }
+
+    // 3. Walls: bounce whatever crossed an enabled wall.
+    const std::int64_t hits = applyWalls(s.walls, s.box, m_balls.radius, m_startPosition, m_startVelocity, h,
+                                         m_balls.position, m_balls.velocity);
+
+    // 4. Collisions: only when the scene asks for them.
+    CollisionStats collisions;
+    if (s.collisions.response != Response::None)
+        collisions = m_collisions.step(m_balls, m_startPosition, s.collisions, s.box, s.walls, h);
+
+    // A bounce, a collision or a velocity-dependent force makes the kept
+    // acceleration stale for Verlet-type integrators.
+    if (touched || hits > 0 || collisions.contacts > 0 || !forces.velocityIndependent())
+        m_integrator.invalidate();
+
+    m_last.forceEvaluations += forces.evaluations();
+    m_last.acceptedSteps += integration.accepted;
+    m_last.rejectedSteps += integration.rejected;
+    m_last.wallHits += hits;
+    m_last.pairsTested += collisions.pairsTested;
+    m_last.contacts += collisions.contacts;
+}
+
+Energy World::energy() const
+{
+    Energy e;
+    e.kinetic = 0.5 * m_balls.mass.dot(m_balls.velocity.colwise().squaredNorm().transpose());
+    e.potential = ForceModel(m_settings, m_balls, m_inputs).potential(m_balls.position);
+    return e;
+}
+
+Vec2 World::momentum() const
+{
+    return m_balls.velocity * m_balls.mass;
+}
+
+double World::angularMomentum() const
+{
+    // L = Σ m (x v_y − y v_x), the z component of x × m v.
+    const auto& x = m_balls.position;
+    const auto& v = m_balls.velocity;
+    return m_balls.mass.dot((x.row(0).cwiseProduct(v.row(1)) - x.row(1).cwiseProduct(v.row(0))).transpose());
+}
+
+Matrix2X World::accelerations() const
+{
+    Matrix2X a;
+    ForceModel(m_settings, m_balls, m_inputs).acceleration(m_balls.position, m_balls.velocity, m_time, a);
+    return a;
+}
+
+} // namespace forcelab::sim
