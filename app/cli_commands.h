@@ -1,0 +1,18 @@
+#pragma once
+// The subcommands of forcelab-cli. Each takes the arguments after its name,
+// writes results to `out` and one-line errors to `err`, and returns the exit
+// code (0 success, 2 bad input).
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace forcelab::cli {
+
+/// forcelab-cli run LESSON [options]: runs a lesson headless.
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+} // namespace forcelab::cli
+
+/// forcelab-cli bench [options]: collision and step benchmarks.
+int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -1,0 +1,205 @@
+// forcelab-cli run: loads a lesson, applies the overrides, steps it headless
+// and reports the final state.
+
+#include "cli_commands.h"
+
+#include "lessons/lesson_loader.h"
+#include "sim/names.h"
+#include "sim/world.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <optional>
+
+namespace forcelab::cli {
+namespace {
+
+struct RunOptions {
+    QString lesson;
+    QList<Override> overrides;
+    std::optional<std::int64_t> steps;
+    std::optional<double> time;
+    bool json = false;
+};
+
+constexpr std::int64_t kMaxSteps = 1'000'000'000;
+
+std::optional<double> parseNumber(const std::string& text)
+{
+    try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used != text.size())
+            return std::nullopt;
+        return v;
+    } catch (...) {
+        return std::nullopt;
+    }
+}
+
+// Options that change a lesson value become overrides of its key path, so they
+// are checked by the same code as the lesson file.
+std::optional<RunOptions> parseArgs(const std::vector<std::string>& args, std::ostream& err)
+{
+    RunOptions o;
+    auto fail = [&](const std::string& what) {
+        err << "forcelab-cli run: " << what << "\n";
+        return std::nullopt;
+    };
+    static const std::pair<const char*, const char*> kTimeOptions[] = {
+        {"--integrator", "time.integrator"}, {"--dt", "time.dt"},     {"--substeps", "time.substeps"},
+        {"--tolerance", "time.tolerance"},   {"--seed", "time.seed"},
+    };
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> std::optional<std::string> {
+            if (i + 1 >= args.size())
+                return std::nullopt;
+            return args[++i];
+        };
+        if (a == "--json") {
+            o.json = true;
+            continue;
+        }
+        bool matched = false;
+        for (const auto& [flag, key] : kTimeOptions) {
+            if (a != flag)
+                continue;
+            matched = true;
+            const auto v = value();
+            if (!v)
+                return fail(std::string(flag) + ": needs a value");
+            // A name is a JSON string; numbers pass through as JSON numbers.
+            const bool isName = a == "--integrator";
+            o.overrides.append(Override{QString::fromLatin1(key),
+                                        isName ? QString::fromStdString("\"" + *v + "\"") : QString::fromStdString(*v)});
+        }
+        if (matched)
+            continue;
+        if (a == "--set") {
+            const auto v = value();
+            if (!v)
+                return fail("--set: needs KEY.PATH=VALUE");
+            QString error;
+            const auto override = LessonLoader::parseOverride(QString::fromStdString(*v), &error);
+            if (!override)
+                return fail("--set " + *v + ": " + error.toStdString());
+            o.overrides.append(*override);
+        } else if (a == "--steps") {
+            const auto v = value();
+            const auto n = v ? parseNumber(*v) : std::nullopt;
+            if (!n || *n < 0 || *n > kMaxSteps || std::floor(*n) != *n)
+                return fail("--steps: expects a whole number from 0 to 1000000000, got '" + v.value_or("") + "'");
+            o.steps = static_cast<std::int64_t>(*n);
+        } else if (a == "--time") {
+            const auto v = value();
+            const auto t = v ? parseNumber(*v) : std::nullopt;
+            if (!t || !std::isfinite(*t) || *t < 0)
+                return fail("--time: expects a number of seconds >= 0, got '" + v.value_or("") + "'");
+            o.time = *t;
+        } else if (!a.empty() && a[0] == '-') {
+            return fail("unknown option '" + a + "'");
+        } else if (o.lesson.isEmpty()) {
+            o.lesson = QString::fromStdString(a);
+        } else {
+            return fail("more than one lesson given ('" + o.lesson.toStdString() + "' and '" + a + "')");
+        }
+    }
+    if (o.lesson.isEmpty())
+        return fail("needs a lesson (a file or a built-in id)");
+    if (o.steps && o.time)
+        return fail("give --steps or --time, not both");
+    return o;
+}
+
+QJsonObject report(const Lesson& lesson, const sim::World& world, double wallMs)
+{
+    const sim::BallState& b = world.balls();
+    QJsonArray balls;
+    for (int i = 0; i < b.size(); ++i) {
+        balls.append(QJsonObject{{"x", b.position(0, i)},
+                                 {"y", b.position(1, i)},
+                                 {"vx", b.velocity(0, i)},
+                                 {"vy", b.velocity(1, i)},
+                                 {"r", b.radius[i]},
+                                 {"mass", b.mass[i]}});
+    }
+    const sim::Energy e = world.energy();
+    const sim::Vec2 p = world.momentum();
+    const sim::StepStats& t = world.totals();
+    const sim::WorldSettings& s = world.settings();
+    return QJsonObject{
+        {"lesson", lesson.id},
+        {"integrator", QString::fromLatin1(sim::toString(s.time.integrator).data(),
+                                           static_cast<qsizetype>(sim::toString(s.time.integrator).size()))},
+        {"dt", s.time.dt},
+        {"steps", static_cast<double>(world.stepCount())},
+        {"time", world.time()},
+        {"balls", balls},
+        {"energy", QJsonObject{{"kinetic", e.kinetic}, {"potential", e.potential}, {"total", e.total()}}},
+        {"momentum", QJsonArray{p.x(), p.y()}},
+        {"angular_momentum", world.angularMomentum()},
+        {"force_evaluations", static_cast<double>(t.forceEvaluations)},
+        {"wall_hits", static_cast<double>(t.wallHits)},
+        {"contacts", static_cast<double>(t.contacts)},
+        {"wall_ms", wallMs},
+    };
+}
+
+} // namespace
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    const auto options = parseArgs(args, err);
+    if (!options)
+        return 2;
+    const LoadResult loaded = LessonLoader::load(options->lesson, options->overrides);
+    if (!loaded.ok()) {
+        for (const QString& e : loaded.errors)
+            err << e.toStdString() << "\n";
+        return 2;
+    }
+    const Lesson& lesson = *loaded.lesson;
+    sim::World world;
+    if (auto error = world.reset(lesson.scene)) {
+        err << lesson.source.toStdString() << ": " << *error << "\n";
+        return 2;
+    }
+    const double dt = world.settings().time.dt;
+    // --time T runs the whole number of steps closest to T (dt need not divide T).
+    const std::int64_t steps = options->steps ? *options->steps
+                               : options->time ? static_cast<std::int64_t>(std::llround(*options->time / dt))
+                                               : static_cast<std::int64_t>(std::llround(10.0 / dt));
+    if (steps > kMaxSteps) {
+        err << "forcelab-cli run: --time: " << steps << " steps of dt = " << dt << " s is more than "
+            << kMaxSteps << "\n";
+        return 2;
+    }
+
+    const auto started = std::chrono::steady_clock::now();
+    for (std::int64_t k = 0; k < steps; ++k)
+        world.step();
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+
+    if (options->json) {
+        out << QJsonDocument(report(lesson, world, wallMs)).toJson(QJsonDocument::Compact).toStdString() << "\n";
+        return 0;
+    }
+    const sim::Energy e = world.energy();
+    const sim::StepStats& t = world.totals();
+    out << std::setprecision(10) << lesson.title.toStdString() << " (" << lesson.id.toStdString() << "): "
+        << world.stepCount() << " steps of " << dt << " s with "
+        << sim::toString(world.settings().time.integrator) << ", t = " << world.time() << " s\n"
+        << "  balls " << world.balls().size() << ", energy kinetic " << e.kinetic << " potential " << e.potential
+        << " total " << e.total() << "\n"
+        << "  force evaluations " << t.forceEvaluations << ", wall hits " << t.wallHits << ", contacts "
+        << t.contacts << ", stepping took " << wallMs << " ms\n";
+    return 0;
+}
+
+} // namespace forcelab::cli
