@@ -1,0 +1,273 @@
+// Integrators against closed forms: Kepler orbits (convergence order, energy
+// behaviour), free fall (exact), and rk45's tolerance.
+
+#include "sim_test_util.h"
+
+#include "sim/names.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace forcelab;
+using namespace forcelab::sim;
+using forcelab::test::ballAt;
+using forcelab::test::fittedOrder;
+using forcelab::test::openScene;
+
+namespace {
+
+// A Kepler orbit around a fixed centre: the point force, attracting with the
+// inverse-square law and no clamp, is exactly the Kepler problem with
+// μ = strength. Semi-major axis 100 px, period 1 s, starting at periapsis.
+struct Kepler {
+    double a = 100.0;
+    double e = 0.5;
+    double period = 1.0;
+    Vec2 focus{300.0, 200.0};
+
+    double n() const { return 2.0 * std::numbers::pi / period; }
+    double mu() const { return n() * n() * a * a * a; }
+
+    Scene scene(IntegratorKind integrator, double dt) const
+    {
+        const double rp = a * (1.0 - e);
+        const double vp = std::sqrt(mu() * (1.0 + e) / rp);
+        Scene s = openScene({ballAt(focus.x() + rp, focus.y(), 0.0, vp)});
+        s.settings.point.enabled = true;
+        s.settings.point.kind = PointKind::Attract;
+        s.settings.point.position = focus;
+        s.settings.point.strength = mu();
+        s.settings.point.maxAccel = 0.0;
+        s.settings.time.integrator = integrator;
+        s.settings.time.dt = dt;
+        return s;
+    }
+
+    // Position at time t from Kepler's equation E − e sin E = n t (Newton's method).
+    Vec2 position(double t) const
+    {
+        const double M = std::fmod(n() * t, 2.0 * std::numbers::pi);
+        double E = M + e * std::sin(M);
+        for (int i = 0; i < 50; ++i) {
+            const double dE = (E - e * std::sin(E) - M) / (1.0 - e * std::cos(E));
+            E -= dE;
+            if (std::abs(dE) < 1e-16)
+                break;
+        }
+        return focus + Vec2(a * (std::cos(E) - e), a * std::sqrt(1.0 - e * e) * std::sin(E));
+    }
+};
+
+// Largest relative energy error over `orbits` orbits, sampled every step.
+double maxEnergyError(World& world, std::int64_t steps, double e0)
+{
+    double worst = 0.0;
+    for (std::int64_t k = 0; k < steps; ++k) {
+        world.step();
+        worst = std::max(worst, std::abs((world.energy().total() - e0) / e0));
+    }
+    return worst;
+}
+
+} // namespace
+
+class TestIntegrators : public QObject {
+    Q_OBJECT
+private slots:
+    void keplerOrder_data();
+    void keplerOrder();
+    void symplecticEnergyBounded_data();
+    void symplecticEnergyBounded();
+    void rk45MeetsTolerance();
+    void exactFreeFall_data();
+    void exactFreeFall();
+    void exactRejectedWithNonConstantForces();
+    void forceEvaluationsPerStep_data();
+    void forceEvaluationsPerStep();
+};
+
+void TestIntegrators::keplerOrder_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<double>("order");
+    QTest::newRow("euler") << int(IntegratorKind::Euler) << 1.0;
+    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << 1.0;
+    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 2.0;
+    QTest::newRow("rk4") << int(IntegratorKind::Rk4) << 4.0;
+    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << 4.0;
+}
+
+// Position error against Kepler's equation at t = 0.30078125 P, for
+// dt = P / 2^k, k = 8..12. Not a whole number of orbits: at whole orbits some
+// errors cancel and semi-implicit Euler would look second order. Inside the
+// first orbit: by 2.3 orbits explicit Euler's error at these steps is the size
+// of the orbit itself, no longer in the range where the error shrinks as dt^p.
+void TestIntegrators::keplerOrder()
+{
+    QFETCH(int, integrator);
+    QFETCH(double, order);
+    const Kepler kepler;
+    const double end = 0.30078125 * kepler.period; // a whole number of steps for every dt below
+    std::vector<double> dts, errors;
+    for (int k = 8; k <= 12; ++k) {
+        const double dt = kepler.period / std::ldexp(1.0, k);
+        World world;
+        QVERIFY(!world.reset(kepler.scene(static_cast<IntegratorKind>(integrator), dt)));
+        const auto steps = static_cast<std::int64_t>(std::llround(end / dt));
+        for (std::int64_t s = 0; s < steps; ++s)
+            world.step();
+        QCOMPARE(world.time(), end);
+        const double err = (world.balls().position.col(0) - kepler.position(end)).norm();
+        QVERIFY(std::isfinite(err));
+        dts.push_back(dt);
+        errors.push_back(err);
+    }
+    const double fitted = fittedOrder(dts, errors);
+    qInfo("%s: errors %.3g .. %.3g px, fitted order %.3f", QTest::currentDataTag(), errors.front(), errors.back(),
+          fitted);
+    QVERIFY2(std::abs(fitted - order) <= 0.15, qPrintable(QString("fitted order %1").arg(fitted)));
+}
+
+void TestIntegrators::symplecticEnergyBounded_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<bool>("symplectic");
+    QTest::addColumn<int>("stepsPerOrbit");
+    // Explicit Euler needs a small step, or the orbit is destroyed within ten
+    // orbits and there is nothing left to drift.
+    QTest::newRow("euler") << int(IntegratorKind::Euler) << false << 16384;
+    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << true << 512;
+    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << true << 512;
+    QTest::newRow("rk4") << int(IntegratorKind::Rk4) << false << 512;
+    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << true << 512;
+}
+
+// Relative energy error sampled at every step (many times inside each orbit):
+// symplectic methods keep it bounded, so its maximum over 100 orbits is at most
+// 1.5× the maximum over the first 10; euler and rk4 drift, so it keeps growing.
+void TestIntegrators::symplecticEnergyBounded()
+{
+    QFETCH(int, integrator);
+    QFETCH(bool, symplectic);
+    QFETCH(int, stepsPerOrbit);
+    const Kepler kepler;
+    World world;
+    QVERIFY(!world.reset(kepler.scene(static_cast<IntegratorKind>(integrator), kepler.period / stepsPerOrbit)));
+    const double e0 = world.energy().total();
+    const double first10 = maxEnergyError(world, 10 * stepsPerOrbit, e0);
+    const double upTo100 = std::max(first10, maxEnergyError(world, 90 * stepsPerOrbit, e0));
+    const double growth = upTo100 / first10;
+    qInfo("%s: max |dE/E| over 10 orbits %.3g, over 100 orbits %.3g, growth %.2f", QTest::currentDataTag(), first10,
+          upTo100, growth);
+    if (symplectic)
+        QVERIFY2(growth <= 1.5, qPrintable(QString("growth %1").arg(growth)));
+    else
+        QVERIFY2(growth >= 3.0, qPrintable(QString("growth %1").arg(growth)));
+}
+
+// rk45 adapts its sub-steps to keep each one's error below the tolerance, so
+// the error after 2.3 orbits (outer steps of P/16) scales with the tolerance:
+// measured about 14–20 × tol × a for tol = 1e-6 … 1e-10, asserted ≤ 50 × tol × a.
+// A tighter tolerance buys a smaller error with more sub-steps.
+void TestIntegrators::rk45MeetsTolerance()
+{
+    const Kepler kepler;
+    double previousError = 1e300;
+    std::int64_t previousSteps = 0;
+    for (double tol : {1e-6, 1e-8, 1e-10}) {
+        Scene s = kepler.scene(IntegratorKind::Rk45, kepler.period / 16);
+        s.settings.time.tolerance = tol;
+        World world;
+        QVERIFY(!world.reset(s));
+        for (int k = 0; k < 16 * 2 + 5; ++k)
+            world.step();
+        const double err = (world.balls().position.col(0) - kepler.position(world.time())).norm();
+        const std::int64_t accepted = world.totals().acceptedSteps;
+        qInfo("rk45 tol %.0e: error %.3g px, %lld accepted, %lld rejected sub-steps", tol, err,
+              static_cast<long long>(accepted), static_cast<long long>(world.totals().rejectedSteps));
+        QVERIFY2(err <= 50.0 * tol * kepler.a, qPrintable(QString("error %1 at tol %2").arg(err).arg(tol)));
+        QVERIFY(err < previousError);
+        QVERIFY(accepted > previousSteps);
+        previousError = err;
+        previousSteps = accepted;
+    }
+}
+
+void TestIntegrators::exactFreeFall_data()
+{
+    QTest::addColumn<double>("dt");
+    QTest::newRow("1/30") << 1.0 / 30;
+    QTest::newRow("1/60") << 1.0 / 60;
+    QTest::newRow("1/1000") << 1.0 / 1000;
+}
+
+// y(t) = y0 + vy0 t + ½ g t² exactly (to 1e-12 relative) at every step.
+void TestIntegrators::exactFreeFall()
+{
+    QFETCH(double, dt);
+    Scene s = openScene({ballAt(100.0, 50.0, 30.0, -200.0)});
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = Vec2(0.0, 980.0);
+    s.settings.time.integrator = IntegratorKind::Exact;
+    s.settings.time.dt = dt;
+    World world;
+    QVERIFY(!world.reset(s));
+    for (int k = 0; k < 2.0 / dt; ++k) {
+        world.step();
+        const double t = world.time();
+        const Vec2 expected(100.0 + 30.0 * t, 50.0 - 200.0 * t + 0.5 * 980.0 * t * t);
+        const Vec2 got = world.balls().position.col(0);
+        QVERIFY2((got - expected).norm() <= 1e-12 * expected.norm(),
+                 qPrintable(QString("t=%1: %2 vs %3").arg(t).arg(got.y(), 0, 'g', 17).arg(expected.y(), 0, 'g', 17)));
+    }
+}
+
+void TestIntegrators::exactRejectedWithNonConstantForces()
+{
+    Scene s = openScene({ballAt(100.0, 50.0)});
+    s.settings.time.integrator = IntegratorKind::Exact;
+    s.settings.drag.enabled = true;
+    World world;
+    const auto error = world.reset(s);
+    QVERIFY(error);
+    QCOMPARE(QString::fromStdString(*error),
+             QString("time.integrator: exact needs a constant acceleration, but drag depends on velocity; "
+                     "pick another integrator or switch that model off"));
+    // Pushed live, the world keeps its old settings.
+    World running;
+    QVERIFY(!running.reset(openScene({ballAt(1, 1)})));
+    WorldSettings edited = running.settings();
+    edited.time.integrator = IntegratorKind::Exact;
+    edited.spring.enabled = true;
+    QVERIFY(running.setSettings(edited));
+    QVERIFY(running.settings().time.integrator == IntegratorKind::SemiImplicitEuler);
+}
+
+void TestIntegrators::forceEvaluationsPerStep_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<int>("evaluationsFor10Steps");
+    // Verlet-type methods reuse the last acceleration: one extra at the start.
+    QTest::newRow("euler") << int(IntegratorKind::Euler) << 10;
+    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << 10;
+    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 11;
+    QTest::newRow("rk4") << int(IntegratorKind::Rk4) << 40;
+    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << 31;
+}
+
+void TestIntegrators::forceEvaluationsPerStep()
+{
+    QFETCH(int, integrator);
+    QFETCH(int, evaluationsFor10Steps);
+    const Kepler kepler;
+    World world;
+    QVERIFY(!world.reset(kepler.scene(static_cast<IntegratorKind>(integrator), kepler.period / 256)));
+    for (int k = 0; k < 10; ++k)
+        world.step();
+    QCOMPARE(world.totals().forceEvaluations, std::int64_t(evaluationsFor10Steps));
+}
+
+QTEST_APPLESS_MAIN(TestIntegrators)
+#include "test_integrators.moc"
