@@ -1,1 +1,0 @@
-namespace forcelab { int uiPlaceholder = 0; }
