@@ -3,32 +3,38 @@
 // finds every pair of touching balls, and a response that marks them (flag)
 // or changes their velocities. The world calls step() once per sub-step, and
 // only when the scene's response is not None.
+//
+// Touching means strictly overlapping: distance < r_a + r_b (see
+// narrow_phase.h). Every detector reports the same pairs, sorted by (a, b),
+// and the response walks them in that order, so the result of a step does not
+// depend on the detector, only its cost does.
 
 #include "../ball_state.h"
 #include "../world_settings.h"
+#include "broad_phase_input.h"
+#include "contact.h"
+#include "contact_sort.h"
+#include "sweep_and_prune.h"
+#include "uniform_grid.h"
 
-#include <cstdint>
 #include <vector>
 
 namespace forcelab::sim {
 
-/// A touching pair, always with a < b.
-struct Contact {
-    int a = 0;
-    int b = 0;
-    friend bool operator==(const Contact&, const Contact&) = default;
-};
-
-struct CollisionStats {
-    std::int64_t pairsTested = 0; ///< candidate pairs that reached the narrow phase (distance test)
-    std::int64_t contacts = 0;    ///< touching pairs found
-};
-
 class CollisionSystem {
 public:
     /// Detects and responds. `startPositions` are the positions at the start of
-    /// the (sub-)step of length dt, for continuous detection. Sets
+    /// the (sub-)step of length dt, for continuous detection (used only when
+    /// settings.continuous is on and it has one column per ball). Sets
     /// balls.colliding. Returns this call's counters.
+    ///
+    /// Per contact, in (a, b) order: the response model changes the velocities
+    /// along the line of centres at detection time (pairs already moving apart
+    /// are skipped), then positional correction pushes the pair apart if it
+    /// still overlaps. `flag` only marks. In continuous mode a pair that met
+    /// during the step is first moved back to the moment of impact, bounced
+    /// there, and sent on for the rest of the step (one such event per ball
+    /// per sub-step; later contacts of the same ball use the end positions).
     CollisionStats step(BallState& balls, const Matrix2X& startPositions, const CollisionSettings& settings,
                         const BoxSettings& box, const WallSettings& walls, double dt);
 
@@ -36,12 +42,32 @@ public:
     /// (a, b) and identical for every method.
     CollisionStats detect(const BallState& balls, Detection method, std::vector<Contact>& out);
 
+    /// Continuous detection alone: every pair that touches at the end or whose
+    /// straight paths from `startPositions` meet during the step, sorted by (a, b).
+    CollisionStats detectMoving(const BallState& balls, const Matrix2X& startPositions, Detection method,
+                                std::vector<Contact>& out);
+
     /// The touching pairs found by the last step(), sorted by (a, b).
     const std::vector<Contact>& contacts() const { return m_contacts; }
 
+    /// The broad phases, for counters and tuning (bench, tests).
+    const SweepAndPrune& sweepAndPrune() const { return m_sweep; }
+    UniformGrid& grid() { return m_grid; }
+
 private:
+    void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats);
+    void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
+                 const WallSettings& walls, double dt);
+
     std::vector<Contact> m_contacts;
-    // Broad-phase scratch kept between steps (the sweep keeps its order).
+    // Scratch kept between steps: no allocation once sizes settle, and the
+    // sweep keeps its order.
+    BroadPhaseInput m_input;
+    SweepAndPrune m_sweep;
+    UniformGrid m_grid;
+    ContactSorter m_sorter;
+    Matrix2X m_detected;                 // positions at detection time
+    std::vector<unsigned char> m_impact; // continuous: ball already had its time-of-impact event
 };
 
 } // namespace forcelab::sim

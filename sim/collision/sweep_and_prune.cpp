@@ -1,0 +1,218 @@
+#include "sweep_and_prune.h"
+
+#include "narrow_phase.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab::sim {
+namespace {
+
+// Row height: a little above the tallest box, rounded up to 6 significant bits
+// so that it stays the same from step to step (a changed height moves every
+// ball to a new row and costs a full sort).
+double rowHeightFor(double tallest)
+{
+    const double h = tallest * 1.001;
+    if (!(h > 0.0) || !std::isfinite(h))
+        return 0.0;
+    int e = 0;
+    std::frexp(h, &e); // h = m · 2^e, m in [0.5, 1)
+    return std::ldexp(std::ceil(std::ldexp(h, 6 - e)), e - 6);
+}
+
+// Row of a box whose top edge is at y. Clamping far-away balls into the first
+// or last representable row only merges rows, which keeps every pair.
+std::int32_t rowOf(double y, double inverseHeight)
+{
+    constexpr double kLimit = 1073741824.0; // 2^30
+    const double q = std::clamp(y * inverseHeight, -kLimit, kLimit);
+    return static_cast<std::int32_t>(std::floor(q));
+}
+
+} // namespace
+
+void SweepAndPrune::refreshKeys(const BroadPhaseInput& in)
+{
+    m_rowHeight = rowHeightFor(in.maxHeight);
+    const double inverse = m_rowHeight > 0.0 ? 1.0 / m_rowHeight : 0.0;
+    const std::size_t count = in.active.size();
+    bool sameSet = m_keys.size() == count;
+    if (sameSet) {
+        // Keys are a permutation of distinct indices: if each is still an
+        // active ball and the counts agree, the set is the same.
+        for (const Key& k : m_keys)
+            if (k.index >= in.size() || std::isnan(in.x[static_cast<std::size_t>(k.index)])) {
+                sameSet = false;
+                break;
+            }
+    }
+    if (!sameSet) {
+        m_keys.resize(count);
+        for (std::size_t k = 0; k < count; ++k)
+            m_keys[k].index = in.active[k];
+    }
+    for (Key& k : m_keys) {
+        const auto i = static_cast<std::size_t>(k.index);
+        k.lo = in.loX[i];
+        k.row = rowOf(in.loY[i], inverse);
+    }
+}
+
+void SweepAndPrune::sortKeys()
+{
+    // Insertion sort on last step's order, with a budget of moves.
+    const std::size_t n = m_keys.size();
+    const std::int64_t budget = 4 * static_cast<std::int64_t>(n) + 64;
+    std::int64_t shifts = 0;
+    m_lastFullSort = false;
+    for (std::size_t i = 1; i < n; ++i) {
+        const Key k = m_keys[i];
+        std::size_t j = i;
+        while (j > 0 && before(k, m_keys[j - 1])) {
+            m_keys[j] = m_keys[j - 1];
+            --j;
+            ++shifts;
+        }
+        m_keys[j] = k;
+        if (shifts > budget) {
+            m_lastFullSort = true;
+            break;
+        }
+    }
+    m_lastShifts = shifts;
+    if (m_lastFullSort)
+        sortByRows();
+}
+
+void SweepAndPrune::sortByRows()
+{
+    const std::size_t n = m_keys.size();
+    std::int32_t lo = m_keys[0].row, hi = m_keys[0].row;
+    for (const Key& k : m_keys) {
+        lo = std::min(lo, k.row);
+        hi = std::max(hi, k.row);
+    }
+    const std::int64_t rows = static_cast<std::int64_t>(hi) - lo + 1;
+    if (rows > 2 * static_cast<std::int64_t>(n) + 1024) { // scattered far apart: plain sort
+        std::sort(m_keys.begin(), m_keys.end(), before);
+        return;
+    }
+    // Stable counting sort by row keeps last step's order inside each row.
+    m_rowCount.assign(static_cast<std::size_t>(rows) + 1, 0);
+    for (const Key& k : m_keys)
+        ++m_rowCount[static_cast<std::size_t>(k.row - lo) + 1];
+    for (std::size_t r = 1; r < m_rowCount.size(); ++r)
+        m_rowCount[r] += m_rowCount[r - 1];
+    m_spare.resize(n);
+    for (const Key& k : m_keys)
+        m_spare[static_cast<std::size_t>(m_rowCount[static_cast<std::size_t>(k.row - lo)]++)] = k;
+    m_keys.swap(m_spare);
+    // Each row: insertion sort if nearly sorted, otherwise a full sort.
+    std::size_t begin = 0;
+    while (begin < n) {
+        std::size_t end = begin + 1;
+        while (end < n && m_keys[end].row == m_keys[begin].row)
+            ++end;
+        const std::int64_t rowBudget = 8 * static_cast<std::int64_t>(end - begin) + 16;
+        std::int64_t shifts = 0;
+        bool sorted = true;
+        for (std::size_t i = begin + 1; i < end && sorted; ++i) {
+            const Key k = m_keys[i];
+            std::size_t j = i;
+            while (j > begin && k.lo < m_keys[j - 1].lo) {
+                m_keys[j] = m_keys[j - 1];
+                --j;
+                ++shifts;
+            }
+            m_keys[j] = k;
+            sorted = shifts <= rowBudget;
+        }
+        if (!sorted)
+            std::sort(m_keys.begin() + static_cast<std::ptrdiff_t>(begin),
+                      m_keys.begin() + static_cast<std::ptrdiff_t>(end), before);
+        begin = end;
+    }
+}
+
+template <class Test>
+void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out,
+                              CollisionStats& stats)
+{
+    refreshKeys(in);
+    const std::size_t n = m_keys.size();
+    if (n < 2)
+        return;
+    sortKeys();
+
+    // The sorted balls as arrays, so the sweep reads memory in order.
+    m_lo.resize(n);
+    m_hi.resize(n);
+    m_loY.resize(n);
+    m_hiY.resize(n);
+    m_index.resize(n);
+    m_row.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto i = static_cast<std::size_t>(m_keys[k].index);
+        m_lo[k] = m_keys[k].lo;
+        m_row[k] = m_keys[k].row;
+        m_index[k] = m_keys[k].index;
+        m_hi[k] = in.hiX[i];
+        m_loY[k] = in.loY[i];
+        m_hiY[k] = in.hiY[i];
+    }
+
+    std::int64_t tested = 0;
+    // Sorted positions p, q overlap in x; check y, then the narrow phase.
+    auto consider = [&](std::size_t p, std::size_t q) {
+        if (m_loY[q] > m_hiY[p] || m_loY[p] > m_hiY[q])
+            return;
+        ++tested;
+        const int a = std::min(m_index[p], m_index[q]);
+        const int b = std::max(m_index[p], m_index[q]);
+        if (test(a, b))
+            out.push_back({a, b});
+    };
+
+    std::size_t begin = 0;
+    while (begin < n) {
+        std::size_t end = begin + 1;
+        while (end < n && m_row[end] == m_row[begin])
+            ++end;
+        // Inside the row: the open list of ball p is every later ball whose
+        // left edge is not past p's right edge.
+        for (std::size_t p = begin; p < end; ++p) {
+            const double hi = m_hi[p];
+            for (std::size_t q = p + 1; q < end && m_lo[q] <= hi; ++q)
+                consider(p, q);
+        }
+        // Against the row below: merge the two sorted rows by left edge; each
+        // ball scans the other row from the merge point while it overlaps.
+        std::size_t end2 = end;
+        while (end2 < n && m_row[end2] == m_row[begin] + 1)
+            ++end2;
+        std::size_t p = begin, q = end;
+        while (p < end && q < end2) {
+            if (m_lo[p] <= m_lo[q]) {
+                const double hi = m_hi[p];
+                for (std::size_t j = q; j < end2 && m_lo[j] <= hi; ++j)
+                    consider(p, j);
+                ++p;
+            } else {
+                const double hi = m_hi[q];
+                for (std::size_t j = p; j < end && m_lo[j] <= hi; ++j)
+                    consider(j, q);
+                ++q;
+            }
+        }
+        begin = end;
+    }
+    stats.pairsTested += tested;
+}
+
+template void SweepAndPrune::findPairs<OverlapTest>(const BroadPhaseInput&, const OverlapTest&,
+                                                    std::vector<Contact>&, CollisionStats&);
+template void SweepAndPrune::findPairs<SweptTest>(const BroadPhaseInput&, const SweptTest&,
+                                                  std::vector<Contact>&, CollisionStats&);
+
+} // namespace forcelab::sim

@@ -1,0 +1,172 @@
+#include "uniform_grid.h"
+
+#include "narrow_phase.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace forcelab::sim {
+namespace {
+
+constexpr double kMaxCells = 1073741824.0; // 2^30 cells along one axis at most
+
+std::uint64_t hashCell(std::int32_t cx, std::int32_t cy)
+{
+    std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) * 0x9E3779B97F4A7C15ull;
+    h ^= static_cast<std::uint64_t>(static_cast<std::uint32_t>(cy)) * 0xC2B2AE3D27D4EB4Full;
+    return h ^ (h >> 29);
+}
+
+} // namespace
+
+// Cell ranges of every active ball; false if that makes too many entries
+// (a cell much smaller than the largest balls), so the caller can grow the cell.
+bool UniformGrid::placeBalls(const BroadPhaseInput& in, double cell, double minX, double minY)
+{
+    const double inverse = 1.0 / cell;
+    const auto n = static_cast<std::size_t>(in.size());
+    m_x0.resize(n);
+    m_x1.resize(n);
+    m_y0.resize(n);
+    m_y1.resize(n);
+    const std::int64_t limit = 32 * static_cast<std::int64_t>(in.active.size()) + 4096;
+    std::int64_t entries = 0;
+    std::int32_t maxX = 0, maxY = 0;
+    auto cellOf = [&](double v, double origin) {
+        // Monotone in v, so the cell of the larger corner is the larger cell.
+        return static_cast<std::int32_t>(std::clamp(std::floor((v - origin) * inverse), 0.0, kMaxCells));
+    };
+    for (const int i : in.active) {
+        const auto k = static_cast<std::size_t>(i);
+        const std::int32_t x0 = cellOf(in.loX[k], minX), x1 = cellOf(in.hiX[k], minX);
+        const std::int32_t y0 = cellOf(in.loY[k], minY), y1 = cellOf(in.hiY[k], minY);
+        m_x0[k] = x0;
+        m_x1[k] = x1;
+        m_y0[k] = y0;
+        m_y1[k] = y1;
+        maxX = std::max(maxX, x1);
+        maxY = std::max(maxY, y1);
+        entries += static_cast<std::int64_t>(x1 - x0 + 1) * (y1 - y0 + 1);
+        if (entries > limit)
+            return false;
+    }
+    m_entries = entries;
+    m_nx = static_cast<std::int64_t>(maxX) + 1;
+    m_ny = static_cast<std::int64_t>(maxY) + 1;
+    return true;
+}
+
+template <class Test>
+void UniformGrid::findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out,
+                            CollisionStats& stats)
+{
+    m_entries = 0;
+    if (in.active.size() < 2)
+        return;
+    double minX = in.loX[static_cast<std::size_t>(in.active[0])], minY = in.loY[static_cast<std::size_t>(in.active[0])];
+    double maxX = minX, maxY = minY;
+    for (const int i : in.active) {
+        const auto k = static_cast<std::size_t>(i);
+        minX = std::min(minX, in.loX[k]);
+        minY = std::min(minY, in.loY[k]);
+        maxX = std::max(maxX, in.hiX[k]);
+        maxY = std::max(maxY, in.hiY[k]);
+    }
+    const double extent = std::max(maxX - minX, maxY - minY);
+    double cell = m_cellScale * in.meanSize;
+    cell = std::max(cell, extent / kMaxCells * 2.0);
+    if (!(cell > 0.0) || !std::isfinite(cell))
+        cell = 1.0;
+    while (!placeBalls(in, cell, minX, minY))
+        cell *= 2.0;
+    m_cellSize = cell;
+
+    // Slots: the dense array of cells when it is not mostly empty, a hash table otherwise.
+    const double denseCells = static_cast<double>(m_nx) * static_cast<double>(m_ny);
+    m_hashed = denseCells > 2.0 * static_cast<double>(m_entries) + 1024.0;
+    const std::uint64_t slots = m_hashed ? std::bit_ceil(static_cast<std::uint64_t>(2 * m_entries))
+                                         : static_cast<std::uint64_t>(denseCells);
+    const std::uint64_t mask = slots - 1;
+    auto slotOf = [&](std::int32_t cx, std::int32_t cy) -> std::size_t {
+        return m_hashed ? static_cast<std::size_t>(hashCell(cx, cy) & mask)
+                        : static_cast<std::size_t>(static_cast<std::int64_t>(cy) * m_nx + cx);
+    };
+
+    // Counting sort of the (ball, cell) entries by slot. After the second pass
+    // m_slotEnd[s] is the end of slot s (and the start of slot s + 1).
+    m_slotEnd.assign(static_cast<std::size_t>(slots), 0);
+    for (const int i : in.active) {
+        const auto k = static_cast<std::size_t>(i);
+        for (std::int32_t cy = m_y0[k]; cy <= m_y1[k]; ++cy)
+            for (std::int32_t cx = m_x0[k]; cx <= m_x1[k]; ++cx)
+                ++m_slotEnd[slotOf(cx, cy)];
+    }
+    std::uint32_t sum = 0;
+    for (auto& c : m_slotEnd) {
+        const std::uint32_t count = c;
+        c = sum;
+        sum += count;
+    }
+    m_entryBall.resize(static_cast<std::size_t>(m_entries));
+    if (m_hashed) {
+        m_entryCx.resize(static_cast<std::size_t>(m_entries));
+        m_entryCy.resize(static_cast<std::size_t>(m_entries));
+    }
+    for (const int i : in.active) {
+        const auto k = static_cast<std::size_t>(i);
+        for (std::int32_t cy = m_y0[k]; cy <= m_y1[k]; ++cy)
+            for (std::int32_t cx = m_x0[k]; cx <= m_x1[k]; ++cx) {
+                const std::size_t e = m_slotEnd[slotOf(cx, cy)]++;
+                m_entryBall[e] = i;
+                if (m_hashed) {
+                    m_entryCx[e] = cx;
+                    m_entryCy[e] = cy;
+                }
+            }
+    }
+
+    std::int64_t tested = 0;
+    std::size_t begin = 0;
+    for (std::size_t s = 0; s < m_slotEnd.size(); ++s) {
+        const std::size_t end = m_slotEnd[s];
+        if (end - begin >= 2) {
+            for (std::size_t p = begin; p < end; ++p) {
+                const auto a = static_cast<std::size_t>(m_entryBall[p]);
+                std::int32_t cx, cy;
+                if (m_hashed) {
+                    cx = m_entryCx[p];
+                    cy = m_entryCy[p];
+                } else {
+                    cx = static_cast<std::int32_t>(static_cast<std::int64_t>(s) % m_nx);
+                    cy = static_cast<std::int32_t>(static_cast<std::int64_t>(s) / m_nx);
+                }
+                for (std::size_t q = p + 1; q < end; ++q) {
+                    if (m_hashed && (m_entryCx[q] != cx || m_entryCy[q] != cy))
+                        continue; // another cell in the same hash slot
+                    const auto b = static_cast<std::size_t>(m_entryBall[q]);
+                    // Keep the pair only in the cell of the overlap's lower corner.
+                    if (std::max(m_x0[a], m_x0[b]) != cx || std::max(m_y0[a], m_y0[b]) != cy)
+                        continue;
+                    if (in.loX[b] > in.hiX[a] || in.loX[a] > in.hiX[b] || in.loY[b] > in.hiY[a] ||
+                        in.loY[a] > in.hiY[b])
+                        continue;
+                    ++tested;
+                    const int lo = static_cast<int>(std::min(a, b));
+                    const int hi = static_cast<int>(std::max(a, b));
+                    if (test(lo, hi))
+                        out.push_back({lo, hi});
+                }
+            }
+        }
+        begin = end;
+    }
+    stats.pairsTested += tested;
+}
+
+template void UniformGrid::findPairs<OverlapTest>(const BroadPhaseInput&, const OverlapTest&, std::vector<Contact>&,
+                                                  CollisionStats&);
+template void UniformGrid::findPairs<SweptTest>(const BroadPhaseInput&, const SweptTest&, std::vector<Contact>&,
+                                                CollisionStats&);
+
+} // namespace forcelab::sim

@@ -1,0 +1,55 @@
+#pragma once
+// Uniform grid. The plane is cut into square cells about as wide as a typical
+// ball; each ball is listed in every cell its box covers (one to four cells
+// for a ball the size of a cell, many for a ball a hundred times larger), and
+// only balls that share a cell reach the narrow phase. Two balls share several
+// cells when their boxes overlap over a cell border, so a pair is kept only in
+// the cell that holds the lower-left corner of the overlap of their boxes:
+// each pair is tested once.
+//
+// The cells are counted from the smallest box corner of this step, so balls
+// outside the walls are simply more cells. When the balls are spread so far
+// apart that a dense array of cells would be mostly empty, the cells are
+// hashed into a table twice as large as the number of entries instead; two
+// cells that land in the same slot are told apart by their coordinates.
+
+#include "broad_phase_input.h"
+#include "contact.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace forcelab::sim {
+
+class UniformGrid {
+public:
+    /// Appends every touching pair (a < b), in no particular order.
+    template <class Test>
+    void findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out, CollisionStats& stats);
+
+    /// Cell side as a multiple of the mean ball box size (default 1).
+    void setCellScale(double scale) { m_cellScale = scale; }
+    /// px, cell side of the last call.
+    double cellSize() const { return m_cellSize; }
+    /// Whether the last call hashed its cells (balls far apart) instead of a dense array.
+    bool hashed() const { return m_hashed; }
+    /// (ball, cell) entries of the last call.
+    std::int64_t entries() const { return m_entries; }
+
+private:
+    bool placeBalls(const BroadPhaseInput& in, double cell, double minX, double minY);
+
+    double m_cellScale = 1.0;
+    double m_cellSize = 0.0;
+    bool m_hashed = false;
+    std::int64_t m_entries = 0;
+    std::int64_t m_nx = 0, m_ny = 0;
+    // Cell range of each ball's box, by ball index.
+    std::vector<std::int32_t> m_x0, m_x1, m_y0, m_y1;
+    // Counting sort of the entries by slot.
+    std::vector<std::uint32_t> m_slotEnd;
+    std::vector<std::int32_t> m_entryBall;
+    std::vector<std::int32_t> m_entryCx, m_entryCy; // hashed mode only
+};
+
+} // namespace forcelab::sim
