@@ -1,0 +1,630 @@
+#include "lesson_parser.h"
+
+#include "lesson_limits.h"
+#include "nearest_key.h"
+#include "sim/names.h"
+
+#include <QJsonArray>
+#include <QRegularExpression>
+
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace forcelab::lessons {
+
+namespace {
+
+QString join(const QString& path, const QString& key)
+{
+    return path.isEmpty() ? key : path + QLatin1Char('.') + key;
+}
+
+QString join(const QString& path, qsizetype index)
+{
+    return path + QLatin1Char('.') + QString::number(index);
+}
+
+/// A number for messages: whole numbers up to 1e9 in full, others in the
+/// shortest form that reads back to the same double.
+QString numberText(double v)
+{
+    if (std::isfinite(v) && std::floor(v) == v && std::abs(v) <= 1e9)
+        return QString::number(static_cast<qint64>(v));
+    return QString::number(v, 'g', QLocale::FloatingPointShortest);
+}
+
+} // namespace
+
+QString Range::text() const
+{
+    QString s = QStringLiteral("%1%2, %3%4").arg(loOpen ? "(" : "[", numberText(lo), numberText(hi), hiOpen ? ")" : "]");
+    if (*unit)
+        s += QLatin1Char(' ') + QString::fromUtf8(unit);
+    return s;
+}
+
+namespace {
+
+QString quoted(const QString& s)
+{
+    const QString shown = s.size() > 60 ? s.left(57) + QStringLiteral("...") : s;
+    return QLatin1Char('"') + shown + QLatin1Char('"');
+}
+
+/// "the string "abc"", "the number 3", "an array", ... for "got ..." messages.
+QString describe(const QJsonValue& v)
+{
+    switch (v.type()) {
+    case QJsonValue::Null:
+        return QStringLiteral("null");
+    case QJsonValue::Bool:
+        return v.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    case QJsonValue::Double:
+        return QStringLiteral("the number ") + numberText(v.toDouble());
+    case QJsonValue::String:
+        return QStringLiteral("the string ") + quoted(v.toString());
+    case QJsonValue::Array:
+        return QStringLiteral("an array");
+    case QJsonValue::Object:
+        return QStringLiteral("an object");
+    case QJsonValue::Undefined:
+        break;
+    }
+    return QStringLiteral("nothing");
+}
+
+QString qs(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+QString names(std::span<const std::string_view> list)
+{
+    return qs(sim::joinNames(list));
+}
+
+/// Words that mean NaN or infinity (they reach us as strings from `--set`).
+bool namesNonFinite(const QString& s)
+{
+    static const QRegularExpression re(QStringLiteral("^\\s*[+-]?(nan|inf|infinity)\\s*$"),
+                                       QRegularExpression::CaseInsensitiveOption);
+    return re.match(s).hasMatch();
+}
+
+std::optional<sim::Rgb> parseColour(const QString& s)
+{
+    static const QRegularExpression re(QStringLiteral("^#[0-9a-fA-F]{6}$"));
+    if (!re.match(s).hasMatch())
+        return std::nullopt;
+    return static_cast<sim::Rgb>(s.mid(1).toUInt(nullptr, 16));
+}
+
+const QStringList kWallNames{QStringLiteral("left"), QStringLiteral("right"), QStringLiteral("top"),
+                             QStringLiteral("bottom")};
+
+// Reads typed values out of JSON objects, collecting every problem with its
+// key path. A setter assigns its output only when the value is present and
+// valid, so absent keys keep the struct defaults.
+class Reader {
+public:
+    explicit Reader(ParseResult& result) : m_result(result) {}
+
+    void fail(const QString& path, const QString& problem)
+    {
+        if (m_result.problems.size() < kMaxErrors)
+            m_result.problems.append({path, problem});
+        else
+            ++m_result.unlisted;
+    }
+
+    void checkKeys(const QJsonObject& o, const QString& path, const QStringList& known)
+    {
+        for (auto it = o.begin(); it != o.end(); ++it)
+            if (!known.contains(it.key()))
+                fail(join(path, it.key()), unknownKeyMessage(it.key(), known));
+    }
+
+    bool require(const QJsonObject& o, const QString& path, const QString& key, const QString& what)
+    {
+        if (o.contains(key))
+            return true;
+        fail(join(path, key), QStringLiteral("missing; give %1").arg(what));
+        return false;
+    }
+
+    /// The object under `key`, or nullopt when absent or not an object (reported).
+    std::optional<QJsonObject> object(const QJsonObject& o, const QString& path, const QString& key)
+    {
+        if (!o.contains(key))
+            return std::nullopt;
+        const QJsonValue v = o.value(key);
+        if (!v.isObject()) {
+            fail(join(path, key), QStringLiteral("expected an object { … }, got ") + describe(v));
+            return std::nullopt;
+        }
+        return v.toObject();
+    }
+
+    std::optional<QJsonArray> array(const QJsonObject& o, const QString& path, const QString& key,
+                                    const QString& what)
+    {
+        if (!o.contains(key))
+            return std::nullopt;
+        const QJsonValue v = o.value(key);
+        if (!v.isArray()) {
+            fail(join(path, key), QStringLiteral("expected %1, got %2").arg(what, describe(v)));
+            return std::nullopt;
+        }
+        return v.toArray();
+    }
+
+    bool numberValue(const QJsonValue& v, const QString& path, const Range& r, double& out)
+    {
+        if (!v.isDouble()) {
+            if (v.isString() && namesNonFinite(v.toString()))
+                fail(path, QStringLiteral("%1 is not a finite number; NaN and infinity are not allowed")
+                               .arg(quoted(v.toString())));
+            else
+                fail(path, QStringLiteral("expected a number in %1, got %2").arg(r.text(), describe(v)));
+            return false;
+        }
+        const double d = v.toDouble();
+        if (!std::isfinite(d)) {
+            fail(path, QStringLiteral("%1 is not a finite number; NaN and infinity are not allowed").arg(numberText(d)));
+            return false;
+        }
+        if (!r.contains(d)) {
+            fail(path, QStringLiteral("%1 is outside %2").arg(numberText(d), r.text()));
+            return false;
+        }
+        out = d;
+        return true;
+    }
+
+    bool number(const QJsonObject& o, const QString& path, const QString& key, const Range& r, double& out)
+    {
+        if (!o.contains(key))
+            return false;
+        return numberValue(o.value(key), join(path, key), r, out);
+    }
+
+    bool integer(const QJsonObject& o, const QString& path, const QString& key, int lo, int hi, int& out)
+    {
+        if (!o.contains(key))
+            return false;
+        const QString p = join(path, key);
+        const QJsonValue v = o.value(key);
+        if (!v.isDouble()) {
+            fail(p, QStringLiteral("expected a whole number in [%1, %2], got %3").arg(lo).arg(hi).arg(describe(v)));
+            return false;
+        }
+        const double d = v.toDouble();
+        if (std::floor(d) != d) {
+            fail(p, QStringLiteral("expected a whole number, got %1").arg(numberText(d)));
+            return false;
+        }
+        if (d < lo || d > hi) {
+            fail(p, QStringLiteral("%1 is outside [%2, %3]").arg(numberText(d)).arg(lo).arg(hi));
+            return false;
+        }
+        out = static_cast<int>(d);
+        return true;
+    }
+
+    /// A seed: a whole number in [0, 2^53], or a string of decimal digits for larger ones.
+    bool seed(const QJsonObject& o, const QString& path, const QString& key, std::uint64_t& out)
+    {
+        if (!o.contains(key))
+            return false;
+        const QString p = join(path, key);
+        const QJsonValue v = o.value(key);
+        const QString hint = QStringLiteral("a whole number in [0, 9007199254740992], or a string of digits up to "
+                                            "18446744073709551615");
+        if (v.isString()) {
+            static const QRegularExpression digits(QStringLiteral("^[0-9]{1,20}$"));
+            bool ok = false;
+            const qulonglong s = v.toString().toULongLong(&ok);
+            if (!digits.match(v.toString()).hasMatch() || !ok) {
+                fail(p, QStringLiteral("expected %1, got %2").arg(hint, describe(v)));
+                return false;
+            }
+            out = s;
+            return true;
+        }
+        const double d = v.toDouble();
+        if (!v.isDouble() || std::floor(d) != d || d < 0 || d > static_cast<double>(kMaxNumberSeed)) {
+            fail(p, QStringLiteral("expected %1, got %2").arg(hint, describe(v)));
+            return false;
+        }
+        out = static_cast<std::uint64_t>(d);
+        return true;
+    }
+
+    bool boolean(const QJsonObject& o, const QString& path, const QString& key, bool& out)
+    {
+        if (!o.contains(key))
+            return false;
+        const QJsonValue v = o.value(key);
+        if (!v.isBool()) {
+            fail(join(path, key), QStringLiteral("expected true or false, got ") + describe(v));
+            return false;
+        }
+        out = v.toBool();
+        return true;
+    }
+
+    bool string(const QJsonObject& o, const QString& path, const QString& key, QString& out)
+    {
+        if (!o.contains(key))
+            return false;
+        const QJsonValue v = o.value(key);
+        if (!v.isString()) {
+            fail(join(path, key), QStringLiteral("expected a string, got ") + describe(v));
+            return false;
+        }
+        out = v.toString();
+        return true;
+    }
+
+    bool stringList(const QJsonObject& o, const QString& path, const QString& key, QStringList& out)
+    {
+        const auto a = array(o, path, key, QStringLiteral("an array of strings"));
+        if (!a)
+            return false;
+        const QString p = join(path, key);
+        if (a->size() > kMaxListEntries) {
+            fail(p, QStringLiteral("%1 entries is more than the limit of %2").arg(a->size()).arg(kMaxListEntries));
+            return false;
+        }
+        QStringList list;
+        bool ok = true;
+        for (qsizetype i = 0; i < a->size(); ++i) {
+            const QJsonValue v = a->at(i);
+            if (!v.isString()) {
+                fail(join(p, i), QStringLiteral("expected a string, got ") + describe(v));
+                ok = false;
+            } else {
+                list << v.toString();
+            }
+        }
+        if (ok)
+            out = list;
+        return ok;
+    }
+
+    bool colourValue(const QJsonValue& v, const QString& path, sim::Rgb& out)
+    {
+        const auto c = v.isString() ? parseColour(v.toString()) : std::nullopt;
+        if (!c) {
+            fail(path, QStringLiteral("expected a colour written \"#rrggbb\" (e.g. \"#e05050\"), got ") + describe(v));
+            return false;
+        }
+        out = *c;
+        return true;
+    }
+
+    template <typename E>
+    bool enumeration(const QJsonObject& o, const QString& path, const QString& key,
+                     std::optional<E> (*parse)(std::string_view), std::span<const std::string_view> allowed, E& out)
+    {
+        if (!o.contains(key))
+            return false;
+        const QString p = join(path, key);
+        const QJsonValue v = o.value(key);
+        if (!v.isString()) {
+            fail(p, QStringLiteral("expected a string, one of %1, got %2").arg(names(allowed), describe(v)));
+            return false;
+        }
+        const QByteArray utf8 = v.toString().toUtf8();
+        const auto e = parse(std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size())));
+        if (!e) {
+            fail(p, QStringLiteral("%1 is not one of %2").arg(quoted(v.toString()), names(allowed)));
+            return false;
+        }
+        out = *e;
+        return true;
+    }
+
+    /// A [min, max] pair, or one number for both.
+    bool interval(const QJsonObject& o, const QString& path, const QString& key, const Range& r, double& lo, double& hi)
+    {
+        if (!o.contains(key))
+            return false;
+        const QString p = join(path, key);
+        const QJsonValue v = o.value(key);
+        if (v.isDouble()) {
+            double d = 0.0;
+            if (!numberValue(v, p, r, d))
+                return false;
+            lo = hi = d;
+            return true;
+        }
+        if (!v.isArray() || v.toArray().size() != 2) {
+            fail(p, QStringLiteral("expected [min, max] or one number, in %1, got %2").arg(r.text(), describe(v)));
+            return false;
+        }
+        const QJsonArray a = v.toArray();
+        double a0 = 0.0, a1 = 0.0;
+        const bool ok0 = numberValue(a.at(0), join(p, 0), r, a0);
+        const bool ok1 = numberValue(a.at(1), join(p, 1), r, a1);
+        if (!ok0 || !ok1)
+            return false;
+        if (a0 > a1) {
+            fail(p, QStringLiteral("the minimum %1 is larger than the maximum %2").arg(numberText(a0), numberText(a1)));
+            return false;
+        }
+        lo = a0;
+        hi = a1;
+        return true;
+    }
+
+    /// Present model objects are on unless they say "enabled": false.
+    void enabled(const QJsonObject& o, const QString& path, bool& out)
+    {
+        out = true;
+        boolean(o, path, QStringLiteral("enabled"), out);
+    }
+
+private:
+    ParseResult& m_result;
+};
+
+void parseWorld(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
+{
+    const QString path = QStringLiteral("world");
+    r.checkKeys(o, path, {"width", "height", "walls", "wall_model", "restitution"});
+    r.number(o, path, "width", range::kBoxSize, s.box.width);
+    r.number(o, path, "height", range::kBoxSize, s.box.height);
+    if (const auto walls = r.array(o, path, "walls", QStringLiteral("an array of wall names (left, right, top, bottom)"))) {
+        bool on[4] = {false, false, false, false};
+        bool ok = true;
+        if (walls->size() > 4) {
+            r.fail(join(path, "walls"), QStringLiteral("at most four walls: left, right, top, bottom"));
+            ok = false;
+        }
+        for (qsizetype i = 0; ok && i < walls->size(); ++i) {
+            const QString p = join(join(path, "walls"), i);
+            const QJsonValue v = walls->at(i);
+            const qsizetype k = v.isString() ? kWallNames.indexOf(v.toString()) : -1;
+            if (!v.isString()) {
+                r.fail(p, QStringLiteral("expected a string, one of left, right, top, bottom, got ") + describe(v));
+                ok = false;
+            } else if (k < 0) {
+                r.fail(p, QStringLiteral("%1 is not one of left, right, top, bottom").arg(quoted(v.toString())));
+                ok = false;
+            } else if (on[k]) {
+                r.fail(p, QStringLiteral("%1 is listed twice").arg(quoted(v.toString())));
+                ok = false;
+            } else {
+                on[k] = true;
+            }
+        }
+        if (ok) {
+            s.walls.left = on[0];
+            s.walls.right = on[1];
+            s.walls.top = on[2];
+            s.walls.bottom = on[3];
+        }
+    }
+    r.enumeration(o, path, "wall_model", &sim::parseWallModel, sim::wallModelNames(), s.walls.model);
+    r.number(o, path, "restitution", range::kUnit, s.walls.restitution);
+}
+
+void parseTime(Reader& r, const QJsonObject& o, sim::TimeSettings& t)
+{
+    const QString path = QStringLiteral("time");
+    r.checkKeys(o, path, {"integrator", "dt", "substeps", "tolerance", "seed"});
+    r.enumeration(o, path, "integrator", &sim::parseIntegrator, sim::integratorNames(), t.integrator);
+    r.number(o, path, "dt", range::kDt, t.dt);
+    r.integer(o, path, "substeps", intrange::kSubstepsLo, intrange::kSubstepsHi, t.substeps);
+    r.number(o, path, "tolerance", range::kTolerance, t.tolerance);
+    r.seed(o, path, "seed", t.seed);
+}
+
+void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
+{
+    const QString base = QStringLiteral("models");
+    r.checkKeys(models, base,
+                {"gravity", "drag", "wind", "point", "spring", "mutual_gravity", "homing", "pointer", "speed_limit",
+                 "collisions"});
+
+    if (const auto o = r.object(models, base, "gravity")) {
+        const QString p = join(base, "gravity");
+        r.checkKeys(*o, p, {"enabled", "x", "y"});
+        r.enabled(*o, p, s.gravity.enabled);
+        r.number(*o, p, "x", range::kGravity, s.gravity.g.x());
+        r.number(*o, p, "y", range::kGravity, s.gravity.g.y());
+    }
+    if (const auto o = r.object(models, base, "drag")) {
+        const QString p = join(base, "drag");
+        r.checkKeys(*o, p, {"enabled", "law", "k"});
+        r.enabled(*o, p, s.drag.enabled);
+        r.enumeration(*o, p, "law", &sim::parseDragLaw, sim::dragLawNames(), s.drag.law);
+        r.number(*o, p, "k", range::kDragK, s.drag.k);
+    }
+    if (const auto o = r.object(models, base, "wind")) {
+        const QString p = join(base, "wind");
+        r.checkKeys(*o, p, {"mode", "strength", "scale", "smoothed_step", "frequency"});
+        s.wind.mode = sim::WindMode::Random; // present without a mode: the simplest wind
+        r.enumeration(*o, p, "mode", &sim::parseWindMode, sim::windModeNames(), s.wind.mode);
+        r.number(*o, p, "strength", range::kWindStrength, s.wind.strength);
+        r.enumeration(*o, p, "scale", &sim::parseForceScale, sim::forceScaleNames(), s.wind.scale);
+        r.number(*o, p, "smoothed_step", range::kSmoothedStep, s.wind.smoothedStep);
+        r.number(*o, p, "frequency", range::kFrequency, s.wind.noiseFrequency);
+    }
+    if (const auto o = r.object(models, base, "point")) {
+        const QString p = join(base, "point");
+        r.checkKeys(*o, p, {"enabled", "kind", "x", "y", "strength", "max_accel", "scale"});
+        r.enabled(*o, p, s.point.enabled);
+        r.enumeration(*o, p, "kind", &sim::parsePointKind, sim::pointKindNames(), s.point.kind);
+        r.number(*o, p, "x", range::kPosition, s.point.position.x());
+        r.number(*o, p, "y", range::kPosition, s.point.position.y());
+        r.number(*o, p, "strength", range::kInverseSquare, s.point.strength);
+        r.number(*o, p, "max_accel", range::kMaxAccel, s.point.maxAccel);
+        r.enumeration(*o, p, "scale", &sim::parseForceScale, sim::forceScaleNames(), s.point.scale);
+    }
+    if (const auto o = r.object(models, base, "spring")) {
+        const QString p = join(base, "spring");
+        r.checkKeys(*o, p, {"enabled", "x", "y", "k"});
+        r.enabled(*o, p, s.spring.enabled);
+        r.number(*o, p, "x", range::kPosition, s.spring.anchor.x());
+        r.number(*o, p, "y", range::kPosition, s.spring.anchor.y());
+        r.number(*o, p, "k", range::kSpringK, s.spring.k);
+    }
+    if (const auto o = r.object(models, base, "mutual_gravity")) {
+        const QString p = join(base, "mutual_gravity");
+        r.checkKeys(*o, p, {"enabled", "G", "softening"});
+        r.enabled(*o, p, s.mutualGravity.enabled);
+        r.number(*o, p, "G", range::kG, s.mutualGravity.G);
+        r.number(*o, p, "softening", range::kSoftening, s.mutualGravity.softening);
+    }
+    if (const auto o = r.object(models, base, "homing")) {
+        const QString p = join(base, "homing");
+        r.checkKeys(*o, p, {"enabled", "strength"});
+        r.enabled(*o, p, s.homing.enabled);
+        r.number(*o, p, "strength", range::kHoming, s.homing.strength);
+    }
+    if (const auto o = r.object(models, base, "pointer")) {
+        const QString p = join(base, "pointer");
+        r.checkKeys(*o, p, {"enabled", "strength", "max_accel"});
+        r.enabled(*o, p, s.pointer.enabled);
+        r.number(*o, p, "strength", range::kInverseSquare, s.pointer.strength);
+        r.number(*o, p, "max_accel", range::kMaxAccel, s.pointer.maxAccel);
+    }
+    if (const auto o = r.object(models, base, "speed_limit")) {
+        const QString p = join(base, "speed_limit");
+        r.checkKeys(*o, p, {"enabled", "max"});
+        r.enabled(*o, p, s.speedLimit.enabled);
+        r.number(*o, p, "max", range::kSpeedLimit, s.speedLimit.max);
+    }
+    if (const auto o = r.object(models, base, "collisions")) {
+        const QString p = join(base, "collisions");
+        r.checkKeys(*o, p, {"detection", "response", "restitution", "continuous"});
+        s.collisions.response = sim::Response::Impulse2D; // present without a response: the correct one
+        r.enumeration(*o, p, "detection", &sim::parseDetection, sim::detectionNames(), s.collisions.detection);
+        r.enumeration(*o, p, "response", &sim::parseResponse, sim::responseNames(), s.collisions.response);
+        r.number(*o, p, "restitution", range::kUnit, s.collisions.restitution);
+        r.boolean(*o, p, "continuous", s.collisions.continuous);
+    }
+}
+
+void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
+{
+    const QString base = QStringLiteral("balls");
+    if (balls.size() > kMaxBalls) {
+        r.fail(base, QStringLiteral("%1 balls is more than the limit of %2").arg(balls.size()).arg(kMaxBalls));
+        return;
+    }
+    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "color"};
+    out.clear();
+    out.reserve(static_cast<std::size_t>(balls.size()));
+    for (qsizetype i = 0; i < balls.size(); ++i) {
+        const QString p = join(base, i);
+        const QJsonValue v = balls.at(i);
+        if (!v.isObject()) {
+            r.fail(p, QStringLiteral("expected a ball object {\"x\": …, \"y\": …}, got ") + describe(v));
+            continue;
+        }
+        const QJsonObject o = v.toObject();
+        r.checkKeys(o, p, known);
+        sim::Ball b;
+        r.require(o, p, "x", QStringLiteral("the ball's centre x in px"));
+        r.require(o, p, "y", QStringLiteral("the ball's centre y in px"));
+        r.number(o, p, "x", range::kBallPosition, b.position.x());
+        r.number(o, p, "y", range::kBallPosition, b.position.y());
+        r.number(o, p, "vx", range::kBallVelocity, b.velocity.x());
+        r.number(o, p, "vy", range::kBallVelocity, b.velocity.y());
+        r.number(o, p, "r", range::kRadius, b.radius);
+        r.number(o, p, "mass", range::kMass, b.mass);
+        if (o.contains("color"))
+            r.colourValue(o.value("color"), join(p, "color"), b.color);
+        out.push_back(b);
+    }
+}
+
+void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings& s)
+{
+    const QString path = QStringLiteral("spawn");
+    r.checkKeys(o, path, {"count", "radius", "speed", "seed", "palette"});
+    if (r.integer(o, path, "count", 0, kMaxBalls, s.count) && listed + s.count > kMaxBalls) {
+        r.fail(join(path, "count"), QStringLiteral("%1 spawned + %2 listed balls is more than the limit of %3")
+                                        .arg(s.count)
+                                        .arg(listed)
+                                        .arg(kMaxBalls));
+    }
+    r.interval(o, path, "radius", range::kRadius, s.minRadius, s.maxRadius);
+    r.interval(o, path, "speed", range::kSpawnSpeed, s.minSpeed, s.maxSpeed);
+    r.seed(o, path, "seed", s.seed);
+    if (const auto a = r.array(o, path, "palette", QStringLiteral("an array of colours \"#rrggbb\""))) {
+        const QString p = join(path, "palette");
+        if (a->size() > kMaxPaletteColours) {
+            r.fail(p, QStringLiteral("%1 colours is more than the limit of %2").arg(a->size()).arg(kMaxPaletteColours));
+            return;
+        }
+        std::vector<sim::Rgb> palette;
+        bool ok = true;
+        for (qsizetype i = 0; i < a->size(); ++i) {
+            sim::Rgb c = 0;
+            if (r.colourValue(a->at(i), join(p, i), c))
+                palette.push_back(c);
+            else
+                ok = false;
+        }
+        if (ok)
+            s.palette = std::move(palette);
+    }
+}
+
+} // namespace
+
+ParseResult parseLesson(const QJsonObject& root)
+{
+    ParseResult result;
+    Reader r(result);
+    Lesson& lesson = result.lesson;
+    const QString top;
+    r.checkKeys(root, top,
+                {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
+                 "controls", "overlays"});
+
+    if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
+        const QJsonValue v = root.value("format");
+        if (!v.isDouble() || v.toDouble() != kFormat)
+            r.fail("format", QStringLiteral("%1 is not a format this version reads; it reads format %2")
+                                 .arg(v.isDouble() ? numberText(v.toDouble()) : describe(v))
+                                 .arg(kFormat));
+    }
+    lesson.format = kFormat;
+
+    if (r.require(root, top, "id", QStringLiteral("a short name such as \"gravity\"")) &&
+        r.string(root, top, "id", lesson.id)) {
+        static const QRegularExpression idPattern(QStringLiteral("^[A-Za-z0-9_-]{1,64}$"));
+        if (!idPattern.match(lesson.id).hasMatch())
+            r.fail("id", QStringLiteral("%1 is not a valid id; use 1 to 64 letters, digits, '-' or '_'")
+                             .arg(quoted(lesson.id)));
+    }
+    if (!r.string(root, top, "title", lesson.title))
+        lesson.title = lesson.id;
+    r.integer(root, top, "stage", intrange::kStageLo, intrange::kStageHi, lesson.stage);
+    r.string(root, top, "text", lesson.text);
+    r.stringList(root, top, "challenges", lesson.challenges);
+    r.stringList(root, top, "controls", lesson.controls);
+    r.stringList(root, top, "overlays", lesson.overlays);
+
+    sim::Scene& scene = lesson.scene;
+    if (const auto o = r.object(root, top, "world"))
+        parseWorld(r, *o, scene.settings);
+    if (const auto o = r.object(root, top, "time"))
+        parseTime(r, *o, scene.settings.time);
+    if (const auto o = r.object(root, top, "models"))
+        parseModels(r, *o, scene.settings);
+    if (const auto a = r.array(root, top, "balls", QStringLiteral("an array of ball objects")))
+        parseBalls(r, *a, scene.balls);
+    if (const auto o = r.object(root, top, "spawn"))
+        parseSpawn(r, *o, static_cast<int>(scene.balls.size()), scene.spawn);
+    return result;
+}
+
+} // namespace forcelab::lessons

@@ -1,1 +1,0 @@
-namespace forcelab { int lessonsPlaceholder = 0; }

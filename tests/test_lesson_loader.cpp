@@ -1,0 +1,713 @@
+// The lesson loader: built-in lessons load, every key lands in its struct
+// member, each class of bad input gives its one-line message, overrides act
+// like edits of the file, and save -> load gives back the same bits.
+
+#include "lessons/lesson_loader.h"
+#include "sim/names.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+using namespace forcelab;
+
+namespace {
+
+const QString kSrc = QStringLiteral("t.json");
+
+LoadResult loadText(const QByteArray& json, const QList<Override>& overrides = {})
+{
+    return LessonLoader::loadBytes(json, kSrc, overrides);
+}
+
+/// A minimal valid lesson with `extra` spliced into the top-level object.
+QByteArray minimal(const QByteArray& extra = {})
+{
+    return "{\"format\": 1, \"id\": \"t\"" + (extra.isEmpty() ? QByteArray() : ", " + extra) + "}";
+}
+
+std::uint64_t bits(double v)
+{
+    return std::bit_cast<std::uint64_t>(v);
+}
+
+#define COMPARE_BITS(a, b)                                                                                          \
+    do {                                                                                                            \
+        if (bits(a) != bits(b))                                                                                     \
+            QFAIL(qPrintable(QStringLiteral("%1: %2 != %3").arg(#a).arg((a), 0, 'g', 17).arg((b), 0, 'g', 17)));    \
+    } while (false)
+
+/// An enum by its lesson-file name, so QCOMPARE can print it.
+template <typename E>
+QString nameOf(E e)
+{
+    const std::string_view s = sim::toString(e);
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+#define COMPARE_ENUM(a, b) QCOMPARE(nameOf(a), nameOf(b))
+
+/// Every field of two lessons equal, doubles bit for bit (the source aside).
+void compareLessons(const Lesson& a, const Lesson& b)
+{
+    QCOMPARE(a.format, b.format);
+    QCOMPARE(a.id, b.id);
+    QCOMPARE(a.title, b.title);
+    QCOMPARE(a.stage, b.stage);
+    QCOMPARE(a.text, b.text);
+    QCOMPARE(a.challenges, b.challenges);
+    QCOMPARE(a.controls, b.controls);
+    QCOMPARE(a.overlays, b.overlays);
+
+    const sim::WorldSettings& s = a.scene.settings;
+    const sim::WorldSettings& t = b.scene.settings;
+    COMPARE_BITS(s.box.width, t.box.width);
+    COMPARE_BITS(s.box.height, t.box.height);
+    QCOMPARE(s.walls.left, t.walls.left);
+    QCOMPARE(s.walls.right, t.walls.right);
+    QCOMPARE(s.walls.top, t.walls.top);
+    QCOMPARE(s.walls.bottom, t.walls.bottom);
+    COMPARE_ENUM(s.walls.model, t.walls.model);
+    COMPARE_BITS(s.walls.restitution, t.walls.restitution);
+    COMPARE_ENUM(s.time.integrator, t.time.integrator);
+    COMPARE_BITS(s.time.dt, t.time.dt);
+    QCOMPARE(s.time.substeps, t.time.substeps);
+    COMPARE_BITS(s.time.tolerance, t.time.tolerance);
+    QCOMPARE(s.time.seed, t.time.seed);
+    QCOMPARE(s.gravity.enabled, t.gravity.enabled);
+    COMPARE_BITS(s.gravity.g.x(), t.gravity.g.x());
+    COMPARE_BITS(s.gravity.g.y(), t.gravity.g.y());
+    QCOMPARE(s.drag.enabled, t.drag.enabled);
+    COMPARE_ENUM(s.drag.law, t.drag.law);
+    COMPARE_BITS(s.drag.k, t.drag.k);
+    COMPARE_ENUM(s.wind.mode, t.wind.mode);
+    COMPARE_BITS(s.wind.strength, t.wind.strength);
+    COMPARE_ENUM(s.wind.scale, t.wind.scale);
+    COMPARE_BITS(s.wind.smoothedStep, t.wind.smoothedStep);
+    COMPARE_BITS(s.wind.noiseFrequency, t.wind.noiseFrequency);
+    QCOMPARE(s.point.enabled, t.point.enabled);
+    COMPARE_ENUM(s.point.kind, t.point.kind);
+    COMPARE_BITS(s.point.position.x(), t.point.position.x());
+    COMPARE_BITS(s.point.position.y(), t.point.position.y());
+    COMPARE_BITS(s.point.strength, t.point.strength);
+    COMPARE_BITS(s.point.maxAccel, t.point.maxAccel);
+    COMPARE_ENUM(s.point.scale, t.point.scale);
+    QCOMPARE(s.spring.enabled, t.spring.enabled);
+    COMPARE_BITS(s.spring.anchor.x(), t.spring.anchor.x());
+    COMPARE_BITS(s.spring.anchor.y(), t.spring.anchor.y());
+    COMPARE_BITS(s.spring.k, t.spring.k);
+    QCOMPARE(s.mutualGravity.enabled, t.mutualGravity.enabled);
+    COMPARE_BITS(s.mutualGravity.G, t.mutualGravity.G);
+    COMPARE_BITS(s.mutualGravity.softening, t.mutualGravity.softening);
+    QCOMPARE(s.homing.enabled, t.homing.enabled);
+    COMPARE_BITS(s.homing.strength, t.homing.strength);
+    QCOMPARE(s.pointer.enabled, t.pointer.enabled);
+    COMPARE_BITS(s.pointer.strength, t.pointer.strength);
+    COMPARE_BITS(s.pointer.maxAccel, t.pointer.maxAccel);
+    QCOMPARE(s.speedLimit.enabled, t.speedLimit.enabled);
+    COMPARE_BITS(s.speedLimit.max, t.speedLimit.max);
+    COMPARE_ENUM(s.collisions.detection, t.collisions.detection);
+    COMPARE_ENUM(s.collisions.response, t.collisions.response);
+    COMPARE_BITS(s.collisions.restitution, t.collisions.restitution);
+    QCOMPARE(s.collisions.continuous, t.collisions.continuous);
+
+    QCOMPARE(a.scene.balls.size(), b.scene.balls.size());
+    for (std::size_t i = 0; i < a.scene.balls.size(); ++i) {
+        const sim::Ball& p = a.scene.balls[i];
+        const sim::Ball& q = b.scene.balls[i];
+        COMPARE_BITS(p.position.x(), q.position.x());
+        COMPARE_BITS(p.position.y(), q.position.y());
+        COMPARE_BITS(p.velocity.x(), q.velocity.x());
+        COMPARE_BITS(p.velocity.y(), q.velocity.y());
+        COMPARE_BITS(p.radius, q.radius);
+        COMPARE_BITS(p.mass, q.mass);
+        QCOMPARE(p.color, q.color);
+    }
+    const sim::SpawnSettings& u = a.scene.spawn;
+    const sim::SpawnSettings& v = b.scene.spawn;
+    QCOMPARE(u.count, v.count);
+    COMPARE_BITS(u.minRadius, v.minRadius);
+    COMPARE_BITS(u.maxRadius, v.maxRadius);
+    COMPARE_BITS(u.minSpeed, v.minSpeed);
+    COMPARE_BITS(u.maxSpeed, v.maxSpeed);
+    QCOMPARE(u.seed, v.seed);
+    QCOMPARE(u.palette, v.palette);
+}
+
+QString firstError(const LoadResult& r)
+{
+    return r.errors.isEmpty() ? QStringLiteral("<no error>") : r.errors.first();
+}
+
+} // namespace
+
+class TestLessonLoader : public QObject {
+    Q_OBJECT
+
+private slots:
+    void builtInFilesAreCompiledIn();
+    void everyBuiltInLessonLoads();
+    void builtInByIdAndStem();
+    void eachKeyLandsInItsMember();
+    void absentModelsAreOff();
+    void presentModelWithEnabledFalseIsOff();
+    void badInput_data();
+    void badInput();
+    void everyProblemIsReported();
+    void tooLargeFile();
+    void tooManyBalls();
+    void semanticCheckFromTheCore();
+    void overrides();
+    void badOverrides_data();
+    void badOverrides();
+    void parseOverride();
+    void saveLoadRoundTripIsBitIdentical();
+    void builtInLessonsRoundTrip();
+};
+
+void TestLessonLoader::builtInFilesAreCompiledIn()
+{
+    const QStringList files = LessonLoader::builtInFiles();
+    QVERIFY2(files.contains(QStringLiteral(":/lessons/00-showcase.json")), qPrintable(files.join(' ')));
+    QVERIFY(files.contains(QStringLiteral(":/lessons/07-gravity.json")));
+    QStringList sorted = files;
+    sorted.sort();
+    QCOMPARE(files, sorted);
+    QCOMPARE(files.first(), QStringLiteral(":/lessons/00-showcase.json"));
+}
+
+void TestLessonLoader::everyBuiltInLessonLoads()
+{
+    const QStringList files = LessonLoader::builtInFiles();
+    QVERIFY(!files.isEmpty());
+    for (const QString& f : files) {
+        const LoadResult r = LessonLoader::load(f);
+        QVERIFY2(r.ok(), qPrintable(f + ": " + r.errors.join(" | ")));
+        QVERIFY(r.errors.isEmpty());
+        const Lesson& l = *r.lesson;
+        QCOMPARE(l.source, f);
+        QVERIFY(!l.id.isEmpty());
+        QVERIFY(!l.title.isEmpty());
+        QVERIFY2(l.challenges.size() >= 2 && l.challenges.size() <= 4, qPrintable(f));
+        QVERIFY(!l.text.isEmpty());
+        // The file name NN-… carries the stage.
+        QCOMPARE(QFileInfo(f).fileName().left(2).toInt(), l.stage);
+    }
+}
+
+void TestLessonLoader::builtInByIdAndStem()
+{
+    const LoadResult byId = LessonLoader::load(QStringLiteral("gravity"));
+    QVERIFY2(byId.ok(), qPrintable(byId.errors.join(" | ")));
+    QCOMPARE(byId.lesson->source, QStringLiteral(":/lessons/07-gravity.json"));
+    QCOMPARE(byId.lesson->stage, 7);
+    QVERIFY(byId.lesson->scene.settings.gravity.enabled);
+    COMPARE_BITS(byId.lesson->scene.settings.gravity.g.y(), 980.0);
+
+    const LoadResult byStem = LessonLoader::load(QStringLiteral("00-showcase"));
+    QVERIFY2(byStem.ok(), qPrintable(byStem.errors.join(" | ")));
+    QCOMPARE(byStem.lesson->id, QStringLiteral("showcase"));
+    const sim::WorldSettings& s = byStem.lesson->scene.settings;
+    QVERIFY(!s.gravity.enabled);
+    QVERIFY(s.homing.enabled && s.pointer.enabled);
+    COMPARE_ENUM(s.collisions.detection, sim::Detection::Sweep);
+    COMPARE_ENUM(s.collisions.response, sim::Response::Impulse2D);
+
+    const LoadResult missing = LessonLoader::load(QStringLiteral("no-such-lesson"));
+    QVERIFY(!missing.ok());
+    QCOMPARE(missing.errors.size(), 1);
+    QVERIFY2(missing.errors.first().startsWith("no-such-lesson: no such file or built-in lesson; built-in lessons: "),
+             qPrintable(missing.errors.first()));
+    QVERIFY(missing.errors.first().contains("gravity"));
+}
+
+void TestLessonLoader::eachKeyLandsInItsMember()
+{
+    const QByteArray json = R"({
+  "format": 1, "id": "every-key", "title": "Every key", "stage": 42,
+  "text": "Some <b>text</b>", "challenges": ["one", "two"],
+  "world": {"width": 640, "height": 480, "walls": ["left", "bottom"], "wall_model": "exact", "restitution": 0.75},
+  "time": {"integrator": "rk45", "dt": 0.004, "substeps": 3, "tolerance": 1e-7, "seed": 12345},
+  "models": {
+    "gravity": {"x": 1.5, "y": 900},
+    "drag": {"law": "quadratic", "k": 0.002},
+    "wind": {"mode": "noise", "strength": 40, "scale": "mass", "smoothed_step": 0.25, "frequency": 2},
+    "point": {"kind": "repel", "x": 10, "y": 20, "strength": 5e5, "max_accel": 1500, "scale": "radius"},
+    "spring": {"x": 30, "y": 40, "k": 9},
+    "mutual_gravity": {"G": -250, "softening": 3},
+    "homing": {"strength": 6},
+    "pointer": {"strength": 1e6, "max_accel": 2500},
+    "speed_limit": {"max": 700},
+    "collisions": {"detection": "grid", "response": "1d-elastic", "restitution": 0.5, "continuous": true}
+  },
+  "balls": [{"x": 100, "y": 50, "vx": -3, "vy": 4, "r": 11, "mass": 2.5, "color": "#E05051"},
+            {"x": 7, "y": 8}],
+  "spawn": {"count": 20, "radius": [3, 9], "speed": 12, "seed": 99, "palette": ["#010203", "#a0b0c0"]},
+  "controls": ["gravity", "drag"], "overlays": ["velocity"]
+})";
+    const LoadResult r = loadText(json);
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    const Lesson& l = *r.lesson;
+    QCOMPARE(l.id, QStringLiteral("every-key"));
+    QCOMPARE(l.title, QStringLiteral("Every key"));
+    QCOMPARE(l.stage, 42);
+    QCOMPARE(l.text, QStringLiteral("Some <b>text</b>"));
+    QCOMPARE(l.challenges, QStringList({"one", "two"}));
+    QCOMPARE(l.controls, QStringList({"gravity", "drag"}));
+    QCOMPARE(l.overlays, QStringList({"velocity"}));
+    QCOMPARE(l.source, kSrc);
+
+    const sim::WorldSettings& s = l.scene.settings;
+    QCOMPARE(s.box.width, 640.0);
+    QCOMPARE(s.box.height, 480.0);
+    QVERIFY(s.walls.left && !s.walls.right && !s.walls.top && s.walls.bottom);
+    COMPARE_ENUM(s.walls.model, sim::WallModel::Exact);
+    QCOMPARE(s.walls.restitution, 0.75);
+    COMPARE_ENUM(s.time.integrator, sim::IntegratorKind::Rk45);
+    QCOMPARE(s.time.dt, 0.004);
+    QCOMPARE(s.time.substeps, 3);
+    QCOMPARE(s.time.tolerance, 1e-7);
+    QCOMPARE(s.time.seed, std::uint64_t{12345});
+    QVERIFY(s.gravity.enabled);
+    QCOMPARE(s.gravity.g.x(), 1.5);
+    QCOMPARE(s.gravity.g.y(), 900.0);
+    QVERIFY(s.drag.enabled);
+    COMPARE_ENUM(s.drag.law, sim::DragLaw::Quadratic);
+    QCOMPARE(s.drag.k, 0.002);
+    COMPARE_ENUM(s.wind.mode, sim::WindMode::Noise);
+    QCOMPARE(s.wind.strength, 40.0);
+    COMPARE_ENUM(s.wind.scale, sim::ForceScale::Mass);
+    QCOMPARE(s.wind.smoothedStep, 0.25);
+    QCOMPARE(s.wind.noiseFrequency, 2.0);
+    QVERIFY(s.point.enabled);
+    COMPARE_ENUM(s.point.kind, sim::PointKind::Repel);
+    QCOMPARE(s.point.position.x(), 10.0);
+    QCOMPARE(s.point.position.y(), 20.0);
+    QCOMPARE(s.point.strength, 5e5);
+    QCOMPARE(s.point.maxAccel, 1500.0);
+    COMPARE_ENUM(s.point.scale, sim::ForceScale::Radius);
+    QVERIFY(s.spring.enabled);
+    QCOMPARE(s.spring.anchor.x(), 30.0);
+    QCOMPARE(s.spring.anchor.y(), 40.0);
+    QCOMPARE(s.spring.k, 9.0);
+    QVERIFY(s.mutualGravity.enabled);
+    QCOMPARE(s.mutualGravity.G, -250.0);
+    QCOMPARE(s.mutualGravity.softening, 3.0);
+    QVERIFY(s.homing.enabled);
+    QCOMPARE(s.homing.strength, 6.0);
+    QVERIFY(s.pointer.enabled);
+    QCOMPARE(s.pointer.strength, 1e6);
+    QCOMPARE(s.pointer.maxAccel, 2500.0);
+    QVERIFY(s.speedLimit.enabled);
+    QCOMPARE(s.speedLimit.max, 700.0);
+    COMPARE_ENUM(s.collisions.detection, sim::Detection::Grid);
+    COMPARE_ENUM(s.collisions.response, sim::Response::Elastic1D);
+    QCOMPARE(s.collisions.restitution, 0.5);
+    QVERIFY(s.collisions.continuous);
+
+    QCOMPARE(l.scene.balls.size(), std::size_t{2});
+    const sim::Ball& b = l.scene.balls[0];
+    QCOMPARE(b.position.x(), 100.0);
+    QCOMPARE(b.position.y(), 50.0);
+    QCOMPARE(b.velocity.x(), -3.0);
+    QCOMPARE(b.velocity.y(), 4.0);
+    QCOMPARE(b.radius, 11.0);
+    QCOMPARE(b.mass, 2.5);
+    QCOMPARE(b.color, sim::Rgb{0xe05051});
+    // Absent ball keys keep the Ball defaults: at rest, r 10, sphere mass (0), default colour.
+    const sim::Ball& c = l.scene.balls[1];
+    const sim::Ball d;
+    QCOMPARE(c.position.x(), 7.0);
+    QCOMPARE(c.velocity.x(), 0.0);
+    QCOMPARE(c.radius, d.radius);
+    QCOMPARE(c.mass, 0.0);
+    QCOMPARE(c.color, d.color);
+
+    const sim::SpawnSettings& sp = l.scene.spawn;
+    QCOMPARE(sp.count, 20);
+    QCOMPARE(sp.minRadius, 3.0);
+    QCOMPARE(sp.maxRadius, 9.0);
+    QCOMPARE(sp.minSpeed, 12.0); // one number means [12, 12]
+    QCOMPARE(sp.maxSpeed, 12.0);
+    QCOMPARE(sp.seed, std::uint64_t{99});
+    QCOMPARE(sp.palette, (std::vector<sim::Rgb>{0x010203, 0xa0b0c0}));
+}
+
+void TestLessonLoader::absentModelsAreOff()
+{
+    const LoadResult r = loadText(minimal());
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    const sim::WorldSettings& s = r.lesson->scene.settings;
+    QVERIFY(!s.gravity.enabled);
+    QVERIFY(!s.drag.enabled);
+    COMPARE_ENUM(s.wind.mode, sim::WindMode::Off);
+    QVERIFY(!s.point.enabled);
+    QVERIFY(!s.spring.enabled);
+    QVERIFY(!s.mutualGravity.enabled);
+    QVERIFY(!s.homing.enabled);
+    QVERIFY(!s.pointer.enabled);
+    QVERIFY(!s.speedLimit.enabled);
+    COMPARE_ENUM(s.collisions.response, sim::Response::None);
+    QCOMPARE(r.lesson->title, QStringLiteral("t")); // the title defaults to the id
+    QVERIFY(r.lesson->scene.balls.empty());
+    QCOMPARE(r.lesson->scene.spawn.count, 0);
+
+    // A model object that is present is on, with the struct defaults for what it leaves out.
+    const LoadResult on = loadText(minimal(R"("models": {"drag": {}, "wind": {}, "collisions": {}})"));
+    QVERIFY2(on.ok(), qPrintable(on.errors.join(" | ")));
+    const sim::WorldSettings& t = on.lesson->scene.settings;
+    QVERIFY(t.drag.enabled);
+    QCOMPARE(t.drag.k, sim::DragSettings{}.k);
+    COMPARE_ENUM(t.wind.mode, sim::WindMode::Random);
+    COMPARE_ENUM(t.collisions.response, sim::Response::Impulse2D);
+}
+
+void TestLessonLoader::presentModelWithEnabledFalseIsOff()
+{
+    const LoadResult r = loadText(minimal(R"("models": {"gravity": {"enabled": false, "y": 123}})"));
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY(!r.lesson->scene.settings.gravity.enabled);
+    QCOMPARE(r.lesson->scene.settings.gravity.g.y(), 123.0);
+}
+
+void TestLessonLoader::badInput_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error");
+
+    QTest::newRow("syntax: missing comma, line and column")
+        << QByteArray("{\n  \"format\": 1,\n  \"id\": \"t\"\n  \"title\": \"x\"\n}")
+        << "t.json:4:3: syntax error: expected , or } here (a missing comma, or a { that is never closed)";
+    QTest::newRow("syntax: column counts characters, not bytes")
+        << QByteArray("{\"format\": 1, \"id\": \"t\", \"text\": \"é\" ,, }")
+        << "t.json:1:39: syntax error: expected , or } here (a missing comma, or a { that is never closed)";
+    QTest::newRow("syntax: number too large for a double")
+        << QByteArray("{\"format\": 1,\n \"id\": \"t\",\n \"time\": {\"dt\": 1e999}}")
+        << "t.json:3:17: syntax error: not a valid value (text needs \"double quotes\"; a number must fit a double, "
+           "e.g. 1e999 does not)";
+    QTest::newRow("syntax: empty file") << QByteArray("") << "t.json:1:1: syntax error: not a JSON value (text needs "
+                                                             "\"double quotes\"; true, false and null are lower case; no "
+                                                             "comma before } or ])";
+    QTest::newRow("syntax: unquoted word")
+        << QByteArray("{\"format\": 1, \"id\": \"t\",\n \"time\": {\"integrator\": rk4}}")
+        << "t.json:2:25: syntax error: not a valid value (text needs \"double quotes\"; a number must fit a double, "
+           "e.g. 1e999 does not)";
+    QTest::newRow("syntax: text after the object")
+        << QByteArray("{\"format\": 1, \"id\": \"t\"}\n}") << "t.json:2:1: syntax error: more text after the end of the lesson object";
+    QTest::newRow("top level not an object")
+        << QByteArray("[1, 2]") << "t.json: the lesson must be one JSON object { … }";
+    QTest::newRow("bad enum lists the allowed values")
+        << minimal(R"("models": {"wind": {"mode": "gust"}})")
+        << R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
+    QTest::newRow("bad integrator")
+        << minimal(R"("time": {"integrator": "rk5"})")
+        << R"(t.json: time.integrator: "rk5" is not one of euler, semi-implicit-euler, verlet, rk4, yoshida4, rk45, exact)";
+    QTest::newRow("unknown key with suggestion")
+        << minimal(R"("models": {"gravty": {"y": 1}})")
+        << R"(t.json: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
+    QTest::newRow("unknown key without a close match lists the keys")
+        << minimal(R"("world": {"colour": 1})")
+        << R"(t.json: world.colour: unknown key "colour"; known keys here: width, height, walls, wall_model, restitution)";
+    QTest::newRow("unknown top-level key") << minimal(R"("titel": "x")")
+                                           << R"(t.json: titel: unknown key "titel"; did you mean "title"?)";
+    QTest::newRow("wrong type: string for a number")
+        << minimal(R"("time": {"dt": "fast"})") << R"(t.json: time.dt: expected a number in (0, 1] s, got the string "fast")";
+    QTest::newRow("wrong type: number for an object")
+        << minimal(R"("models": 3)") << "t.json: models: expected an object { … }, got the number 3";
+    QTest::newRow("wrong type: bool")
+        << minimal(R"("models": {"collisions": {"continuous": 1}})")
+        << "t.json: models.collisions.continuous: expected true or false, got the number 1";
+    QTest::newRow("wrong type: whole number") << minimal(R"("time": {"substeps": 1.5})")
+                                              << "t.json: time.substeps: expected a whole number, got 1.5";
+    QTest::newRow("out of range, open bound") << minimal(R"("time": {"dt": 0})")
+                                              << "t.json: time.dt: 0 is outside (0, 1] s";
+    QTest::newRow("out of range, closed bound") << minimal(R"("world": {"restitution": 1.5})")
+                                                << "t.json: world.restitution: 1.5 is outside [0, 1]";
+    QTest::newRow("out of range, integer") << minimal(R"("time": {"substeps": 1001})")
+                                           << "t.json: time.substeps: 1001 is outside [1, 1000]";
+    QTest::newRow("out of range, ball radius")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "r": -4}])") << "t.json: balls.0.r: -4 is outside (0, 10000] px";
+    QTest::newRow("missing ball position") << minimal(R"("balls": [{"x": 1}])")
+                                           << "t.json: balls.0.y: missing; give the ball's centre y in px";
+    QTest::newRow("bad colour") << minimal(R"("balls": [{"x": 1, "y": 2, "color": "red"}])")
+                                << R"(t.json: balls.0.color: expected a colour written "#rrggbb" (e.g. "#e05050"), got the string "red")";
+    QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
+                                   << R"(t.json: world.walls.1: "floor" is not one of left, right, top, bottom)";
+    QTest::newRow("spawn min above max") << minimal(R"("spawn": {"radius": [9, 3]})")
+                                         << "t.json: spawn.radius: the minimum 9 is larger than the maximum 3";
+    QTest::newRow("missing format") << QByteArray(R"({"id": "t"})") << "t.json: format: missing; give \"format\": 1";
+    QTest::newRow("unsupported format") << QByteArray(R"({"format": 2, "id": "t"})")
+                                        << "t.json: format: 2 is not a format this version reads; it reads format 1";
+    QTest::newRow("bad id") << QByteArray(R"({"format": 1, "id": "a b"})")
+                            << R"(t.json: id: "a b" is not a valid id; use 1 to 64 letters, digits, '-' or '_')";
+    QTest::newRow("duplicate key")
+        << QByteArray("{\"format\": 1,\n \"id\": \"t\",\n \"models\": {\"gravity\": {\"y\": 1, \"y\": 2}}}")
+        << "t.json:3:33: models.gravity.y: duplicate key (first given on line 3); give each key once";
+    QTest::newRow("duplicate key across lines, escaped spelling")
+        << QByteArray("{\"format\": 1,\n \"id\": \"t\",\n \"\\u0069d\": \"u\"}")
+        << "t.json:3:2: id: duplicate key (first given on line 2); give each key once";
+    QTest::newRow("duplicate key inside an array element")
+        << minimal(R"("balls": [{"x": 1, "y": 2}, {"x": 1, "x": 2, "y": 3}])")
+        << "t.json:1:63: balls.1.x: duplicate key (first given on line 1); give each key once";
+    QTest::newRow("non-UTF-8 bytes") << QByteArray("{\"format\": 1,\n \"id\": \"t\", \"text\": \"caf\xe9\"}")
+                                     << "t.json:2:25: bytes that are not UTF-8 text; save the file as UTF-8";
+    QTest::newRow("overlong UTF-8") << QByteArray("{\"format\": 1, \"id\": \"t\", \"text\": \"\xc0\xaf\"}")
+                                    << "t.json:1:35: bytes that are not UTF-8 text; save the file as UTF-8";
+    QTest::newRow("deep nesting") << minimal("\"text\": " + QByteArray(40, '[') + QByteArray(40, ']'))
+                                  << "t.json:1:65: text" + QString(".0").repeated(31) + ": nested deeper than 32 levels";
+    QTest::newRow("spawn count over the limit") << minimal(R"("balls": [{"x": 1, "y": 1}], "spawn": {"count": 200000})")
+                                                << "t.json: spawn.count: 200000 spawned + 1 listed balls is more than "
+                                                   "the limit of 200000";
+    QTest::newRow("seed not a whole number") << minimal(R"("time": {"seed": -1})")
+                                             << "t.json: time.seed: expected a whole number in [0, 9007199254740992], "
+                                                "or a string of digits up to 18446744073709551615, got the number -1";
+}
+
+void TestLessonLoader::badInput()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    const LoadResult r = loadText(json);
+    QVERIFY(!r.ok());
+    QCOMPARE(firstError(r), error);
+    for (const QString& e : r.errors)
+        QVERIFY2(!e.contains('\n'), qPrintable(e)); // one line each
+}
+
+void TestLessonLoader::everyProblemIsReported()
+{
+    const LoadResult r = loadText(minimal(
+        R"("time": {"dt": -1, "substeps": "two"}, "models": {"wind": {"mode": "gust"}, "drag": {"k": 1e9}}, "balls": [{"x": 1, "y": 2, "r": 0}, 5])"));
+    QVERIFY(!r.ok());
+    const QStringList expected{
+        "t.json: time.dt: -1 is outside (0, 1] s",
+        R"(t.json: time.substeps: expected a whole number in [1, 1000], got the string "two")",
+        "t.json: models.drag.k: 1000000000 is outside [0, 1000000] 1/s (linear) or 1/px (quadratic)",
+        R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)",
+        "t.json: balls.0.r: 0 is outside (0, 10000] px",
+        R"(t.json: balls.1: expected a ball object {"x": …, "y": …}, got the number 5)",
+    };
+    QCOMPARE(r.errors, expected);
+}
+
+void TestLessonLoader::tooLargeFile()
+{
+    QByteArray big = minimal(R"("text": ")");
+    big.chop(1);
+    big += QByteArray(16 * 1024 * 1024, 'a') + "\"}";
+    const LoadResult r = loadText(big);
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors, QStringList{QStringLiteral("t.json: the file has %1 bytes, more than the limit of 16777216 "
+                                                  "bytes (16 MiB)").arg(big.size())});
+
+    // From disk the size is checked before reading.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("big.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    QVERIFY(f.resize(20 * 1024 * 1024));
+    f.close();
+    const LoadResult fromDisk = LessonLoader::loadFile(path);
+    QCOMPARE(fromDisk.errors,
+             QStringList{path + ": the file has 20971520 bytes, more than the limit of 16777216 bytes (16 MiB)"});
+}
+
+void TestLessonLoader::tooManyBalls()
+{
+    QByteArray balls = "[";
+    for (int i = 0; i < 200001; ++i)
+        balls += i ? ",{}" : "{}";
+    balls += "]";
+    const LoadResult r = loadText(minimal("\"balls\": " + balls));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors, QStringList{"t.json: balls: 200001 balls is more than the limit of 200000"});
+
+    // Many bad balls: the list stops at 100 lines and counts the rest.
+    const LoadResult many = loadText(minimal("\"balls\": [" + QByteArray("{}").repeated(150).replace("}{", "},{") + "]"));
+    QCOMPARE(many.errors.size(), 101);
+    QCOMPARE(many.errors.last(), QStringLiteral("t.json: 200 more problems not listed"));
+}
+
+void TestLessonLoader::semanticCheckFromTheCore()
+{
+    // The exact integrator needs a constant acceleration: sim::validateSettings says so, with the source in front.
+    const LoadResult r = loadText(minimal(R"("time": {"integrator": "exact"}, "models": {"drag": {"k": 0.1}})"));
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors.size(), 1);
+    QVERIFY2(r.errors.first().startsWith("t.json: time.integrator: "), qPrintable(r.errors.first()));
+}
+
+void TestLessonLoader::overrides()
+{
+    // A number, a bare word, JSON text, a new model, an array element, an appended ball.
+    const LoadResult r = LessonLoader::load(
+        QStringLiteral("gravity"),
+        {{"models.gravity.y", "0"},
+         {"time.integrator", "rk4"},
+         {"world.walls", R"(["left", "right"])"},
+         {"models.drag.k", "0.2"},
+         {"balls.0.vx", "5"},
+         {"balls.4", R"({"x": 1, "y": 2, "r": 3})"},
+         {"title", "\"Gravity, modified\""}});
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    const sim::WorldSettings& s = r.lesson->scene.settings;
+    QVERIFY(s.gravity.enabled);
+    QCOMPARE(s.gravity.g.y(), 0.0);
+    COMPARE_ENUM(s.time.integrator, sim::IntegratorKind::Rk4);
+    QVERIFY(s.walls.left && s.walls.right && !s.walls.top && !s.walls.bottom);
+    QVERIFY(s.drag.enabled);
+    QCOMPARE(s.drag.k, 0.2);
+    COMPARE_ENUM(s.drag.law, sim::DragLaw::Linear);
+    QCOMPARE(r.lesson->scene.balls.size(), std::size_t{5});
+    QCOMPARE(r.lesson->scene.balls[0].velocity.x(), 5.0);
+    QCOMPARE(r.lesson->scene.balls[4].radius, 3.0);
+    QCOMPARE(r.lesson->title, QStringLiteral("Gravity, modified"));
+
+    // Later overrides win.
+    const LoadResult twice = loadText(minimal(), {{"time.dt", "0.1"}, {"time.dt", "0.01"}});
+    QVERIFY(twice.ok());
+    QCOMPARE(twice.lesson->scene.settings.time.dt, 0.01);
+
+    // Number forms JSON refuses but people type.
+    const LoadResult forms = loadText(minimal(), {{"time.dt", ".5"}, {"models.gravity.y", "+9.5"}});
+    QVERIFY2(forms.ok(), qPrintable(forms.errors.join(" | ")));
+    QCOMPARE(forms.lesson->scene.settings.time.dt, 0.5);
+    QCOMPARE(forms.lesson->scene.settings.gravity.g.y(), 9.5);
+}
+
+void TestLessonLoader::badOverrides_data()
+{
+    QTest::addColumn<QString>("keyPath");
+    QTest::addColumn<QString>("value");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("unknown model") << "models.gravty.y" << "1"
+                                   << R"(--set models.gravty.y=1: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
+    QTest::newRow("unknown leaf") << "models.gravity.z" << "1"
+                                  << R"(--set models.gravity.z=1: models.gravity.z: unknown key "z"; known keys here: enabled, x, y)";
+    QTest::newRow("wrong type") << "time.dt" << "abc"
+                                << R"(--set time.dt=abc: time.dt: expected a number in (0, 1] s, got the string "abc")";
+    QTest::newRow("out of range") << "time.dt" << "5" << "--set time.dt=5: time.dt: 5 is outside (0, 1] s";
+    QTest::newRow("nan") << "time.dt" << "nan"
+                         << "--set time.dt=nan: time.dt: nan is not a finite number; NaN and infinity are not allowed";
+    QTest::newRow("inf") << "models.gravity.y" << "-Infinity"
+                         << "--set models.gravity.y=-Infinity: models.gravity.y: -Infinity is not a finite number; NaN "
+                            "and infinity are not allowed";
+    QTest::newRow("overflow") << "time.dt" << "1e999"
+                              << "--set time.dt=1e999: time.dt: 1e999 is too large or too small for a double; infinity "
+                                 "is not allowed";
+    QTest::newRow("bad enum") << "models.wind.mode" << "gust"
+                              << R"(--set models.wind.mode=gust: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
+    QTest::newRow("index past the end") << "balls.9.x" << "1"
+                                        << "--set balls.9.x=1: balls.9: index 9 is past the end (the array has 4 entries)";
+    QTest::newRow("key into a number") << "models.gravity.y.z" << "1"
+                                       << "--set models.gravity.y.z=1: models.gravity.y: is a number, so it has no key \"z\"";
+    QTest::newRow("word into an array") << "balls.first" << "1"
+                                        << "--set balls.first=1: balls.first: balls is an array; expected an index such "
+                                           "as balls.0";
+}
+
+void TestLessonLoader::badOverrides()
+{
+    QFETCH(QString, keyPath);
+    QFETCH(QString, value);
+    QFETCH(QString, error);
+    const LoadResult r = LessonLoader::load(QStringLiteral("gravity"), {{keyPath, value}});
+    QVERIFY(!r.ok());
+    QCOMPARE(r.errors, QStringList{error});
+}
+
+void TestLessonLoader::parseOverride()
+{
+    QString error;
+    const auto o = LessonLoader::parseOverride(QStringLiteral("models.gravity.y=0"), &error);
+    QVERIFY(o);
+    QCOMPARE(o->keyPath, QStringLiteral("models.gravity.y"));
+    QCOMPARE(o->value, QStringLiteral("0"));
+    const auto withEquals = LessonLoader::parseOverride(QStringLiteral("text=a=b"), &error);
+    QVERIFY(withEquals);
+    QCOMPARE(withEquals->value, QStringLiteral("a=b"));
+
+    QVERIFY(!LessonLoader::parseOverride(QStringLiteral("novalue"), &error));
+    QCOMPARE(error, QStringLiteral("expected KEY.PATH=VALUE, e.g. models.gravity.y=0"));
+    QVERIFY(!LessonLoader::parseOverride(QStringLiteral("=3"), &error));
+    QVERIFY(!LessonLoader::parseOverride(QStringLiteral("models..y=3"), &error));
+    QCOMPARE(error, QStringLiteral("\"models..y\" is not a key path; write keys separated by dots, e.g. models.gravity.y"));
+}
+
+void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
+{
+    // Every setting away from its default, with values whose decimal form is long.
+    Lesson l;
+    l.id = QStringLiteral("round-trip");
+    l.title = QStringLiteral("Quotes \" and \\ backslashes, tabs\t, ünïcödé ✓");
+    l.stage = 31;
+    l.text = QStringLiteral("<p>Line one\nline two\r\n</p>\x01");
+    l.challenges = {QStringLiteral("a"), QStringLiteral("b \"c\"")};
+    l.controls = {QStringLiteral("gravity")};
+    l.overlays = {QStringLiteral("readout"), QStringLiteral("velocity")};
+    sim::WorldSettings& s = l.scene.settings;
+    s.box = {0.1 + 0.2, 1.0 / 3.0 * 1000.0};
+    s.walls = {false, true, false, true, sim::WallModel::Mirror, 0.1 + 0.7};
+    s.time = {sim::IntegratorKind::Yoshida4, 1.0 / 97.0, 7, 3.3e-11, (std::uint64_t{1} << 60) + 12345};
+    s.gravity = {true, sim::Vec2(-0.0001234567890123, 979.99999999999989)};
+    s.drag = {false, sim::DragLaw::Quadratic, 2.0 / 3.0}; // off but not default: kept with "enabled": false
+    s.wind = {sim::WindMode::Off, 12.345678901234567, sim::ForceScale::Radius, 0.123456789, 0.7};
+    s.point = {true, sim::PointKind::Repel, sim::Vec2(1e-300, -5e6), 1.2345e14, 1e9, sim::ForceScale::Mass};
+    s.spring = {true, sim::Vec2(std::nextafter(300.0, 301.0), 0.1 * 3), 4.000000000000001};
+    s.mutualGravity = {true, -1e12, 5e-324};
+    s.homing = {true, 1e6};
+    s.pointer = {false, 3e6, 0.0};
+    s.speedLimit = {true, 1e9};
+    s.collisions = {sim::Detection::Brute, sim::Response::Axis2D, 0.3, true};
+    sim::Ball a;
+    a.position = {0.1 + 0.2, 1e7};
+    a.velocity = {-1e7, 1.0 / 7.0};
+    a.radius = 1e-3;
+    a.mass = 1e15;
+    a.color = 0x0a0b0c;
+    sim::Ball b;
+    b.radius = 1e4; // mass 0: the sphere mass, written without "mass"
+    l.scene.balls = {a, b};
+    l.scene.spawn = {17, 0.5, 0.5 + 1e-12, 0.0, 1e7, ~std::uint64_t{0}, {0xffffff, 0x000000, 0x123456}};
+
+    const QByteArray saved = saveLesson(l);
+    const LoadResult r = loadText(saved);
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ") + "\n" + saved));
+    compareLessons(l, *r.lesson);
+    QCOMPARE(saveLesson(*r.lesson), saved);
+    QVERIFY(saved.contains("\"x\": 0.30000000000000004"));
+    QVERIFY(saved.contains("\"drag\": {\"enabled\": false, \"law\": \"quadratic\""));
+    QVERIFY(saved.contains("\"pointer\": {\"enabled\": false"));
+
+    // Defaults that are off stay out of the file.
+    const QByteArray plain = saveLesson(*loadText(minimal()).lesson);
+    QVERIFY2(plain.contains("\"models\": {}"), plain.constData());
+    compareLessons(*loadText(minimal()).lesson, *loadText(plain).lesson);
+}
+
+void TestLessonLoader::builtInLessonsRoundTrip()
+{
+    for (const QString& f : LessonLoader::builtInFiles()) {
+        const LoadResult first = LessonLoader::load(f);
+        QVERIFY2(first.ok(), qPrintable(first.errors.join(" | ")));
+        const QByteArray saved = saveLesson(*first.lesson);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("saved.json");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(saved);
+        out.close();
+        const LoadResult second = LessonLoader::load(path);
+        QVERIFY2(second.ok(), qPrintable(second.errors.join(" | ")));
+        QCOMPARE(second.lesson->source, path);
+        compareLessons(*first.lesson, *second.lesson);
+    }
+}
+
+QTEST_GUILESS_MAIN(TestLessonLoader)
+#include "test_lesson_loader.moc"
