@@ -220,6 +220,16 @@ QStringList LessonLoader::builtInFiles()
     return files;
 }
 
+QStringList LessonLoader::overlayNames()
+{
+    return lessons::overlayNames();
+}
+
+QStringList LessonLoader::controlNames()
+{
+    return lessons::controlNames();
+}
+
 std::optional<Override> LessonLoader::parseOverride(const QString& text, QString* error)
 {
     const qsizetype eq = text.indexOf(QLatin1Char('='));

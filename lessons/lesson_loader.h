@@ -36,6 +36,11 @@ public:
     /// Resource paths of the built-in lessons, sorted by file name (":/lessons/00-showcase.json", …).
     static QStringList builtInFiles();
 
+    /// Names accepted in a lesson's "overlays": grid, velocity, acceleration, readout, colliding, markers.
+    static QStringList overlayNames();
+    /// Names accepted in a lesson's "controls": gravity, drag, wind, …, integrator, dt (docs/lessons.md).
+    static QStringList controlNames();
+
     /// Parses "KEY.PATH=VALUE"; on failure returns nullopt and sets *error.
     static std::optional<Override> parseOverride(const QString& text, QString* error);
 };

@@ -577,7 +577,38 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
     }
 }
 
+/// A list of names each of which must be one of `allowed`.
+void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStringList& allowed, QStringList& out)
+{
+    QStringList list;
+    if (!r.stringList(root, QString(), key, list))
+        return;
+    bool ok = true;
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        if (!allowed.contains(list[i])) {
+            r.fail(join(key, i), QStringLiteral("%1 is not one of %2").arg(quoted(list[i]), allowed.join(", ")));
+            ok = false;
+        }
+    }
+    if (ok)
+        out = list;
+}
+
 } // namespace
+
+const QStringList& overlayNames()
+{
+    static const QStringList names{"grid", "velocity", "acceleration", "readout", "colliding", "markers"};
+    return names;
+}
+
+const QStringList& controlNames()
+{
+    static const QStringList names{"gravity", "drag",     "wind",      "point",       "spring",    "mutual_gravity",
+                                   "homing",  "pointer",  "speed_limit", "collisions", "walls",     "wall_model",
+                                   "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn"};
+    return names;
+}
 
 ParseResult parseLesson(const QJsonObject& root)
 {
@@ -610,8 +641,8 @@ ParseResult parseLesson(const QJsonObject& root)
     r.integer(root, top, "stage", intrange::kStageLo, intrange::kStageHi, lesson.stage);
     r.string(root, top, "text", lesson.text);
     r.stringList(root, top, "challenges", lesson.challenges);
-    r.stringList(root, top, "controls", lesson.controls);
-    r.stringList(root, top, "overlays", lesson.overlays);
+    nameList(r, root, "controls", controlNames(), lesson.controls);
+    nameList(r, root, "overlays", overlayNames(), lesson.overlays);
 
     sim::Scene& scene = lesson.scene;
     if (const auto o = r.object(root, top, "world"))

@@ -22,6 +22,11 @@ struct ParseResult {
     int unlisted = 0;           ///< further problems beyond kMaxErrors
 };
 
+/// Names accepted in "overlays" (drawn by the workbench's canvas).
+const QStringList& overlayNames();
+/// Names accepted in "controls" (the settings a lesson puts first in the Parameters dock).
+const QStringList& controlNames();
+
 /// Reads a format-1 lesson object. Absent keys keep the defaults of the
 /// sim structs; a model absent from "models" is off.
 ParseResult parseLesson(const QJsonObject& root);

@@ -437,6 +437,11 @@ void TestLessonLoader::badInput_data()
                                 << R"(t.json: balls.0.color: expected a colour written "#rrggbb" (e.g. "#e05050"), got the string "red")";
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
                                    << R"(t.json: world.walls.1: "floor" is not one of left, right, top, bottom)";
+    QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
+                                     << R"(t.json: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers)";
+    QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
+                                     << "t.json: controls.1: \"gravity.y\" is not one of " +
+                                            LessonLoader::controlNames().join(", ");
     QTest::newRow("spawn min above max") << minimal(R"("spawn": {"radius": [9, 3]})")
                                          << "t.json: spawn.radius: the minimum 9 is larger than the maximum 3";
     QTest::newRow("missing format") << QByteArray(R"({"id": "t"})") << "t.json: format: missing; give \"format\": 1";
