@@ -1,1 +1,66 @@
-int main() { return 0; } // placeholder until the workbench lands
+// forcelab: the workbench. `forcelab [LESSON]` opens a lesson file or a
+// built-in lesson id; without one it opens the last lesson or the showcase.
+
+#include "ui/main_window.h"
+#include "ui/render_bench.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char* argv[])
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("ForceLab"));
+    QApplication::setApplicationName(QStringLiteral("ForceLab"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("A workbench for forces and collisions of 2D balls."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("lesson"), QStringLiteral("Lesson file or built-in lesson id."),
+                                 QStringLiteral("[lesson]"));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Save a picture of the window to FILE and quit."),
+                                        QStringLiteral("FILE"));
+    const QCommandLineOption after(QStringLiteral("after"),
+                                   QStringLiteral("Seconds to run before --screenshot (default 3)."),
+                                   QStringLiteral("SECONDS"), QStringLiteral("3"));
+    const QCommandLineOption benchRender(QStringLiteral("bench-render"),
+                                         QStringLiteral("Time drawing 1k, 10k and 50k balls offscreen and quit."));
+    parser.addOptions({screenshot, after, benchRender});
+    parser.process(app);
+
+    if (parser.isSet(benchRender)) {
+        const forcelab::RenderBenchOptions options;
+        std::fputs(qPrintable(forcelab::formatRenderBench(forcelab::runRenderBench(options), options)), stdout);
+        return 0;
+    }
+
+    const QStringList lessons = parser.positionalArguments();
+    forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
+    window.show();
+
+    if (parser.isSet(screenshot)) {
+        bool ok = false;
+        const double seconds = parser.value(after).toDouble(&ok);
+        if (!ok || !(seconds >= 0.0 && seconds <= 600.0)) {
+            std::fprintf(stderr, "forcelab: --after: \"%s\" is not a number of seconds from 0 to 600\n",
+                         qPrintable(parser.value(after)));
+            return 2;
+        }
+        const QString file = parser.value(screenshot);
+        QTimer::singleShot(static_cast<int>(seconds * 1000.0), &window, [&window, file] {
+            if (!window.grab().save(file)) {
+                std::fprintf(stderr, "forcelab: --screenshot: cannot write %s\n", qPrintable(file));
+                QApplication::exit(2);
+                return;
+            }
+            QApplication::quit();
+        });
+    }
+    return QApplication::exec();
+}

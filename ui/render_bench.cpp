@@ -1,0 +1,99 @@
+#include "render_bench.h"
+
+#include "world_painter.h"
+
+#include "sim/scene.h"
+#include "sim/world.h"
+
+#include <QElapsedTimer>
+#include <QImage>
+#include <QPainter>
+#include <QTextStream>
+
+#include <algorithm>
+#include <vector>
+
+namespace forcelab {
+
+namespace {
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+RenderBenchRow timeFrames(sim::World& world, BallDrawing drawing, const RenderBenchOptions& options)
+{
+    QImage image(options.size, QImage::Format_ARGB32_Premultiplied);
+    WorldPainter painter;
+    PaintOptions paint;
+    paint.sprites = drawing == BallDrawing::Sprites;
+    std::vector<double> ms;
+    const int warmUp = 2;
+    for (int frame = 0; frame < warmUp + options.frames; ++frame) {
+        // Move every ball a little so each frame draws new positions.
+        world.mutableBalls().position.row(0).array() += (frame % 2 ? -0.37 : 0.37);
+        QElapsedTimer timer;
+        timer.start();
+        QPainter p(&image);
+        painter.paint(p, QRectF(QPointF(0, 0), QSizeF(options.size)), world, paint, 1.0);
+        p.end();
+        const double elapsed = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        if (frame >= warmUp)
+            ms.push_back(elapsed);
+    }
+    RenderBenchRow row;
+    row.balls = world.balls().size();
+    row.drawing = drawing;
+    row.medianMs = median(ms);
+    row.minMs = ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end());
+    row.nsPerBall = row.balls > 0 ? row.medianMs * 1e6 / row.balls : 0.0;
+    return row;
+}
+
+} // namespace
+
+QList<RenderBenchRow> runRenderBench(const RenderBenchOptions& options)
+{
+    QList<RenderBenchRow> rows;
+    for (int n : options.ballCounts) {
+        sim::Scene scene;
+        scene.settings.box = {1200.0, 800.0};
+        scene.spawn.count = n;
+        scene.spawn.minRadius = options.minRadius;
+        scene.spawn.maxRadius = options.maxRadius;
+        scene.spawn.seed = 7;
+        sim::World world(scene);
+        rows.append(timeFrames(world, BallDrawing::Sprites, options));
+        if (options.withEllipses)
+            rows.append(timeFrames(world, BallDrawing::Ellipses, options));
+    }
+    return rows;
+}
+
+QString formatRenderBench(const QList<RenderBenchRow>& rows, const RenderBenchOptions& options)
+{
+    QString text;
+    QTextStream out(&text);
+    out << "render: " << options.size.width() << "x" << options.size.height() << " px image, box 1200x800 px, radii "
+        << options.minRadius << "-" << options.maxRadius << " px, median of " << options.frames << " frames\n";
+    out << QStringLiteral("%1  %2  %3  %4  %5\n")
+               .arg(QStringLiteral("balls"), 7)
+               .arg(QStringLiteral("drawing"), -9)
+               .arg(QStringLiteral("median ms"), 10)
+               .arg(QStringLiteral("min ms"), 8)
+               .arg(QStringLiteral("ns/ball"), 8);
+    for (const RenderBenchRow& r : rows) {
+        out << QStringLiteral("%1  %2  %3  %4  %5\n")
+                   .arg(r.balls, 7)
+                   .arg(r.drawing == BallDrawing::Sprites ? QStringLiteral("sprites") : QStringLiteral("ellipses"), -9)
+                   .arg(r.medianMs, 10, 'f', 3)
+                   .arg(r.minMs, 8, 'f', 3)
+                   .arg(r.nsPerBall, 8, 'f', 1);
+    }
+    return text;
+}
+
+} // namespace forcelab

@@ -1,0 +1,167 @@
+#include "simulation_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab {
+
+SimulationController::SimulationController(QObject* parent)
+    : QObject(parent)
+{
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(kFrameIntervalMs);
+    connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
+    m_clock.start();
+}
+
+std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
+{
+    if (auto error = m_world.reset(scene)) {
+        const QString message = QString::fromStdString(*error);
+        emit errorOccurred(message);
+        return message;
+    }
+    m_scene = scene;
+    m_accumulator = 0.0;
+    m_droppedTime = 0.0;
+    m_clock.restart();
+    emit sceneChanged();
+    emit settingsChanged();
+    emit stepped();
+    return std::nullopt;
+}
+
+bool SimulationController::setSettings(const sim::WorldSettings& settings)
+{
+    if (auto error = m_world.setSettings(settings)) {
+        emit errorOccurred(QString::fromStdString(*error));
+        return false;
+    }
+    emit settingsChanged();
+    emit stepped(); // a paused canvas shows the change (walls, markers)
+    return true;
+}
+
+void SimulationController::setPointer(const sim::PointerInput& pointer)
+{
+    m_world.setPointer(pointer);
+}
+
+void SimulationController::setMaxStepsPerFrame(int steps)
+{
+    m_maxStepsPerFrame = std::max(1, steps);
+}
+
+int SimulationController::advance(double elapsedSeconds)
+{
+    const double dt = m_world.settings().time.dt;
+    if (!(elapsedSeconds > 0.0) || !(dt > 0.0))
+        return 0;
+    m_accumulator += elapsedSeconds * m_timeScale;
+    // Whole steps that fit; what is left (< dt) waits for the next frame.
+    const double wanted = std::floor(m_accumulator / dt);
+    int steps = static_cast<int>(std::min(wanted, static_cast<double>(m_maxStepsPerFrame)));
+    m_accumulator -= steps * dt;
+    if (wanted > steps) {
+        // More than the cap: drop the whole steps that did not fit, keep the fraction.
+        const double dropped = (wanted - steps) * dt;
+        m_accumulator = std::max(0.0, m_accumulator - dropped);
+        m_droppedTime += dropped;
+        emit timeDropped(dropped);
+    }
+    for (int k = 0; k < steps; ++k)
+        m_world.step();
+    if (steps > 0)
+        emit stepped();
+    return steps;
+}
+
+void SimulationController::tick()
+{
+    // Real time since the last frame, measured, not assumed from the interval.
+    const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+    m_clock.restart();
+    advance(elapsed);
+}
+
+void SimulationController::play()
+{
+    setPlaying(true);
+}
+
+void SimulationController::pause()
+{
+    setPlaying(false);
+}
+
+void SimulationController::togglePlay()
+{
+    setPlaying(!m_playing);
+}
+
+void SimulationController::setPlaying(bool playing)
+{
+    if (playing == m_playing)
+        return;
+    m_playing = playing;
+    updateTimer();
+    emit playingChanged(m_playing);
+}
+
+void SimulationController::stepOnce()
+{
+    pause();
+    m_accumulator = 0.0;
+    m_world.step();
+    emit stepped();
+}
+
+void SimulationController::reset()
+{
+    if (auto error = m_world.reset(m_scene)) {
+        emit errorOccurred(QString::fromStdString(*error));
+        return;
+    }
+    m_accumulator = 0.0;
+    m_droppedTime = 0.0;
+    m_clock.restart();
+    emit sceneChanged();
+    emit settingsChanged();
+    emit stepped();
+}
+
+void SimulationController::setTimeScale(double scale)
+{
+    if (!(scale >= kMinTimeScale && scale <= kMaxTimeScale)) {
+        emit errorOccurred(tr("time scale: %1 is outside %2 to %3").arg(scale).arg(kMinTimeScale).arg(kMaxTimeScale));
+        emit timeScaleChanged(m_timeScale);
+        return;
+    }
+    if (scale == m_timeScale)
+        return;
+    m_timeScale = scale;
+    emit timeScaleChanged(m_timeScale);
+}
+
+void SimulationController::setSuspended(bool suspended)
+{
+    if (suspended == m_suspended)
+        return;
+    m_suspended = suspended;
+    updateTimer();
+}
+
+void SimulationController::updateTimer()
+{
+    const bool run = m_playing && !m_suspended;
+    if (run && !m_timer.isActive()) {
+        // Time spent paused or hidden is not simulated.
+        m_clock.restart();
+        m_accumulator = 0.0;
+        m_timer.start();
+    } else if (!run && m_timer.isActive()) {
+        m_timer.stop();
+    }
+}
+
+} // namespace forcelab

@@ -1,0 +1,107 @@
+#pragma once
+// Runs a world in real time. A QTimer fires at the display rate; each frame
+// adds the elapsed real time (× the time scale) to an accumulator and takes as
+// many whole steps of settings.time.dt as fit, so the simulation's speed does
+// not depend on the refresh rate and every step has the same dt. A cap on
+// steps per frame stops a slow frame from spiralling; time dropped by the cap
+// is reported. The timer runs only while playing and not suspended (window
+// hidden or minimised).
+
+#include "sim/scene.h"
+#include "sim/world.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <optional>
+
+namespace forcelab {
+
+class SimulationController : public QObject {
+    Q_OBJECT
+public:
+    explicit SimulationController(QObject* parent = nullptr);
+
+    const sim::World& world() const { return m_world; }
+    /// For tools that move balls directly (tests, drag-and-throw). Emit
+    /// nothing; call notifyBallsChanged() after editing.
+    sim::World& mutableWorld() { return m_world; }
+    void notifyBallsChanged() { emit stepped(); }
+
+    /// Starts `scene` (kept for reset) at time 0. On an invalid scene the
+    /// running one is kept and the error is returned (and signalled).
+    std::optional<QString> setScene(const sim::Scene& scene);
+    const sim::Scene& scene() const { return m_scene; }
+
+    /// Pushes a whole settings struct. Returns false (and emits
+    /// errorOccurred) when the world refuses it; the world then keeps its settings.
+    bool setSettings(const sim::WorldSettings& settings);
+
+    void setPointer(const sim::PointerInput& pointer);
+
+    bool isPlaying() const { return m_playing; }
+    bool isSuspended() const { return m_suspended; }
+    bool isTimerActive() const { return m_timer.isActive(); }
+
+    /// Simulated seconds per real second (slow motion < 1 < fast forward).
+    double timeScale() const { return m_timeScale; }
+    static constexpr double kMinTimeScale = 0.05;
+    static constexpr double kMaxTimeScale = 4.0;
+
+    /// Most steps one frame may take; the rest of the frame's time is dropped.
+    int maxStepsPerFrame() const { return m_maxStepsPerFrame; }
+    void setMaxStepsPerFrame(int steps);
+
+    /// Timer interval, ms (about the display rate).
+    static constexpr int kFrameIntervalMs = 16;
+
+    /// What one frame does with `elapsedSeconds` of real time: returns the
+    /// number of steps taken. The timer calls it; tests call it directly.
+    int advance(double elapsedSeconds);
+    /// Simulated time waiting in the accumulator (less than one dt), s.
+    double accumulator() const { return m_accumulator; }
+    /// Simulated time dropped by the cap since the scene started, s.
+    double droppedTime() const { return m_droppedTime; }
+
+public slots:
+    void play();
+    void pause();
+    void setPlaying(bool playing);
+    void togglePlay();
+    /// Pauses and advances exactly one step of dt.
+    void stepOnce();
+    /// Restarts the scene with the lesson's own settings and balls.
+    void reset();
+    void setTimeScale(double scale);
+    /// Stops the timer while the window is hidden; playing resumes after.
+    void setSuspended(bool suspended);
+
+signals:
+    void stepped();          ///< the world advanced (once per frame, not per step)
+    void settingsChanged();  ///< the world's settings changed
+    void sceneChanged();     ///< a new scene or a reset: balls and settings replaced
+    void errorOccurred(const QString& message);
+    void playingChanged(bool playing);
+    void timeScaleChanged(double scale);
+    /// A frame needed more steps than the cap: `seconds` of simulated time were skipped.
+    void timeDropped(double seconds);
+
+private:
+    void tick();
+    void updateTimer();
+
+    sim::World m_world;
+    sim::Scene m_scene;
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    double m_accumulator = 0.0; // s of simulated time not yet stepped
+    double m_droppedTime = 0.0; // s
+    double m_timeScale = 1.0;
+    int m_maxStepsPerFrame = 8;
+    bool m_playing = false;
+    bool m_suspended = false;
+};
+
+} // namespace forcelab

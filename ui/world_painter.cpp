@@ -1,0 +1,314 @@
+#include "world_painter.h"
+
+#include <QFontDatabase>
+#include <QFontMetricsF>
+#include <QLineF>
+#include <QList>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace forcelab {
+
+Overlays Overlays::fromNames(const QStringList& names)
+{
+    Overlays o;
+    o.velocity = names.contains(QStringLiteral("velocity"));
+    o.acceleration = names.contains(QStringLiteral("acceleration"));
+    o.readout = names.contains(QStringLiteral("readout"));
+    o.colliding = names.contains(QStringLiteral("colliding"));
+    return o;
+}
+
+ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area)
+{
+    return ViewTransform::fit(world.settings().box, area);
+}
+
+void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& world, const PaintOptions& options,
+                         qreal dpr)
+{
+    const ViewTransform v = view(world, area);
+    p.save();
+    p.setClipRect(area);
+    p.fillRect(area, QColor::fromRgb(canvas_colors::kLetterbox));
+    paintBox(p, v, world, options);
+    if (options.overlays.markers)
+        paintMarkers(p, v, world, options);
+    // Collision responses mark balls; "flag" exists to show exactly that.
+    PaintOptions shown = options;
+    shown.overlays.colliding = options.overlays.colliding || world.settings().collisions.response == sim::Response::Flag;
+    paintBalls(p, area, v, world, shown, dpr);
+
+    std::optional<sim::Matrix2X> accelerations;
+    if ((options.overlays.acceleration || options.overlays.readout) && !world.balls().empty())
+        accelerations = world.accelerations();
+    const sim::Matrix2X* a = accelerations ? &*accelerations : nullptr;
+    if (options.overlays.velocity || options.overlays.acceleration)
+        paintArrows(p, v, world, options, a);
+    if (options.overlays.readout)
+        paintReadout(p, v, world, options, a);
+    p.restore();
+}
+
+void WorldPainter::paintBox(QPainter& p, const ViewTransform& view, const sim::World& world,
+                            const PaintOptions& options)
+{
+    const QRectF box = view.boxRect();
+    p.fillRect(box, QColor::fromRgb(canvas_colors::kBackground));
+
+    const sim::BoxSettings& size = world.settings().box;
+    if (options.overlays.grid && view.toWidget(50.0) >= 8.0) {
+        // Faint lines every 50 px, stronger every 100 px: the student reads
+        // positions off the picture in the same units as the readout.
+        QList<QLineF> minor, major;
+        for (int k = 1; 50.0 * k < size.width; ++k) {
+            const double x = box.left() + view.toWidget(50.0 * k);
+            (k % 2 ? minor : major).append(QLineF(x, box.top(), x, box.bottom()));
+        }
+        for (int k = 1; 50.0 * k < size.height; ++k) {
+            const double y = box.top() + view.toWidget(50.0 * k);
+            (k % 2 ? minor : major).append(QLineF(box.left(), y, box.right(), y));
+        }
+        p.setRenderHint(QPainter::Antialiasing, false);
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kGridMinor), 1.0));
+        p.drawLines(minor);
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kGridMajor), 1.0));
+        p.drawLines(major);
+
+        if (view.toWidget(100.0) >= 40.0) {
+            QFont font = p.font();
+            font.setPixelSize(static_cast<int>(std::lround(11 * options.lineScale)));
+            p.setFont(font);
+            p.setPen(QColor(0x8a, 0x92, 0x9e));
+            for (int k = 1; 100.0 * k < size.width; ++k)
+                p.drawText(QPointF(box.left() + view.toWidget(100.0 * k) + 3, box.top() + 13 * options.lineScale),
+                           QString::number(100 * k));
+            for (int k = 1; 100.0 * k < size.height; ++k)
+                p.drawText(QPointF(box.left() + 4, box.top() + view.toWidget(100.0 * k) - 3),
+                           QString::number(100 * k));
+        }
+    }
+
+    // Walls that are on are solid; walls that are off are dashed, so a
+    // student sees where balls can leave.
+    const sim::WallSettings& walls = world.settings().walls;
+    const QPen on(QColor::fromRgb(canvas_colors::kFrame), 3.0 * options.lineScale, Qt::SolidLine, Qt::SquareCap);
+    QPen off(QColor(0x9a, 0xa2, 0xae), 1.5 * options.lineScale, Qt::DashLine, Qt::FlatCap);
+    auto side = [&](bool present, QPointF a, QPointF b) {
+        p.setPen(present ? on : off);
+        p.drawLine(a, b);
+    };
+    const double h = 1.5 * options.lineScale; // keep the solid line outside the box
+    side(walls.left, box.topLeft() - QPointF(h, 0), box.bottomLeft() - QPointF(h, 0));
+    side(walls.right, box.topRight() + QPointF(h, 0), box.bottomRight() + QPointF(h, 0));
+    side(walls.top, box.topLeft() - QPointF(0, h), box.topRight() - QPointF(0, h));
+    side(walls.bottom, box.bottomLeft() + QPointF(0, h), box.bottomRight() + QPointF(0, h));
+}
+
+void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
+                              const PaintOptions& options, qreal dpr)
+{
+    const sim::BallState& balls = world.balls();
+    const int n = balls.size();
+    const double s = view.scale();
+    const QPointF origin = view.toWidget(sim::Vec2(0.0, 0.0));
+    const bool mark = options.overlays.colliding && balls.colliding.size() == static_cast<std::size_t>(n);
+    // Sprites are antialiased already; blitting them at whole device pixels
+    // with antialiasing off takes the raster engine's plain copy path.
+    p.setRenderHint(QPainter::Antialiasing, false);
+    p.setPen(Qt::NoPen);
+    for (int i = 0; i < n; ++i) {
+        const double x = origin.x() + balls.position(0, i) * s;
+        const double y = origin.y() + balls.position(1, i) * s;
+        const double r = balls.radius[i] * s;
+        // Off-screen (or not a number: the comparisons are false) is skipped.
+        if (!(x + r >= area.left() && x - r <= area.right() && y + r >= area.top() && y - r <= area.bottom()))
+            continue;
+        const bool marked = mark && balls.colliding[static_cast<std::size_t>(i)] != 0;
+        const sim::Rgb color = balls.color[static_cast<std::size_t>(i)];
+        const QImage* sprite = options.sprites ? m_sprites.sprite(r * dpr, color, marked, dpr) : nullptr;
+        if (sprite) {
+            const double half = 0.5 * sprite->width();
+            p.drawImage(QPointF(std::round(x * dpr - half) / dpr, std::round(y * dpr - half) / dpr), *sprite);
+        } else {
+            p.setRenderHint(QPainter::Antialiasing, true);
+            const QColor fill = QColor::fromRgb(marked ? m_sprites.markedColor() : color);
+            p.setBrush(fill);
+            p.setPen(QPen(fill.darker(150), std::max(1.0, 0.08 * r)));
+            p.drawEllipse(QPointF(x, y), r, r);
+            p.setPen(Qt::NoPen);
+            p.setRenderHint(QPainter::Antialiasing, false);
+        }
+    }
+
+    p.setRenderHint(QPainter::Antialiasing, true);
+    // The ball the readout or the selection talks about gets a ring.
+    int ringed = options.selected;
+    if (ringed < 0 && options.overlays.readout && n > 0)
+        ringed = 0;
+    if (ringed >= 0 && ringed < n) {
+        const QPointF c = view.toWidget(balls.position.col(ringed));
+        const double r = balls.radius[ringed] * s + 4.0 * options.lineScale;
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kSelection), 2.0 * options.lineScale, Qt::DotLine));
+        p.drawEllipse(c, r, r);
+    }
+}
+
+void WorldPainter::paintMarkers(QPainter& p, const ViewTransform& view, const sim::World& world,
+                                const PaintOptions& options)
+{
+    const sim::WorldSettings& s = world.settings();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setBrush(Qt::NoBrush);
+    const double k = options.lineScale;
+    if (s.point.enabled) {
+        const QPointF c = view.toWidget(s.point.position);
+        const bool attract = s.point.kind == sim::PointKind::Attract;
+        p.setPen(QPen(attract ? QColor(0x30, 0x60, 0xc0) : QColor(0xc0, 0x40, 0x30), 2.0 * k));
+        p.drawEllipse(c, 9.0 * k, 9.0 * k);
+        p.drawLine(c - QPointF(5 * k, 0), c + QPointF(5 * k, 0));
+        if (attract)
+            p.drawLine(c - QPointF(0, 5 * k), c + QPointF(0, 5 * k));
+    }
+    if (s.spring.enabled) {
+        const QPointF c = view.toWidget(s.spring.anchor);
+        const sim::BallState& balls = world.balls();
+        if (balls.size() <= 50) {
+            p.setPen(QPen(QColor(0x70, 0x78, 0x84), 1.5 * k, Qt::DashLine));
+            for (int i = 0; i < balls.size(); ++i)
+                p.drawLine(c, view.toWidget(balls.position.col(i)));
+        }
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor::fromRgb(canvas_colors::kFrame));
+        p.drawRect(QRectF(c - QPointF(5 * k, 5 * k), QSizeF(10 * k, 10 * k)));
+        p.setBrush(Qt::NoBrush);
+    }
+    if (s.homing.enabled) {
+        // Homes are per colour: collect the distinct ones among the first balls.
+        const sim::BallState& balls = world.balls();
+        struct Home { sim::Vec2 at; sim::Rgb color; };
+        std::vector<Home> homes;
+        for (int i = 0; i < std::min(balls.size(), 4000) && homes.size() < 32; ++i) {
+            const sim::Vec2 at = balls.home.col(i);
+            const sim::Rgb color = balls.color[static_cast<std::size_t>(i)];
+            if (std::none_of(homes.begin(), homes.end(), [&](const Home& h) { return h.color == color && h.at == at; }))
+                homes.push_back({at, color});
+        }
+        for (const Home& h : homes) {
+            p.setPen(QPen(QColor::fromRgb(h.color), 3.0 * k));
+            p.drawEllipse(view.toWidget(h.at), 12.0 * k, 12.0 * k);
+        }
+    }
+}
+
+namespace {
+
+// Shaft and two head strokes of an arrow from a to b.
+void appendArrow(QList<QLineF>& lines, QPointF a, QPointF b, double head)
+{
+    const QLineF shaft(a, b);
+    const double length = shaft.length();
+    if (!(length >= 0.5))
+        return;
+    lines.append(shaft);
+    const double h = std::min(head, 0.4 * length);
+    const QPointF u = (a - b) / length; // unit vector from tip back to tail
+    const double c = std::cos(std::numbers::pi / 7.0), s = std::sin(std::numbers::pi / 7.0);
+    lines.append(QLineF(b, b + h * QPointF(c * u.x() - s * u.y(), s * u.x() + c * u.y())));
+    lines.append(QLineF(b, b + h * QPointF(c * u.x() + s * u.y(), -s * u.x() + c * u.y())));
+}
+
+} // namespace
+
+void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim::World& world,
+                               const PaintOptions& options, const sim::Matrix2X* accelerations)
+{
+    const sim::BallState& balls = world.balls();
+    const int n = balls.size();
+    QList<int> which;
+    if (n <= kMaxArrowBalls) {
+        which.reserve(n);
+        for (int i = 0; i < n; ++i)
+            which.append(i);
+    } else if (options.selected >= 0 && options.selected < n) {
+        which.append(options.selected);
+    }
+    const double head = 9.0 * options.lineScale;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    if (options.overlays.velocity) {
+        QList<QLineF> lines;
+        for (int i : which) {
+            const sim::Vec2 x = balls.position.col(i);
+            appendArrow(lines, view.toWidget(x), view.toWidget(x + options.velocityScale * balls.velocity.col(i)), head);
+        }
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kVelocity), 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
+        p.drawLines(lines);
+    }
+    if (options.overlays.acceleration && accelerations) {
+        QList<QLineF> lines;
+        for (int i : which) {
+            const sim::Vec2 x = balls.position.col(i);
+            appendArrow(lines, view.toWidget(x), view.toWidget(x + options.accelerationScale * accelerations->col(i)),
+                        head);
+        }
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kAcceleration), 2.0 * options.lineScale, Qt::SolidLine,
+                      Qt::RoundCap));
+        p.drawLines(lines);
+    }
+}
+
+void WorldPainter::paintReadout(QPainter& p, const ViewTransform& view, const sim::World& world,
+                                const PaintOptions& options, const sim::Matrix2X* accelerations)
+{
+    const sim::BallState& balls = world.balls();
+    const int n = balls.size();
+    if (n == 0)
+        return;
+    const int i = options.selected >= 0 && options.selected < n ? options.selected : 0;
+    auto num = [](double v) { return QString::number(v, 'f', 1).rightJustified(9); };
+    const sim::Vec2 x = balls.position.col(i), v = balls.velocity.col(i);
+    const sim::Vec2 a = accelerations ? sim::Vec2(accelerations->col(i)) : sim::Vec2(0.0, 0.0);
+    const QStringList lines{
+        QStringLiteral("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3),
+        QString(17, u' ') + u'x' + QString(8, u' ') + u'y',
+        QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
+        QStringLiteral("velocity %1%2  px/s").arg(num(v.x()), num(v.y())),
+        QStringLiteral("accel.   %1%2  px/s²").arg(num(a.x()), num(a.y())),
+        QStringLiteral("speed    %1       px/s").arg(num(v.norm())),
+    };
+
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setPixelSize(static_cast<int>(std::lround(14 * options.lineScale)));
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    double width = 0.0;
+    for (const QString& line : lines)
+        width = std::max(width, fm.horizontalAdvance(line));
+    const double pad = 8.0 * options.lineScale;
+    const QRectF box = view.boxRect();
+    const QRectF panel(box.topLeft() + QPointF(12, 12) * options.lineScale,
+                       QSizeF(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad));
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
+    p.setBrush(QColor(255, 255, 255, 225));
+    p.drawRoundedRect(panel, 6, 6);
+    double y = panel.top() + pad + fm.ascent();
+    for (int k = 0; k < lines.size(); ++k) {
+        QColor c(0x1d, 0x22, 0x2c);
+        if (k == 3)
+            c = QColor::fromRgb(canvas_colors::kVelocity);
+        else if (k == 4)
+            c = QColor::fromRgb(canvas_colors::kAcceleration);
+        p.setPen(c);
+        p.drawText(QPointF(panel.left() + pad, y), lines[k]);
+        y += fm.lineSpacing();
+    }
+}
+
+} // namespace forcelab
