@@ -74,8 +74,14 @@ std::optional<RunOptions> parseArgs(const std::vector<std::string>& args, std::o
             const auto v = value();
             if (!v)
                 return fail(std::string(flag) + ": needs a value");
-            // A name is a JSON string; numbers pass through as JSON numbers.
+            // Checked here so the message names the option the user typed; the
+            // range checks are the lesson's own, through the override.
             const bool isName = a == "--integrator";
+            if (isName && !sim::parseIntegrator(*v))
+                return fail(std::string(flag) + ": \"" + *v + "\" is not one of " +
+                            sim::joinNames(sim::integratorNames()));
+            if (!isName && (!parseNumber(*v) || !std::isfinite(*parseNumber(*v))))
+                return fail(std::string(flag) + ": expects a number, got '" + *v + "'");
             o.overrides.append(Override{QString::fromLatin1(key),
                                         isName ? QString::fromStdString("\"" + *v + "\"") : QString::fromStdString(*v)});
         }

@@ -1,0 +1,180 @@
+// forcelab-cli run, driven as a user would: a process, its exit code, its
+// output. Numbers are checked against closed forms.
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Result runCli(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(FORCELAB_CLI_PATH), args);
+    if (!p.waitForFinished(60000))
+        qFatal("forcelab-cli did not finish");
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+// One ball falling freely from (100, 50) with vx = 30, no walls, exact integrator.
+const char* kFreeFall = R"({
+  "format": 1, "id": "free-fall", "title": "Free fall", "stage": 7,
+  "text": "A ball falls.", "challenges": [],
+  "world": { "width": 600, "height": 400, "walls": [], "wall_model": "exact", "restitution": 1.0 },
+  "time": { "integrator": "exact", "dt": 0.01, "substeps": 1, "tolerance": 1e-9, "seed": 1 },
+  "models": { "gravity": {"x": 0, "y": 980} },
+  "balls": [ {"x": 100, "y": 50, "vx": 30, "vy": 0, "r": 10, "mass": 2, "color": "#e05050"} ],
+  "controls": [], "overlays": []
+})";
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void jsonMatchesClosedForm();
+    void stepsZeroPrintsInitialState();
+    void optionsOverrideTheLesson();
+    void builtInLessonRuns();
+    void badInputExitsTwo_data();
+    void badInputExitsTwo();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_lesson;
+};
+
+void TestCli::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_lesson = m_dir.filePath("free-fall.json");
+    QFile f(m_lesson);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kFreeFall);
+}
+
+// After 100 steps of 0.01 s: y = 50 + ½ 980 t² = 540, x = 100 + 30 t = 130,
+// kinetic energy ½ m v², potential −m g y, momentum m v.
+void TestCli::jsonMatchesClosedForm()
+{
+    const Result r = runCli({"run", m_lesson, "--steps", "100", "--json"});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.err.isEmpty(), r.err.constData());
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    for (const char* key : {"lesson", "integrator", "dt", "steps", "time", "balls", "energy", "momentum",
+                            "angular_momentum", "force_evaluations", "wall_hits", "contacts", "wall_ms"})
+        QVERIFY2(o.contains(key), key);
+    QCOMPARE(o["lesson"].toString(), QString("free-fall"));
+    QCOMPARE(o["integrator"].toString(), QString("exact"));
+    QCOMPARE(o["steps"].toInt(), 100);
+    const double t = o["time"].toDouble();
+    QVERIFY(std::abs(t - 1.0) < 1e-12);
+    const QJsonObject ball = o["balls"].toArray().at(0).toObject();
+    QVERIFY(std::abs(ball["x"].toDouble() - (100 + 30 * t)) < 1e-9);
+    QVERIFY(std::abs(ball["y"].toDouble() - (50 + 0.5 * 980 * t * t)) < 1e-9);
+    QVERIFY(std::abs(ball["vy"].toDouble() - 980 * t) < 1e-9);
+    QCOMPARE(ball["mass"].toDouble(), 2.0);
+    QCOMPARE(ball["r"].toDouble(), 10.0);
+    const QJsonObject energy = o["energy"].toObject();
+    const double v2 = 30.0 * 30.0 + (980 * t) * (980 * t);
+    QVERIFY(std::abs(energy["kinetic"].toDouble() - 0.5 * 2 * v2) < 1e-6);
+    QVERIFY(std::abs(energy["potential"].toDouble() - (-2 * 980 * ball["y"].toDouble())) < 1e-6);
+    // Energy is conserved exactly by the exact integrator: total as at the start.
+    QVERIFY(std::abs(energy["total"].toDouble() - (0.5 * 2 * 900 - 2 * 980 * 50)) < 1e-6);
+    QVERIFY(std::abs(o["momentum"].toArray().at(1).toDouble() - 2 * 980 * t) < 1e-9);
+    QCOMPARE(o["force_evaluations"].toInt(), 100);
+    QCOMPARE(o["wall_hits"].toInt(), 0);
+    QCOMPARE(o["contacts"].toInt(), 0);
+    QVERIFY(o["wall_ms"].toDouble() >= 0.0);
+}
+
+void TestCli::stepsZeroPrintsInitialState()
+{
+    const Result r = runCli({"run", m_lesson, "--steps", "0", "--json"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(o["steps"].toInt(), 0);
+    QCOMPARE(o["time"].toDouble(), 0.0);
+    const QJsonObject ball = o["balls"].toArray().at(0).toObject();
+    QCOMPARE(ball["y"].toDouble(), 50.0);
+    QCOMPARE(o["energy"].toObject()["kinetic"].toDouble(), 900.0);
+    QCOMPARE(o["energy"].toObject()["potential"].toDouble(), -2.0 * 980 * 50);
+}
+
+void TestCli::optionsOverrideTheLesson()
+{
+    // No gravity: the ball moves in a straight line; --time picks the step count.
+    const Result r = runCli({"run", m_lesson, "--set", "models.gravity.y=0", "--integrator", "rk4", "--dt", "0.02",
+                             "--time", "2", "--json"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(o["integrator"].toString(), QString("rk4"));
+    QCOMPARE(o["dt"].toDouble(), 0.02);
+    QCOMPARE(o["steps"].toInt(), 100);
+    const QJsonObject ball = o["balls"].toArray().at(0).toObject();
+    QVERIFY(std::abs(ball["x"].toDouble() - 160.0) < 1e-9);
+    QCOMPARE(ball["y"].toDouble(), 50.0);
+    QCOMPARE(o["force_evaluations"].toInt(), 400);
+}
+
+void TestCli::builtInLessonRuns()
+{
+    const Result r = runCli({"run", "gravity", "--steps", "60", "--json"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(o["lesson"].toString(), QString("gravity"));
+    QVERIFY(!o["balls"].toArray().isEmpty());
+    const Result text = runCli({"run", "gravity", "--steps", "10"});
+    QCOMPARE(text.exitCode, 0);
+    QVERIFY(text.out.contains("10 steps"));
+}
+
+void TestCli::badInputExitsTwo_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message"); // a part of the one-line error
+    QTest::newRow("unknown integrator") << QStringList{"run", "@L", "--integrator", "leapfrog"}
+                                        << "--integrator: \"leapfrog\" is not one of euler, semi-implicit-euler";
+    QTest::newRow("dt not a number") << QStringList{"run", "@L", "--dt", "fast"} << "--dt: expects a number";
+    QTest::newRow("dt NaN") << QStringList{"run", "@L", "--dt", "nan"} << "--dt: expects a number";
+    QTest::newRow("exact with drag") << QStringList{"run", "@L", "--set", "models.drag.k=1"}
+                                     << "time.integrator: exact needs a constant acceleration";
+    QTest::newRow("dt zero") << QStringList{"run", "@L", "--dt", "0"} << "time.dt: 0 is outside (0, 1]";
+    QTest::newRow("bad --set") << QStringList{"run", "@L", "--set", "models.gravity.y"} << "--set";
+    QTest::newRow("unknown key") << QStringList{"run", "@L", "--set", "models.gravty.y=1"} << "gravity";
+    QTest::newRow("negative steps") << QStringList{"run", "@L", "--steps", "-3"} << "--steps";
+    QTest::newRow("no lesson") << QStringList{"run"} << "needs a lesson";
+    QTest::newRow("missing file") << QStringList{"run", "/nonexistent/lesson.json"} << "lesson.json";
+    QTest::newRow("unknown option") << QStringList{"run", "@L", "--fast"} << "--fast";
+    QTest::newRow("unknown command") << QStringList{"walk"} << "walk";
+}
+
+void TestCli::badInputExitsTwo()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    args.replaceInStrings("@L", m_lesson);
+    const Result r = runCli(args);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY(r.out.isEmpty());
+    const QString err = QString::fromUtf8(r.err).trimmed();
+    QVERIFY2(!err.isEmpty() && err.count('\n') == 0, qPrintable(err)); // exactly one line
+    QVERIFY2(err.contains(message), qPrintable(err));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"
