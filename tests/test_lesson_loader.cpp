@@ -4,6 +4,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
+#include "sim/world.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -152,6 +153,7 @@ private slots:
     void builtInFilesAreCompiledIn();
     void everyBuiltInLessonLoads();
     void builtInByIdAndStem();
+    void builtInLessonsRun();
     void eachKeyLandsInItsMember();
     void absentModelsAreOff();
     void presentModelWithEnabledFalseIsOff();
@@ -223,6 +225,35 @@ void TestLessonLoader::builtInByIdAndStem()
     QVERIFY2(missing.errors.first().startsWith("no-such-lesson: no such file or built-in lesson; built-in lessons: "),
              qPrintable(missing.errors.first()));
     QVERIFY(missing.errors.first().contains("gravity"));
+}
+
+void TestLessonLoader::builtInLessonsRun()
+{
+    // Two seconds of each built-in lesson: the world accepts the scene, and
+    // every ball stays finite and inside the box (all built-ins have four walls).
+    for (const QString& f : LessonLoader::builtInFiles()) {
+        const LoadResult r = LessonLoader::load(f);
+        QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+        const sim::Scene& scene = r.lesson->scene;
+        sim::World world;
+        const auto error = world.reset(scene);
+        QVERIFY2(!error, error ? error->c_str() : "");
+        QVERIFY(world.balls().size() > 0);
+        const int steps = static_cast<int>(std::lround(2.0 / scene.settings.time.dt));
+        for (int k = 0; k < steps; ++k)
+            world.step();
+        const sim::BallState& b = world.balls();
+        const double slack = 1e-9;
+        for (int i = 0; i < b.size(); ++i) {
+            QVERIFY2(b.position.col(i).allFinite() && b.velocity.col(i).allFinite(), qPrintable(f));
+            QVERIFY2(b.position(0, i) >= b.radius[i] - slack &&
+                         b.position(0, i) <= scene.settings.box.width - b.radius[i] + slack &&
+                         b.position(1, i) >= b.radius[i] - slack &&
+                         b.position(1, i) <= scene.settings.box.height - b.radius[i] + slack,
+                     qPrintable(QStringLiteral("%1: ball %2 at (%3, %4)").arg(f).arg(i).arg(b.position(0, i)).arg(
+                         b.position(1, i))));
+        }
+    }
 }
 
 void TestLessonLoader::eachKeyLandsInItsMember()
