@@ -127,10 +127,7 @@ ForceModel::ForceModel(const WorldSettings& settings, const BallState& balls, co
 
 double ForceModel::windAt(double t) const
 {
-    const WindSettings& w = m_settings.wind;
-    if (w.mode == WindMode::Noise)
-        return w.strength * m_inputs.noise(t * w.noiseFrequency);
-    return m_inputs.wind;
+    return m_inputs.wind.at(m_settings.wind.mode, m_settings.wind, t);
 }
 
 void ForceModel::acceleration(const Matrix2X& x, const Matrix2X& v, double t, Matrix2X& a) const
@@ -144,6 +141,8 @@ void ForceModel::acceleration(const Matrix2X& x, const Matrix2X& v, double t, Ma
         addDrag(s.drag, v, a);
     if (s.wind.mode != WindMode::Off)
         addWind(windAt(t), m_windScale, a);
+    if (s.randomAccel.enabled && m_inputs.randomAccel.cols() == a.cols())
+        a += m_inputs.randomAccel;
     if (s.point.enabled)
         addInverseSquare(s.point.position, s.point.strength, s.point.kind == PointKind::Attract, s.point.maxAccel,
                          s.point.scale == ForceScale::None ? nullptr : &m_pointScale, x, a);
@@ -190,6 +189,8 @@ double ForceModel::potential(const Matrix2X& x) const
 
 const char* nonConstantAccelerationReason(const WorldSettings& s)
 {
+    // Random and smoothed wind and the random acceleration are drawn once per
+    // step, so within a step they are constant.
     if (s.drag.enabled)
         return "drag depends on velocity";
     if (s.wind.mode == WindMode::Noise)

@@ -6,7 +6,7 @@
 // what the integrators need.
 
 #include "ball_state.h"
-#include "noise.h"
+#include "wind.h"
 #include "world_settings.h"
 
 #include <cstdint>
@@ -24,9 +24,10 @@ struct PointerInput {
 /// Inputs that hold for a whole step: random values are drawn once per step
 /// (so multi-stage integrators see the same wind at every stage).
 struct StepInputs {
-    double wind = 0.0;    ///< px/s² on a reference ball, for the random, smoothed and pointer modes
     PointerInput pointer;
-    GradientNoise1D noise; ///< the noise wind's generator (seeded from time.seed)
+    WindGenerator wind;        ///< the wind that acts (seeded from time.seed)
+    WindGenerator compareWind; ///< a second wind mode, shown beside the first and acting on nothing
+    Matrix2X randomAccel;      ///< px/s², per ball, for the random-acceleration model
 };
 
 class ForceModel {

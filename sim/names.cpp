@@ -6,7 +6,7 @@ namespace forcelab::sim {
 namespace {
 
 // One table per enumeration; the enum value is the index.
-constexpr std::array<std::string_view, 3> kWallModels{"clamp", "mirror", "exact"};
+constexpr std::array<std::string_view, 4> kWallModels{"clamp", "mirror", "exact", "reverse"};
 constexpr std::array<std::string_view, 2> kDragLaws{"linear", "quadratic"};
 constexpr std::array<std::string_view, 5> kWindModes{"off", "random", "smoothed", "noise", "pointer"};
 constexpr std::array<std::string_view, 3> kForceScales{"none", "radius", "mass"};

@@ -23,6 +23,39 @@ Vec2 paletteHome(int k, int count, const BoxSettings& box)
     return centre + radius * Vec2(std::cos(angle), std::sin(angle));
 }
 
+namespace {
+
+// A uniform value in [lo, hi) from the top 53 bits of the generator: the
+// standard fixes mt19937_64's output but not std::uniform_real_distribution's.
+double uniform(std::mt19937_64& rng, double lo, double hi)
+{
+    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * u;
+}
+
+} // namespace
+
+Ball randomBall(const SpawnSettings& spawn, const BoxSettings& box, std::mt19937_64& rng)
+{
+    const std::vector<Rgb>& palette = spawn.palette.empty() ? defaultPalette() : spawn.palette;
+    const int colours = static_cast<int>(palette.size());
+    Ball b;
+    b.radius = uniform(rng, spawn.minRadius, spawn.maxRadius);
+    // Fully inside the box when asked and when it fits (a ball wider than the
+    // box sits in the middle); otherwise the centre is anywhere in the box.
+    const double mx = spawn.fullyInside ? std::min(b.radius, 0.5 * box.width) : 0.0;
+    const double my = spawn.fullyInside ? std::min(b.radius, 0.5 * box.height) : 0.0;
+    b.position = Vec2(uniform(rng, mx, box.width - mx), uniform(rng, my, box.height - my));
+    const double speed = uniform(rng, spawn.minSpeed, spawn.maxSpeed);
+    const double angle = uniform(rng, 0.0, 2.0 * std::numbers::pi);
+    b.velocity = spawn.horizontal ? Vec2(std::cos(angle) < 0.0 ? -speed : speed, 0.0)
+                                  : Vec2(speed * std::cos(angle), speed * std::sin(angle));
+    const int k = std::min(colours - 1, static_cast<int>(uniform(rng, 0.0, colours)));
+    b.color = palette[static_cast<std::size_t>(k)];
+    b.home = paletteHome(k, colours, box);
+    return b;
+}
+
 BallState buildBalls(const Scene& scene)
 {
     const BoxSettings& box = scene.settings.box;
@@ -43,29 +76,9 @@ BallState buildBalls(const Scene& scene)
         b.home = homeOf(b.color);
         state.set(i, b);
     }
-
-    // std::mt19937_64 is specified bit for bit by the standard; the
-    // distributions are not, so uniform values come from our own mapping.
     std::mt19937_64 rng(spawn.seed);
-    auto uniform = [&](double lo, double hi) {
-        const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53; // [0, 1)
-        return lo + (hi - lo) * u;
-    };
-    for (int i = 0; i < spawn.count; ++i) {
-        Ball b;
-        b.radius = uniform(spawn.minRadius, spawn.maxRadius);
-        // Fully inside the box when it fits; a ball wider than the box sits in the middle.
-        const double x0 = std::min(b.radius, 0.5 * box.width), x1 = std::max(box.width - b.radius, x0);
-        const double y0 = std::min(b.radius, 0.5 * box.height), y1 = std::max(box.height - b.radius, y0);
-        b.position = Vec2(uniform(x0, x1), uniform(y0, y1));
-        const double speed = uniform(spawn.minSpeed, spawn.maxSpeed);
-        const double angle = uniform(0.0, 2.0 * std::numbers::pi);
-        b.velocity = speed * Vec2(std::cos(angle), std::sin(angle));
-        const int k = std::min(colours - 1, static_cast<int>(uniform(0.0, colours)));
-        b.color = palette[static_cast<std::size_t>(k)];
-        b.home = paletteHome(k, colours, box);
-        state.set(listed + i, b);
-    }
+    for (int i = 0; i < spawn.count; ++i)
+        state.set(listed + i, randomBall(spawn, box, rng));
     return state;
 }
 

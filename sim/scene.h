@@ -6,6 +6,7 @@
 #include "world_settings.h"
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 namespace forcelab::sim {
@@ -19,6 +20,10 @@ struct SpawnSettings {
     double maxSpeed = 300.0;    ///< px/s
     std::uint64_t seed = 7;     ///< the same seed places the same balls
     std::vector<Rgb> palette;   ///< colours to choose from; empty: the default palette
+    bool horizontal = false;    ///< velocities along x only, to the left or right (stages 2–5)
+    bool fullyInside = true;    ///< false: a centre may be anywhere in the box, so a ball can start partly outside
+    double perStep = 0.0;       ///< 1, chance each step that one more ball appears while running, [0, 1]
+    int maxCount = 200;         ///< balls, spawning over time stops at this many balls in the world
 };
 
 struct Scene {
@@ -33,6 +38,10 @@ const std::vector<Rgb>& defaultPalette();
 /// Home of colour k of a palette of `count` colours: points on a circle around
 /// the box centre (radius 0.3 × the shorter side), colour 0 at the right.
 Vec2 paletteHome(int k, int count, const BoxSettings& box);
+
+/// One random ball as the spawn settings describe (radius, position, speed,
+/// colour and home), drawn from `rng`.
+Ball randomBall(const SpawnSettings& spawn, const BoxSettings& box, std::mt19937_64& rng);
 
 /// The starting balls of a scene: the listed ones, then `spawn.count` random
 /// ones placed fully inside the box. Every ball gets the home of its colour

@@ -35,6 +35,15 @@ void clampAxis(const Axis& ax, double e, double& p, double& u)
     }
 }
 
+// reverse: the tutorial's first try. While the ball is past the wall its
+// velocity is flipped; the position is left alone. A ball that starts partly
+// outside flips every step and jitters on the wall.
+void reverseAxis(const Axis& ax, double e, double p, double& u)
+{
+    if ((ax.loOn && p < ax.lo) || (ax.hiOn && p > ax.hi))
+        u = -e * u;
+}
+
 // mirror: the distance travelled past the wall is travelled back into the box.
 // Over a step the ball then moves as far as it would have, but the bounce
 // happened at the wrong speed, so energy is gained or lost.
@@ -136,29 +145,42 @@ std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
     const double e = walls.restitution;
+    const double middle = 0.5 * box.width;
     std::int64_t hits = 0;
     for (int d = 0; d < 2; ++d) {
-        if (!on[d][0] && !on[d][1])
+        const bool middleHere = d == 0 && walls.middle;
+        if (!on[d][0] && !on[d][1] && !middleHere)
             continue;
         for (Eigen::Index i = 0; i < x.cols(); ++i) {
-            const double r = radius[i];
+            // With centreOnly the wall test ignores the radius: the ball sinks
+            // into the wall up to its centre before it turns.
+            const double r = walls.centreOnly ? 0.0 : radius[i];
             Axis ax{r, size[d] - r, on[d][0], on[d][1]};
-            if (ax.lo > ax.hi) // wider than the box
-                ax.lo = ax.hi = 0.5 * size[d];
+            if (middleHere) { // the middle wall bounds the side the ball started the step on
+                if (x0(0, i) <= middle)
+                    ax = Axis{ax.lo, middle - r, ax.loOn, true};
+                else
+                    ax = Axis{middle + r, ax.hi, true, ax.hiOn};
+            }
+            if (ax.lo > ax.hi) // wider than the space it has
+                ax.lo = ax.hi = 0.5 * (ax.lo + ax.hi);
             double& p = x(d, i);
             if (!outside(ax, p))
                 continue;
             double& u = v(d, i);
+            ++hits;
             switch (walls.model) {
+            case WallModel::Reverse:
+                reverseAxis(ax, e, p, u);
+                break;
             case WallModel::Clamp:
                 clampAxis(ax, e, p, u);
-                ++hits;
                 break;
             case WallModel::Mirror:
                 mirrorAxis(ax, e, p, u);
-                ++hits;
                 break;
             case WallModel::Exact:
+                --hits; // exactAxis counts each bounce itself
                 exactAxis(ax, e, x0(d, i), v0(d, i), h, p, u, hits);
                 break;
             }

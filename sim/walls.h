@@ -11,8 +11,9 @@ namespace forcelab::sim {
 
 /// Bounces the balls off the enabled walls. x0, v0 are the positions and
 /// velocities at the start of the step of length h (the `exact` model needs
-/// them; the others ignore them); x, v are the state after integration and are
-/// corrected in place. Returns the number of bounces.
+/// both, the middle wall needs x0 to know each ball's side; otherwise they are
+/// not read); x, v are the state after integration and are corrected in place.
+/// Returns the number of bounces.
 std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const VectorX& radius,
                         const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x, Matrix2X& v);
 

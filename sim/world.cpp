@@ -74,6 +74,7 @@ std::optional<std::string> validateSettings(const WorldSettings& s)
     c.range("models.wind.strength", s.wind.strength, 0.0, 1e7);
     c.range("models.wind.smoothed_step", s.wind.smoothedStep, 0.0, 1.0, true);
     c.range("models.wind.frequency", s.wind.noiseFrequency, 0.0, 1e3, true);
+    c.range("models.random_accel.strength", s.randomAccel.strength, 0.0, 1e7);
     c.finite("models.point.x", s.point.position.x());
     c.finite("models.point.y", s.point.position.y());
     c.range("models.point.strength", s.point.strength, 0.0, 1e15);
@@ -97,6 +98,19 @@ std::optional<std::string> validateSettings(const WorldSettings& s)
     return c.result();
 }
 
+std::optional<std::string> validateSpawn(const SpawnSettings& s)
+{
+    Checker c;
+    c.range("spawn.count", s.count, 0, kMaxBalls);
+    c.range("spawn.radius[0]", s.minRadius, 0.0, 1e6, true);
+    c.range("spawn.radius[1]", s.maxRadius, s.minRadius, 1e6);
+    c.range("spawn.speed[0]", s.minSpeed, 0.0, 1e9);
+    c.range("spawn.speed[1]", s.maxSpeed, s.minSpeed, 1e9);
+    c.range("spawn.per_step", s.perStep, 0.0, 1.0);
+    c.range("spawn.max_count", s.maxCount, 0, kMaxBalls);
+    return c.result();
+}
+
 // ---------------------------------------------------------------------------
 
 World::World()
@@ -114,11 +128,16 @@ std::optional<std::string> World::reset(const Scene& scene)
 {
     if (auto error = validateSettings(scene.settings))
         return error;
+    if (auto error = validateSpawn(scene.spawn))
+        return error;
     m_settings = scene.settings;
     m_balls = buildBalls(scene);
+    m_spawn = scene.spawn;
     m_inputs = StepInputs{};
-    m_inputs.noise = GradientNoise1D(m_settings.time.seed);
+    m_inputs.wind = WindGenerator(m_settings.time.seed);
+    m_inputs.compareWind = WindGenerator(m_settings.time.seed);
     m_rng.seed(m_settings.time.seed);
+    m_spawnRng.seed(m_spawn.seed ^ 0x5bd1e995u); // its own stream: spawning does not shift the wind
     m_integrator.invalidate();
     m_time = 0.0;
     m_stepCount = 0;
@@ -151,36 +170,50 @@ void World::setPointer(const PointerInput& pointer)
 }
 
 // Random values are drawn once per step, before any force is evaluated, so
-// every stage of a multi-stage integrator sees the same wind and a run with the
-// same seed is the same run.
+// every stage of a multi-stage integrator sees the same values and a run with
+// the same seed is the same run.
 void World::drawStepRandomness()
 {
-    const WindSettings& w = m_settings.wind;
-    const double before = m_inputs.wind;
-    // A uniform value in [-1, 1) from the top 53 bits: the standard does not fix
-    // the output of std::uniform_real_distribution, mt19937_64 it does.
-    auto symmetric = [this] { return static_cast<double>(m_rng() >> 11) * 0x1.0p-52 - 1.0; };
-    switch (w.mode) {
-    case WindMode::Off:
-    case WindMode::Noise:
-        m_inputs.wind = 0.0;
-        break;
-    case WindMode::Random: // a fresh value every step, centred on zero
-        m_inputs.wind = w.strength * symmetric();
-        break;
-    case WindMode::Smoothed: // a bounded random walk: small changes, never beyond ±strength
-        m_inputs.wind = std::clamp(m_inputs.wind + w.smoothedStep * w.strength * symmetric(), -w.strength,
-                                   w.strength);
-        break;
-    case WindMode::Pointer: { // blows away from the pointer's side, harder the further out
-        const PointerInput& p = m_inputs.pointer;
-        const double half = 0.5 * m_settings.box.width;
-        m_inputs.wind = p.inside ? -w.strength * std::clamp((p.position.x() - half) / half, -1.0, 1.0) : 0.0;
-        break;
+    const WorldSettings& s = m_settings;
+    m_inputs.wind.advance(s.wind.mode, s.wind, m_inputs.pointer, s.box.width);
+    if (s.wind.compare != WindMode::Off)
+        m_inputs.compareWind.advance(s.wind.compare, s.wind, m_inputs.pointer, s.box.width);
+    if (s.randomAccel.enabled) {
+        // Each component uniform in [−strength, strength): centred on zero, so
+        // on average it pushes nowhere. The fixed kind draws once per ball.
+        Matrix2X& a = m_inputs.randomAccel;
+        const Eigen::Index from = s.randomAccel.fixed ? std::min(a.cols(), Eigen::Index(m_balls.size())) : 0;
+        a.conservativeResize(2, m_balls.size());
+        for (Eigen::Index i = from; i < a.cols(); ++i)
+            for (int d = 0; d < 2; ++d)
+                a(d, i) = s.randomAccel.strength * (static_cast<double>(m_rng() >> 11) * 0x1.0p-52 - 1.0);
     }
-    }
-    if (m_inputs.wind != before)
+    // The step's inputs changed: Verlet's kept acceleration is stale.
+    if (s.wind.mode != WindMode::Off || s.randomAccel.enabled)
         m_integrator.invalidate();
+}
+
+// Spawning over time: with probability perStep one random ball appears, until
+// the world holds maxCount balls.
+void World::spawnOverTime()
+{
+    if (m_spawn.perStep <= 0.0 || m_balls.size() >= m_spawn.maxCount)
+        return;
+    const double u = static_cast<double>(m_spawnRng() >> 11) * 0x1.0p-53;
+    if (u >= m_spawn.perStep)
+        return;
+    m_balls.append(randomBall(m_spawn, m_settings.box, m_spawnRng));
+    m_integrator.invalidate();
+}
+
+double World::wind() const
+{
+    return m_inputs.wind.at(m_settings.wind.mode, m_settings.wind, m_time);
+}
+
+double World::compareWind() const
+{
+    return m_inputs.compareWind.at(m_settings.wind.compare, m_settings.wind, m_time);
 }
 
 void World::step()
@@ -190,9 +223,11 @@ void World::step()
     drawStepRandomness();
     m_subTime = 0.0;
     const int substeps = m_settings.time.substeps;
-    const double h = m_settings.time.dt / substeps;
+    // The per-frame bug moves the balls by one frame's worth whatever dt is.
+    const double h = (m_settings.time.perFrame ? kFrameSeconds : m_settings.time.dt) / substeps;
     for (int k = 0; k < substeps; ++k)
         subStep(h);
+    spawnOverTime();
     ++m_stepCount;
     m_time += m_settings.time.dt;
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -204,7 +239,7 @@ void World::subStep(double h)
 {
     const WorldSettings& s = m_settings;
     const ForceModel forces(s, m_balls, m_inputs);
-    const bool keepStart = s.walls.model == WallModel::Exact ||
+    const bool keepStart = s.walls.model == WallModel::Exact || s.walls.middle ||
                            (s.collisions.response != Response::None && s.collisions.continuous);
     if (keepStart) {
         m_startPosition = m_balls.position;

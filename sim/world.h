@@ -69,19 +69,24 @@ public:
     /// Acceleration of every ball in the current state (for the readout).
     Matrix2X accelerations() const;
     /// The wind acting now on a reference ball, px/s² (+ blows right).
-    double wind() const { return m_inputs.wind; }
+    double wind() const;
+    /// The comparison wind (settings().wind.compare), px/s²; it acts on nothing.
+    double compareWind() const;
     const std::vector<Contact>& contacts() const { return m_collisions.contacts(); }
 
 private:
     void subStep(double h);
     void drawStepRandomness();
+    void spawnOverTime();
 
     WorldSettings m_settings;
     BallState m_balls;
     StepInputs m_inputs;
     Integrator m_integrator;
     CollisionSystem m_collisions;
-    std::mt19937_64 m_rng;
+    SpawnSettings m_spawn;
+    std::mt19937_64 m_rng;      // wind-independent draws: random acceleration
+    std::mt19937_64 m_spawnRng; // spawning over time
     double m_time = 0.0;    // s, at the start of the current step
     double m_subTime = 0.0; // s, time into the current step covered by its sub-steps
     std::int64_t m_stepCount = 0;
@@ -90,6 +95,12 @@ private:
     Matrix2X m_startPosition; // scratch: state at the start of a sub-step
     Matrix2X m_startVelocity;
 };
+
+/// Most balls a world holds: spawning and lesson files are checked against it.
+inline constexpr int kMaxBalls = 200'000;
+
+/// Checks the spawn settings ("spawn.count: …").
+std::optional<std::string> validateSpawn(const SpawnSettings& spawn);
 
 /// Checks a full settings struct. Returns the first problem as
 /// "key.path: what is wrong" using the lesson file's key paths.

@@ -17,9 +17,10 @@ namespace forcelab::sim {
 inline constexpr double kReferenceRadius = 10.0;
 
 enum class WallModel {
-    Clamp,  ///< put the ball back on the wall; the overshoot is lost
-    Mirror, ///< reflect the overshoot back into the box
-    Exact,  ///< find the time of impact inside the step, bounce, finish the step
+    Clamp,   ///< put the ball back on the wall; the overshoot is lost
+    Mirror,  ///< reflect the overshoot back into the box
+    Exact,   ///< find the time of impact inside the step, bounce, finish the step
+    Reverse, ///< the first naive try: flip the velocity while past the wall, leave the position
 };
 
 struct BoxSettings {
@@ -34,6 +35,8 @@ struct WallSettings {
     bool bottom = true;
     WallModel model = WallModel::Clamp;
     double restitution = 1.0; ///< 1, share of the normal speed a bounce keeps, [0, 1]
+    bool middle = false;      ///< a vertical wall at x = width / 2; each ball stays on the side it is on
+    bool centreOnly = false;  ///< test the ball's centre against the wall, not its edge (stage 3's bug)
 };
 
 struct GravitySettings {
@@ -65,6 +68,14 @@ struct WindSettings {
     ForceScale scale = ForceScale::None;
     double smoothedStep = 0.1;     ///< 1, largest change per step of the smoothed wind, as a share of strength
     double noiseFrequency = 0.5;   ///< Hz, how fast the noise wind changes
+    WindMode compare = WindMode::Off; ///< a second mode computed beside the first for a second vane; acts on nothing
+};
+
+/// Stage 10: a random acceleration per ball, centred on zero.
+struct RandomAccelSettings {
+    bool enabled = false;
+    bool fixed = false;      ///< false: a new value every step; true: one value per ball, kept for ever
+    double strength = 100.0; ///< px/s², largest value of each component
 };
 
 enum class PointKind { Attract, Repel };
@@ -123,8 +134,12 @@ struct TimeSettings {
     double dt = 1.0 / 60.0;   ///< s, one step of the world
     int substeps = 1;         ///< 1, a step is split into this many equal sub-steps
     double tolerance = 1e-9;  ///< 1, rk45 local error tolerance (absolute and relative)
-    std::uint64_t seed = 1;   ///< random generator seed (wind)
+    std::uint64_t seed = 1;   ///< random generator seed (wind, random acceleration, spawning)
+    bool perFrame = false;    ///< ignore dt: each step moves the balls as if 1/60 s had passed (stage 5's bug)
 };
+
+/// The length of one "frame" of the per-frame bug, s.
+inline constexpr double kFrameSeconds = 1.0 / 60.0;
 
 struct WorldSettings {
     BoxSettings box;
@@ -133,6 +148,7 @@ struct WorldSettings {
     GravitySettings gravity;
     DragSettings drag;
     WindSettings wind;
+    RandomAccelSettings randomAccel;
     PointForceSettings point;
     SpringSettings spring;
     MutualGravitySettings mutualGravity;
