@@ -65,6 +65,10 @@ private slots:
     void settingsChecks();
     void namesRoundTrip();
     void spawnIsDeterministicAndInside();
+    void spawnOverTime();
+    void perFrameIgnoresDt();
+    void randomAcceleration();
+    void compareWindActsOnNothing();
 };
 
 void TestForces::noModelsNoAcceleration()
@@ -400,6 +404,92 @@ void TestForces::spawnIsDeterministicAndInside()
     }
     s.spawn.seed = 43;
     QVERIFY(buildBalls(s).position != a.position);
+}
+
+// One ball appears with probability perStep each step: over 3000 steps at
+// 0.1 the count is binomial, mean 300, standard deviation 16.4; ±5σ.
+void TestForces::spawnOverTime()
+{
+    Scene s = openScene({});
+    s.spawn.perStep = 0.1;
+    s.spawn.maxCount = 100000;
+    s.spawn.horizontal = true;
+    World w;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 3000; ++k)
+        w.step();
+    const int n = w.balls().size();
+    QVERIFY2(std::abs(n - 300) <= 82, qPrintable(QString::number(n)));
+    QVERIFY((w.balls().velocity.row(1).array() == 0.0).all()); // horizontal only
+    s.spawn.maxCount = 5;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 3000; ++k)
+        w.step();
+    QCOMPARE(w.balls().size(), 5);
+}
+
+// With dt the distance travelled in 1 s is the same at 30, 60 or 144 steps a
+// second; per frame it is proportional to the number of frames.
+void TestForces::perFrameIgnoresDt()
+{
+    for (bool perFrame : {false, true}) {
+        for (int rate : {30, 60, 144}) {
+            Scene s = openScene({ballAt(0, 0, 120, 0)});
+            s.settings.time.dt = 1.0 / rate;
+            s.settings.time.perFrame = perFrame;
+            World w;
+            QVERIFY(!w.reset(s));
+            for (int k = 0; k < rate; ++k)
+                w.step();
+            const double expected = perFrame ? 120.0 * rate / 60.0 : 120.0;
+            QVERIFY2(std::abs(w.balls().position(0, 0) - expected) < 1e-9,
+                     qPrintable(QString("%1 Hz: %2").arg(rate).arg(w.balls().position(0, 0))));
+        }
+    }
+}
+
+// A fixed random acceleration per ball never changes; a per-step one does and
+// averages out: after 3600 steps the fixed kind's speed is a t (thousands of
+// px/s), the per-step kind's a random walk: each component has a spread of
+// strength × dt × √(n/3) ≈ 58 px/s, so the mean speed is about 72 px/s.
+void TestForces::randomAcceleration()
+{
+    Scene s = openScene({ballAt(0, 0), ballAt(0, 0), ballAt(0, 0), ballAt(0, 0)});
+    s.settings.randomAccel = RandomAccelSettings{true, true, 100.0};
+    World fixed;
+    QVERIFY(!fixed.reset(s));
+    fixed.step();
+    const Matrix2X first = fixed.accelerations();
+    for (int k = 0; k < 3599; ++k)
+        fixed.step();
+    QVERIFY(fixed.accelerations() == first);
+    QVERIFY((first.array().abs() <= 100.0).all());
+    s.settings.randomAccel.fixed = false;
+    World perStep;
+    QVERIFY(!perStep.reset(s));
+    for (int k = 0; k < 3600; ++k)
+        perStep.step();
+    const double fixedSpeed = fixed.balls().velocity.colwise().norm().mean();
+    const double walkSpeed = perStep.balls().velocity.colwise().norm().mean();
+    qInfo("mean speed after 60 s: fixed %.1f px/s, per step %.1f px/s", fixedSpeed, walkSpeed);
+    QVERIFY(fixedSpeed > 1000.0);
+    QVERIFY(walkSpeed < 250.0);
+}
+
+void TestForces::compareWindActsOnNothing()
+{
+    Scene s = openScene({ballAt(0, 0)});
+    s.settings.wind.mode = WindMode::Off;
+    s.settings.wind.compare = WindMode::Random;
+    World w;
+    QVERIFY(!w.reset(s));
+    bool moved = false;
+    for (int k = 0; k < 10; ++k) {
+        w.step();
+        moved = moved || w.compareWind() != 0.0;
+    }
+    QVERIFY(moved);
+    QCOMPARE(w.balls().velocity(0, 0), 0.0);
 }
 
 QTEST_APPLESS_MAIN(TestForces)

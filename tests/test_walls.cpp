@@ -51,6 +51,9 @@ private slots:
     void clampAndMirrorStayInside();
     void clampLosesHeight();
     void wallsOffLetBallsLeave();
+    void reverseTrapsBallsThatStartOutside();
+    void middleWallKeepsSides();
+    void centreOnlyLetsBallsSinkIn();
 };
 
 void TestWalls::exactKeepsHeight_data()
@@ -163,6 +166,70 @@ void TestWalls::wallsOffLetBallsLeave()
         w.step();
     QCOMPARE(w.totals().wallHits, std::int64_t(0));
     QVERIFY(w.balls().position(1, 0) > 400.0);
+}
+
+// The naive wall flips the velocity whenever the ball is past the wall. A
+// ball that starts half outside, moving slowly, flips every step and never
+// gets free; clamp puts it back and it leaves.
+void TestWalls::reverseTrapsBallsThatStartOutside()
+{
+    for (WallModel model : {WallModel::Reverse, WallModel::Clamp}) {
+        Scene s = dropScene(model, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
+        s.settings.gravity.enabled = false;
+        s.balls = {ballAt(595, 200, 60, 0, 20)}; // centre 15 px beyond its allowed 580
+        World w;
+        QVERIFY(!w.reset(s));
+        int flips = 0;
+        double previous = w.balls().velocity(0, 0);
+        for (int k = 0; k < 120; ++k) {
+            w.step();
+            flips += (w.balls().velocity(0, 0) > 0) != (previous > 0);
+            previous = w.balls().velocity(0, 0);
+        }
+        const double x = w.balls().position(0, 0);
+        if (model == WallModel::Reverse) {
+            QVERIFY2(x > 580 && x < 600, qPrintable(QString::number(x))); // still stuck in the wall
+            QVERIFY(flips >= 100);                                         // jittering: a flip nearly every step
+        } else {
+            QVERIFY2(x < 500, qPrintable(QString::number(x))); // bounced off and travelled away
+            QCOMPARE(flips, 1);
+        }
+    }
+}
+
+void TestWalls::middleWallKeepsSides()
+{
+    Scene s = dropScene(WallModel::Clamp, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
+    s.settings.gravity.enabled = false;
+    s.settings.walls.middle = true;
+    s.balls = {ballAt(100, 100, 400, 0, 10), ballAt(500, 300, -400, 0, 10)};
+    World w;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 600; ++k) {
+        w.step();
+        QVERIFY(w.balls().position(0, 0) <= 290.0);
+        QVERIFY(w.balls().position(0, 1) >= 310.0);
+    }
+    QVERIFY(w.totals().wallHits > 10);
+}
+
+// Testing the centre instead of the edge lets a ball sink in by its radius.
+void TestWalls::centreOnlyLetsBallsSinkIn()
+{
+    for (bool centreOnly : {true, false}) {
+        Scene s = dropScene(WallModel::Clamp, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
+        s.settings.gravity.enabled = false;
+        s.settings.walls.centreOnly = centreOnly;
+        s.balls = {ballAt(300, 200, 300, 0, 40)};
+        World w;
+        QVERIFY(!w.reset(s));
+        double furthest = 0;
+        for (int k = 0; k < 300; ++k) {
+            w.step();
+            furthest = std::max(furthest, w.balls().position(0, 0));
+        }
+        QCOMPARE(furthest, centreOnly ? 600.0 : 560.0);
+    }
 }
 
 QTEST_APPLESS_MAIN(TestWalls)
