@@ -51,10 +51,6 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     createStatusBar();
     readSettings();
     openInitialLesson(lesson);
-
-    connect(m_controller, &SimulationController::playingChanged, this, &MainWindow::updatePlayAction);
-    connect(m_controller, &SimulationController::errorOccurred, this, &MainWindow::showError);
-    connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
     m_canvas->setFocus();
 }
 
@@ -66,7 +62,8 @@ void MainWindow::createActions()
     m_playAction->setObjectName(QStringLiteral("playAction"));
     m_playAction->setShortcut(Qt::Key_Space);
     connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::togglePlay);
-    updatePlayAction(false);
+    connect(m_controller, &SimulationController::playingChanged, this, &MainWindow::updatePlayAction);
+    updatePlayAction(m_controller->isPlaying());
 
     m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
     m_stepAction->setObjectName(QStringLiteral("stepAction"));
@@ -178,6 +175,9 @@ void MainWindow::createStatusBar()
     m_ballsLabel = label(QStringLiteral("ballsLabel"), tr("Number of balls"));
     m_pairsLabel = label(QStringLiteral("pairsLabel"),
                          tr("Ball pairs tested for contact in the last step, and the contacts found"));
+
+    connect(m_controller, &SimulationController::errorOccurred, this, &MainWindow::showError);
+    connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
 
     m_droppedTimer = new QTimer(this);
     m_droppedTimer->setSingleShot(true);

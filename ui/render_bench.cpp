@@ -11,6 +11,8 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace forcelab {
@@ -46,6 +48,7 @@ RenderBenchRow timeFrames(sim::World& world, BallDrawing drawing, const RenderBe
     }
     RenderBenchRow row;
     row.balls = world.balls().size();
+    row.meanRadius = world.balls().radius.mean();
     row.drawing = drawing;
     row.medianMs = median(ms);
     row.minMs = ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end());
@@ -61,13 +64,15 @@ QList<RenderBenchRow> runRenderBench(const RenderBenchOptions& options)
     for (int n : options.ballCounts) {
         sim::Scene scene;
         scene.settings.box = {1200.0, 800.0};
+        // N π r̄² = fill × area (with r uniform in [0.7, 1.3] r̄, E[r²] = 1.03 r̄²).
+        const double mean = std::sqrt(options.fill * 1200.0 * 800.0 / (std::max(n, 1) * std::numbers::pi * 1.03));
         scene.spawn.count = n;
-        scene.spawn.minRadius = options.minRadius;
-        scene.spawn.maxRadius = options.maxRadius;
+        scene.spawn.minRadius = 0.7 * mean;
+        scene.spawn.maxRadius = 1.3 * mean;
         scene.spawn.seed = 7;
         sim::World world(scene);
         rows.append(timeFrames(world, BallDrawing::Sprites, options));
-        if (options.withEllipses)
+        if (options.withBaseline)
             rows.append(timeFrames(world, BallDrawing::Ellipses, options));
     }
     return rows;
@@ -77,18 +82,22 @@ QString formatRenderBench(const QList<RenderBenchRow>& rows, const RenderBenchOp
 {
     QString text;
     QTextStream out(&text);
-    out << "render: " << options.size.width() << "x" << options.size.height() << " px image, box 1200x800 px, radii "
-        << options.minRadius << "-" << options.maxRadius << " px, median of " << options.frames << " frames\n";
-    out << QStringLiteral("%1  %2  %3  %4  %5\n")
+    out << "render: " << options.size.width() << "x" << options.size.height() << " px image, box 1200x800 px "
+        << options.fill * 100 << "% covered, median of " << options.frames << " frames\n";
+    out << QStringLiteral("%1  %2  %3  %4  %5  %6\n")
                .arg(QStringLiteral("balls"), 7)
-               .arg(QStringLiteral("drawing"), -9)
+               .arg(QStringLiteral("r px"), 5)
+               .arg(QStringLiteral("drawing"), -15)
                .arg(QStringLiteral("median ms"), 10)
                .arg(QStringLiteral("min ms"), 8)
                .arg(QStringLiteral("ns/ball"), 8);
     for (const RenderBenchRow& r : rows) {
-        out << QStringLiteral("%1  %2  %3  %4  %5\n")
+        const QString drawing =
+            r.drawing == BallDrawing::Sprites ? QStringLiteral("sprites") : QStringLiteral("drawEllipse");
+        out << QStringLiteral("%1  %2  %3  %4  %5  %6\n")
                    .arg(r.balls, 7)
-                   .arg(r.drawing == BallDrawing::Sprites ? QStringLiteral("sprites") : QStringLiteral("ellipses"), -9)
+                   .arg(r.meanRadius, 5, 'f', 1)
+                   .arg(drawing, -15)
                    .arg(r.medianMs, 10, 'f', 3)
                    .arg(r.minMs, 8, 'f', 3)
                    .arg(r.nsPerBall, 8, 'f', 1);

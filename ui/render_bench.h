@@ -10,7 +10,7 @@
 namespace forcelab {
 
 enum class BallDrawing {
-    Sprites,  ///< cached ball images blitted (what the canvas does)
+    Sprites,  ///< cached ball images blitted with drawImage (what the canvas does)
     Ellipses, ///< one antialiased drawEllipse per ball (the baseline)
 };
 
@@ -18,21 +18,23 @@ struct RenderBenchOptions {
     QList<int> ballCounts{1000, 10000, 50000};
     QSize size{1280, 800};    ///< px of the image (device px, ratio 1)
     int frames = 30;          ///< timed frames per count (after two warm-up frames)
-    double minRadius = 2.0;   ///< px, world radius range of the balls
-    double maxRadius = 6.0;
-    bool withEllipses = true; ///< also time the drawEllipse baseline
+    double fill = 0.3;        ///< share of the box's area covered by balls (radii follow from N)
+    bool withBaseline = true; ///< also time the drawEllipse baseline
 };
 
 struct RenderBenchRow {
     int balls = 0;
+    double meanRadius = 0.0; ///< px (world; the image shows the box at scale 0.975)
     BallDrawing drawing = BallDrawing::Sprites;
     double medianMs = 0.0; ///< per frame
     double minMs = 0.0;
     double nsPerBall = 0.0; ///< median / balls
 };
 
-/// Times whole frames (box, grid, balls) of a 1200 × 800 px box filled with
-/// random balls, every ball moved between frames so nothing is cached but the sprites.
+/// Times whole frames (box, grid, balls) of a 1200 × 800 px box with N
+/// random balls covering `fill` of its area (radii 0.7 … 1.3 × the mean, as
+/// in a box about 30% full), every ball moved between frames so nothing is
+/// cached but the sprites.
 QList<RenderBenchRow> runRenderBench(const RenderBenchOptions& options = {});
 
 /// A fixed-width table of the rows, with a header naming the image size.

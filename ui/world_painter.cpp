@@ -118,8 +118,11 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
     const double s = view.scale();
     const QPointF origin = view.toWidget(sim::Vec2(0.0, 0.0));
     const bool mark = options.overlays.colliding && balls.colliding.size() == static_cast<std::size_t>(n);
-    // Sprites are antialiased already; blitting them at whole device pixels
-    // with antialiasing off takes the raster engine's plain copy path.
+
+    // Sprites are antialiased already: placed at whole device pixels with
+    // antialiasing off, the raster engine copies them without resampling.
+    const QTransform device = p.deviceTransform();
+    const QTransform toLogical = device.inverted();
     p.setRenderHint(QPainter::Antialiasing, false);
     p.setPen(Qt::NoPen);
     for (int i = 0; i < n; ++i) {
@@ -133,8 +136,12 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
         const sim::Rgb color = balls.color[static_cast<std::size_t>(i)];
         const QImage* sprite = options.sprites ? m_sprites.sprite(r * dpr, color, marked, dpr) : nullptr;
         if (sprite) {
+            // Top-left device pixel of the sprite: the disc's centre is the
+            // middle of the sprite, rounded to whole pixels.
             const double half = 0.5 * sprite->width();
-            p.drawImage(QPointF(std::round(x * dpr - half) / dpr, std::round(y * dpr - half) / dpr), *sprite);
+            const double left = std::round(device.m11() * x + device.dx() - half);
+            const double top = std::round(device.m22() * y + device.dy() - half);
+            p.drawImage(toLogical.map(QPointF(left, top)), *sprite);
         } else {
             p.setRenderHint(QPainter::Antialiasing, true);
             const QColor fill = QColor::fromRgb(marked ? m_sprites.markedColor() : color);

@@ -1,0 +1,17 @@
+#!/bin/sh
+# A screenshot of the workbench running a lesson, taken under a virtual X
+# server (xvfb-run) so it works on a machine without a display.
+#   tools/screenshot.sh [BUILD_DIR] [OUT.png] [LESSON] [SECONDS]
+# Defaults: build, docs/screenshot.png, the first built-in lesson, 3 s.
+# The window starts from fresh settings (a temporary config directory), so
+# the picture does not depend on the last session's layout.
+set -eu
+build=${1:-build}
+out=${2:-docs/screenshot.png}
+lesson=${3:-}
+seconds=${4:-3}
+config=$(mktemp -d)
+trap 'rm -rf "$config"' EXIT
+XDG_CONFIG_HOME="$config" xvfb-run -a -s "-screen 0 1400x900x24" \
+    "$build/app/forcelab" --screenshot "$out" --after "$seconds" ${lesson:+"$lesson"}
+echo "wrote $out"
