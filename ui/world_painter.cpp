@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <optional>
 
 namespace forcelab {
@@ -51,7 +52,7 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     if (options.overlays.velocity || options.overlays.acceleration)
         paintArrows(p, v, world, options, a);
     if (options.overlays.readout)
-        paintReadout(p, v, world, options, a);
+        paintReadout(p, area, v, world, options, a);
     p.restore();
 }
 
@@ -270,7 +271,7 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
     }
 }
 
-void WorldPainter::paintReadout(QPainter& p, const ViewTransform& view, const sim::World& world,
+void WorldPainter::paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
                                 const PaintOptions& options, const sim::Matrix2X* accelerations)
 {
     const sim::BallState& balls = world.balls();
@@ -282,12 +283,11 @@ void WorldPainter::paintReadout(QPainter& p, const ViewTransform& view, const si
     const sim::Vec2 x = balls.position.col(i), v = balls.velocity.col(i);
     const sim::Vec2 a = accelerations ? sim::Vec2(accelerations->col(i)) : sim::Vec2(0.0, 0.0);
     const QStringList lines{
-        QStringLiteral("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3),
-        QString(17, u' ') + u'x' + QString(8, u' ') + u'y',
+        QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
         QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
         QStringLiteral("velocity %1%2  px/s").arg(num(v.x()), num(v.y())),
         QStringLiteral("accel.   %1%2  px/s²").arg(num(a.x()), num(a.y())),
-        QStringLiteral("speed    %1       px/s").arg(num(v.norm())),
+        QStringLiteral("speed    %1 px/s   t = %2 s").arg(num(v.norm())).arg(world.time(), 0, 'f', 3),
     };
 
     QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
@@ -298,9 +298,34 @@ void WorldPainter::paintReadout(QPainter& p, const ViewTransform& view, const si
     for (const QString& line : lines)
         width = std::max(width, fm.horizontalAdvance(line));
     const double pad = 8.0 * options.lineScale;
+    // Outside the box when a letterbox strip has room for it (it then hides
+    // nothing); otherwise in the box corner farthest from the ball.
     const QRectF box = view.boxRect();
-    const QRectF panel(box.topLeft() + QPointF(12, 12) * options.lineScale,
-                       QSizeF(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad));
+    const QSizeF size(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad);
+    const double inset = 12.0 * options.lineScale, gap = 6.0 * options.lineScale;
+    QRectF panel;
+    if (box.top() - area.top() >= size.height() + 2 * gap)
+        panel = QRectF(QPointF(box.left(), box.top() - gap - size.height()), size);
+    else if (area.bottom() - box.bottom() >= size.height() + 2 * gap)
+        panel = QRectF(QPointF(box.left(), box.bottom() + gap), size);
+    else if (area.right() - box.right() >= size.width() + 2 * gap)
+        panel = QRectF(QPointF(box.right() + gap, box.top()), size);
+    else if (box.left() - area.left() >= size.width() + 2 * gap)
+        panel = QRectF(QPointF(box.left() - gap - size.width(), box.top()), size);
+    const QPointF ball = view.toWidget(x);
+    double farthest = panel.isNull() ? -1.0 : std::numeric_limits<double>::infinity();
+    for (const QPointF& corner : {box.topLeft() + QPointF(inset, inset),
+                                  QPointF(box.right() - inset - size.width(), box.top() + inset),
+                                  QPointF(box.left() + inset, box.bottom() - inset - size.height()),
+                                  box.bottomRight() - QPointF(inset + size.width(), inset + size.height())}) {
+        const QRectF candidate(corner, size);
+        const QPointF d = candidate.center() - ball;
+        const double distance = d.x() * d.x() + d.y() * d.y();
+        if (distance > farthest) {
+            farthest = distance;
+            panel = candidate;
+        }
+    }
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
     p.setBrush(QColor(255, 255, 255, 225));
@@ -308,9 +333,9 @@ void WorldPainter::paintReadout(QPainter& p, const ViewTransform& view, const si
     double y = panel.top() + pad + fm.ascent();
     for (int k = 0; k < lines.size(); ++k) {
         QColor c(0x1d, 0x22, 0x2c);
-        if (k == 3)
+        if (k == 2)
             c = QColor::fromRgb(canvas_colors::kVelocity);
-        else if (k == 4)
+        else if (k == 3)
             c = QColor::fromRgb(canvas_colors::kAcceleration);
         p.setPen(c);
         p.drawText(QPointF(panel.left() + pad, y), lines[k]);

@@ -75,8 +75,8 @@ private:
     void paintMarkers(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintArrows(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
                      const sim::Matrix2X* accelerations);
-    void paintReadout(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
-                      const sim::Matrix2X* accelerations);
+    void paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
+                      const PaintOptions& options, const sim::Matrix2X* accelerations);
 
     BallSprites m_sprites;
 };
