@@ -9,8 +9,10 @@
 #include "ui/view_transform.h"
 #include "ui/world_painter.h"
 
+#include "lessons/lesson_loader.h"
 #include "sim/names.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
@@ -20,6 +22,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 
 #include <cmath>
 
@@ -96,6 +99,7 @@ private slots:
     void pointerEventsReachTheWorld();
     void frameLoopTakesWholeStepsAndCapsThem();
     void shortcutsPlayStepAndReset();
+    void opensShowcaseAndRemembersLastLesson();
 };
 
 void GuiTest::initTestCase()
@@ -450,6 +454,44 @@ void GuiTest::shortcutsPlayStepAndReset()
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(controller->isTimerActive());
     controller->pause();
+}
+
+void GuiTest::opensShowcaseAndRemembersLastLesson()
+{
+    QSettings().clear();
+    const QStringList builtIn = LessonLoader::builtInFiles();
+    QVERIFY(!builtIn.isEmpty());
+    QString gravitySource;
+    {
+        // Fresh settings: the first built-in lesson, running.
+        MainWindow window;
+        QCOMPARE(window.lesson().source, builtIn.first());
+        QCOMPARE(window.controller()->world().balls().size(),
+                 sim::buildBalls(window.lesson().scene).size());
+        QVERIFY(window.controller()->isPlaying());
+
+        // Another lesson: the panel shows its values.
+        QVERIFY(window.openLesson(QStringLiteral("gravity")));
+        gravitySource = window.lesson().source;
+        QVERIFY(gravitySource != builtIn.first());
+        auto* gy = window.parameterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
+        QVERIFY(gy);
+        QCOMPARE(gy->value(), window.lesson().scene.settings.gravity.g.y());
+
+        // A file that does not load: the dialog is shown (closed here) and the lesson goes on.
+        const double t = window.controller()->world().time();
+        QTimer::singleShot(0, [] {
+            if (QWidget* dialog = QApplication::activeModalWidget())
+                dialog->close();
+        });
+        QVERIFY(!window.openLesson(QStringLiteral("/nonexistent/lesson.json")));
+        QCOMPARE(window.lesson().source, gravitySource);
+        QVERIFY(window.controller()->world().time() >= t);
+        window.close(); // writes the settings
+    }
+    // The next start opens the last lesson.
+    MainWindow again;
+    QCOMPARE(again.lesson().source, gravitySource);
 }
 
 QTEST_MAIN(GuiTest)
