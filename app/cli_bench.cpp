@@ -1,1 +1,419 @@
-// placeholder until the benchmark lands
+// forcelab-cli bench: times collision detection alone and the whole world step
+// for each detector, and a peer scene comparable with other engines. Plain
+// C++ (no Qt): std::chrono and the simulation library only.
+//
+// Every figure is a median over several runs measured in this one process, so
+// ratios between rows are taken under the same conditions.
+
+#include "cli_commands.h"
+
+#include "sim/names.h"
+#include "sim/world.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <sstream>
+
+using namespace forcelab::sim;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty())
+        return std::nan("");
+    std::sort(v.begin(), v.end());
+    const std::size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+struct Options {
+    bool quick = false;
+    int runs = 7;
+    std::vector<int> sizes{1000, 4000, 10000, 100000};
+    std::vector<int> peerSizes{1000, 5000, 10000, 20000};
+    int peerSteps = 600;
+    int bruteLimit = 10000;
+    std::string csv;
+    bool main = true;
+    bool peers = true;
+    bool bandwidth = true;
+};
+
+std::optional<std::vector<int>> parseSizes(const std::string& text)
+{
+    std::vector<int> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        char* end = nullptr;
+        const long v = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != '\0' || v < 0 || v > 10000000)
+            return std::nullopt;
+        out.push_back(static_cast<int>(v));
+    }
+    if (out.empty())
+        return std::nullopt;
+    return out;
+}
+
+// N balls on a jittered grid filling `fill` of a square box, radii uniform in
+// [rMin, rMax], random velocities up to `speed`, gravity on, 2d-impulse with
+// restitution e for balls and walls, one sub-step of 1/60 s.
+Scene boxScene(int n, double rMin, double rMax, double speed, double e, Detection detection, std::uint64_t seed)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> radius(static_cast<std::size_t>(n));
+    double area = 0.0;
+    for (double& r : radius) {
+        r = rMin + (rMax - rMin) * u(rng);
+        area += std::numbers::pi * r * r;
+    }
+    const double side = std::sqrt(area / 0.3);
+    const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
+    const double cell = side / cols;
+    Scene s;
+    s.settings.box = BoxSettings{side, side};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, e};
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = Vec2(0.0, 980.0);
+    s.settings.collisions.detection = detection;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = e;
+    s.settings.time.integrator = IntegratorKind::SemiImplicitEuler;
+    s.settings.time.dt = 1.0 / 60.0;
+    s.settings.time.substeps = 1;
+    s.balls.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        Ball& b = s.balls[static_cast<std::size_t>(i)];
+        b.radius = radius[static_cast<std::size_t>(i)];
+        const double slack = std::max(0.0, 0.5 * cell - b.radius);
+        b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
+                          (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
+        const double angle = 2.0 * std::numbers::pi * u(rng);
+        b.velocity = speed * u(rng) * Vec2(std::cos(angle), std::sin(angle));
+    }
+    return s;
+}
+
+struct Row {
+    std::string table;
+    Detection detection;
+    int n = 0;
+    double detectMs = std::nan("");
+    double stepMs = std::nan("");
+    std::int64_t pairsTested = 0;
+    std::int64_t contacts = 0;
+};
+
+constexpr Detection kDetections[] = {Detection::Brute, Detection::Halved, Detection::Sweep, Detection::Grid};
+
+// Main table: detection alone and the whole step, per detector and size.
+std::vector<Row> runMainTable(const Options& o, std::ostream& out)
+{
+    std::vector<Row> rows;
+    out << "Box 30% full, radii 3-5 px, gravity 980 px/s^2, 2d-impulse e = 0.9, dt = 1/60 s, 1 sub-step.\n"
+        << "Each world first runs 60 steps (1 s) so the balls are falling and piling up.\n"
+        << "detect: CollisionSystem::detect on that state; step: World::step (forces, integration, walls,\n"
+        << "detection, response). Median of " << o.runs << " runs. brute and halved only up to N = " << o.bruteLimit
+        << " (at 100,000 one brute call is 10^10 tests, about 10 s).\n\n";
+    out << std::left << std::setw(8) << "detector" << std::right << std::setw(9) << "N" << std::setw(13)
+        << "detect ms" << std::setw(12) << "step ms" << std::setw(14) << "pairs tested" << std::setw(10)
+        << "contacts" << "\n";
+    for (int n : o.sizes) {
+        World warm(boxScene(n, 3.0, 5.0, 100.0, 0.9, Detection::Grid, 7));
+        for (int k = 0; k < 60; ++k)
+            warm.step();
+        std::optional<BallState> reference;
+        for (Detection d : kDetections) {
+            Row row{"main", d, n};
+            if ((d == Detection::Brute || d == Detection::Halved) && n > o.bruteLimit) {
+                rows.push_back(row);
+                continue;
+            }
+            // Detection alone, on the warm state (the sweep keeps its order between calls).
+            CollisionSystem sys;
+            std::vector<Contact> pairs;
+            std::vector<double> times;
+            const int runs = o.runs;
+            for (int k = 0; k < runs + 1; ++k) {
+                const auto t0 = Clock::now();
+                const CollisionStats st = sys.detect(warm.balls(), d, pairs);
+                const double ms = millisecondsSince(t0);
+                if (k > 0) // the first call sorts from scratch and allocates
+                    times.push_back(ms);
+                row.pairsTested = st.pairsTested;
+                row.contacts = st.contacts;
+            }
+            row.detectMs = median(times);
+            // Whole steps, from a copy of the warm world.
+            World w = warm;
+            WorldSettings ws = w.settings();
+            ws.collisions.detection = d;
+            w.setSettings(ws);
+            times.clear();
+            for (int k = 0; k < runs + 1; ++k) {
+                w.step();
+                if (k > 0)
+                    times.push_back(w.lastStep().seconds * 1e3);
+            }
+            row.stepMs = median(times);
+            // Every detector finds the same pairs, so the runs (same number of
+            // steps from the same state) are identical to the bit.
+            if (!reference)
+                reference = w.balls();
+            else if (reference->position != w.balls().position)
+                out << "  warning: " << toString(d) << " gave a different state\n";
+            rows.push_back(row);
+            out << std::left << std::setw(8) << toString(d) << std::right << std::setw(9) << n << std::fixed
+                << std::setprecision(3) << std::setw(13) << row.detectMs << std::setw(12) << row.stepMs
+                << std::setw(14) << row.pairsTested << std::setw(10) << row.contacts << "\n"
+                << std::flush;
+        }
+    }
+    return rows;
+}
+
+double findMs(const std::vector<Row>& rows, const std::string& table, Detection d, int n, bool step)
+{
+    for (const Row& r : rows)
+        if (r.table == table && r.detection == d && r.n == n)
+            return step ? r.stepMs : r.detectMs;
+    return std::nan("");
+}
+
+void printTargets(const std::vector<Row>& rows, const Options& o, std::ostream& out)
+{
+    const int small = o.sizes.front(), large = o.sizes.back();
+    out << "\nTargets (one core):\n" << std::fixed << std::setprecision(1);
+    for (Detection d : {Detection::Sweep, Detection::Grid}) {
+        const double det = findMs(rows, "main", d, large, false) / findMs(rows, "main", d, small, false);
+        const double stp = findMs(rows, "main", d, large, true) / findMs(rows, "main", d, small, true);
+        out << "  " << toString(d) << ": t(" << large << ")/t(" << small << ") = " << det << " detect, " << stp
+            << " step (N ratio " << large / std::max(1, small) << ", target <= 150)\n";
+    }
+    if (std::find(o.sizes.begin(), o.sizes.end(), 4000) != o.sizes.end()) {
+        out << "  sweep vs brute at 4000: " << findMs(rows, "main", Detection::Brute, 4000, false) /
+                                                  findMs(rows, "main", Detection::Sweep, 4000, false)
+            << "x detect, "
+            << findMs(rows, "main", Detection::Brute, 4000, true) / findMs(rows, "main", Detection::Sweep, 4000, true)
+            << "x step (target >= 10x)\n";
+    }
+    if (std::find(o.sizes.begin(), o.sizes.end(), 100000) != o.sizes.end()) {
+        out << std::setprecision(2) << "  whole step at 100000: grid " << findMs(rows, "main", Detection::Grid, 100000, true)
+            << " ms, sweep " << findMs(rows, "main", Detection::Sweep, 100000, true) << " ms (target <= 10 ms)\n";
+    }
+}
+
+// The peer scene of the issue: equal circles (r = 5 px) filling 30% of a
+// square box on a jittered grid, gravity, restitution 0.9, 600 steps at 60 Hz.
+std::vector<Row> runPeerTable(const Options& o, std::ostream& out)
+{
+    std::vector<Row> rows;
+    out << "\nPeer scene: N equal circles (r = 5 px) filling 30% of a square box on a jittered grid, at rest,\n"
+        << "gravity 980 px/s^2, restitution 0.9 (balls and walls), " << o.peerSteps
+        << " steps at 60 Hz, 1 sub-step, one thread.\n"
+        << "Mean ms per step over the whole run (Box2D v3.2 and matter.js 0.20 from the issue, same machine).\n\n";
+    out << std::left << std::setw(8) << "N" << std::right << std::setw(12) << "grid" << std::setw(12) << "sweep"
+        << std::setw(12) << "Box2D v3.2" << std::setw(12) << "matter.js" << "\n";
+    const std::pair<int, std::pair<double, double>> peers[] = {
+        {1000, {0.52, 10.0}}, {5000, {3.1, 100.0}}, {10000, {7.4, std::nan("")}}, {20000, {20.7, std::nan("")}}};
+    for (int n : o.peerSizes) {
+        double ms[2] = {0, 0};
+        int k = 0;
+        for (Detection d : {Detection::Grid, Detection::Sweep}) {
+            World w(boxScene(n, 5.0, 5.0, 0.0, 0.9, d, 3));
+            const auto t0 = Clock::now();
+            std::int64_t contacts = 0;
+            for (int s = 0; s < o.peerSteps; ++s) {
+                w.step();
+                contacts += w.lastStep().contacts;
+            }
+            ms[k] = millisecondsSince(t0) / o.peerSteps;
+            Row row{"peer", d, n};
+            row.stepMs = ms[k];
+            row.contacts = contacts;
+            row.pairsTested = w.totals().pairsTested;
+            rows.push_back(row);
+            ++k;
+        }
+        auto fmt = [](double v) {
+            std::ostringstream ss;
+            if (std::isnan(v))
+                ss << "-";
+            else
+                ss << std::fixed << std::setprecision(v < 10 ? 2 : 1) << v;
+            return ss.str();
+        };
+        double b2d = std::nan(""), mjs = std::nan("");
+        for (const auto& p : peers)
+            if (p.first == n) {
+                b2d = p.second.first;
+                mjs = p.second.second;
+            }
+        out << std::left << std::setw(8) << n << std::right << std::setw(12) << fmt(ms[0]) << std::setw(12)
+            << fmt(ms[1]) << std::setw(12) << fmt(b2d) << std::setw(12) << fmt(mjs) << "\n"
+            << std::flush;
+    }
+    return rows;
+}
+
+// A streaming copy between two buffers of `bytes`: the rate at which one core
+// can read and write memory of that size (bytes read + bytes written per second).
+double copyGigabytesPerSecond(std::size_t bytes, int runs)
+{
+    std::vector<double> a(bytes / sizeof(double), 1.0), b(bytes / sizeof(double), 0.0);
+    std::vector<double> times;
+    for (int k = 0; k < runs; ++k) {
+        const auto t0 = Clock::now();
+        std::memcpy(b.data(), a.data(), a.size() * sizeof(double));
+        times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+        a[static_cast<std::size_t>(k) % a.size()] += b[(static_cast<std::size_t>(k) * 7) % b.size()];
+    }
+    return 2.0 * static_cast<double>(bytes) / median(times) / 1e9;
+}
+
+void runBandwidth(const std::vector<Row>& rows, const Options& o, std::ostream& out)
+{
+    const double big = copyGigabytesPerSecond(std::size_t(256) << 20, 5);
+    const double mid = copyGigabytesPerSecond(std::size_t(8) << 20, 21);
+    out << "\nMemory: streaming copy, one core: " << std::fixed << std::setprecision(1) << big
+        << " GB/s (256 MB buffers, main memory), " << mid << " GB/s (8 MB buffers, cache)\n";
+    const int n = o.sizes.back();
+    // The least a step must move: read and write position and velocity (32 B
+    // each way), read radius and inverse mass (16 B): 80 B per ball.
+    const double minimum = 80.0 * n;
+    for (Detection d : {Detection::Grid, Detection::Sweep}) {
+        const double ms = findMs(rows, "main", d, n, true);
+        if (std::isnan(ms))
+            continue;
+        out << "  " << toString(d) << " step at N = " << n << ": " << std::setprecision(2) << ms
+            << " ms; the 80 B/ball minimum at " << std::setprecision(1) << big << " GB/s takes "
+            << std::setprecision(3) << minimum / (big * 1e9) * 1e3 << " ms (" << std::setprecision(0)
+            << ms / (minimum / (big * 1e9) * 1e3) << "x); effective traffic at full bandwidth would be "
+            << ms * 1e-3 * big * 1e9 / n << " B/ball\n";
+    }
+}
+
+void writeCsv(const std::vector<Row>& rows, std::ostream& csv)
+{
+    csv << "table,detector,n,detect_ms,step_ms,pairs_tested,contacts\n";
+    for (const Row& r : rows) {
+        csv << r.table << "," << toString(r.detection) << "," << r.n << ",";
+        if (!std::isnan(r.detectMs))
+            csv << r.detectMs;
+        csv << ",";
+        if (!std::isnan(r.stepMs))
+            csv << r.stepMs;
+        csv << "," << r.pairsTested << "," << r.contacts << "\n";
+    }
+}
+
+} // namespace
+
+int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    Options o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&](const char* name) -> std::optional<std::string> {
+            if (i + 1 >= args.size()) {
+                err << "forcelab-cli bench: " << name << " needs a value\n";
+                return std::nullopt;
+            }
+            return args[++i];
+        };
+        if (a == "--quick") {
+            o.quick = true;
+            o.runs = 3;
+            o.sizes = {1000, 4000, 10000};
+            o.peerSizes = {1000, 5000};
+            o.peerSteps = 120;
+        } else if (a == "--csv") {
+            const auto v = value("--csv");
+            if (!v)
+                return 2;
+            o.csv = *v;
+        } else if (a == "--runs") {
+            const auto v = value("--runs");
+            if (!v)
+                return 2;
+            const auto n = parseSizes(*v);
+            if (!n || n->size() != 1 || (*n)[0] < 1) {
+                err << "forcelab-cli bench: --runs: expected a positive integer, got '" << *v << "'\n";
+                return 2;
+            }
+            o.runs = (*n)[0];
+        } else if (a == "--sizes" || a == "--peer-sizes") {
+            const auto v = value(a.c_str());
+            if (!v)
+                return 2;
+            const auto n = parseSizes(*v);
+            if (!n) {
+                err << "forcelab-cli bench: " << a << ": expected a list like 1000,4000, got '" << *v << "'\n";
+                return 2;
+            }
+            (a == "--sizes" ? o.sizes : o.peerSizes) = *n;
+        } else if (a == "--brute-limit") {
+            const auto v = value("--brute-limit");
+            if (!v)
+                return 2;
+            const auto n = parseSizes(*v);
+            if (!n || n->size() != 1) {
+                err << "forcelab-cli bench: --brute-limit: expected an integer, got '" << *v << "'\n";
+                return 2;
+            }
+            o.bruteLimit = (*n)[0];
+        } else if (a == "--no-peers") {
+            o.peers = false;
+        } else if (a == "--peers-only") {
+            o.main = false;
+            o.bandwidth = false;
+        } else {
+            err << "forcelab-cli bench: unknown option '" << a
+                << "' (options: --quick, --csv FILE, --runs K, --sizes N,N,..., --peer-sizes N,N,..., --brute-limit N, --no-peers, "
+                   "--peers-only)\n";
+            return 2;
+        }
+    }
+    std::unique_ptr<std::ofstream> csv;
+    if (!o.csv.empty()) {
+        csv = std::make_unique<std::ofstream>(o.csv);
+        if (!*csv) {
+            err << "forcelab-cli bench: --csv: cannot write '" << o.csv << "'\n";
+            return 2;
+        }
+    }
+    std::vector<Row> rows;
+    if (o.main) {
+        rows = runMainTable(o, out);
+        printTargets(rows, o, out);
+    }
+    if (o.bandwidth)
+        runBandwidth(rows, o, out);
+    if (o.peers) {
+        const auto peer = runPeerTable(o, out);
+        rows.insert(rows.end(), peer.begin(), peer.end());
+    }
+    if (csv) {
+        writeCsv(rows, *csv);
+        out << "\nCSV written to " << o.csv << "\n";
+    }
+    return 0;
+}

@@ -12,7 +12,7 @@ void bruteForcePairs(int n, const Test& test, std::vector<Contact>& out, Collisi
             if (j == i)
                 continue;
             // (i, j) and (j, i) give the same answer; the pair is kept once.
-            if (test(i, j) && i < j)
+            if (test(static_cast<std::size_t>(i), static_cast<std::size_t>(j)) && i < j)
                 out.push_back({i, j});
         }
     }

@@ -8,8 +8,82 @@
 #include "time_of_impact.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace forcelab::sim {
+namespace {
+
+// Whether a ball of radius r at p is inside every enabled wall (the common
+// case, where positional correction needs no wall handling).
+struct WallCheck {
+    bool on[2][2];
+    double size[2];
+    bool inside(double px, double py, double r) const
+    {
+        return (!on[0][0] || px >= r) && (!on[0][1] || px <= size[0] - r) && (!on[1][0] || py >= r) &&
+               (!on[1][1] || py <= size[1] - r);
+    }
+};
+
+// The pass over all contacts for one response model (a template, so the
+// model's few lines are inlined into the loop). Same maths as the general
+// path in resolve(): normal from the detection-time positions, response,
+// then positional correction on the current positions.
+template <Response Model>
+void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detected, BallState& balls, double e,
+                     const BoxSettings& box, const WallSettings& walls)
+{
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    const double* p = detected.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
+    for (const Contact& c : contacts) {
+        const std::size_t a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
+        const double ra = radius[a], rb = radius[b], s = ra + rb;
+        const double wa = inverseMass[a], wb = inverseMass[b];
+        const Vec2 d(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
+        const double len = d.norm();
+        const Vec2 n = (len > 1e-12 * s && std::isfinite(len)) ? Vec2(d / len) : lineOfImpact(d, s, c.a, c.b);
+        Vec2 va(v[2 * a], v[2 * a + 1]), vb(v[2 * b], v[2 * b + 1]);
+        bool changed = false;
+        if constexpr (Model == Response::Reverse1D)
+            changed = reverse1D(d, va, vb);
+        else if constexpr (Model == Response::Elastic1D)
+            changed = elastic1D(e, d, wa, wb, va, vb);
+        else if constexpr (Model == Response::Axis2D)
+            changed = axis2D(e, d, wa, wb, va, vb);
+        else
+            changed = impulse2D(e, n, wa, wb, va, vb);
+        if (changed) {
+            v[2 * a] = va.x();
+            v[2 * a + 1] = va.y();
+            v[2 * b] = vb.x();
+            v[2 * b + 1] = vb.y();
+        }
+        Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
+        const double depth = s - (pb - pa).norm();
+        if (!(depth > 0.0))
+            continue;
+        const double w = wa + wb;
+        const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
+        const double moveA = depth * shareA;
+        const Vec2 qa = pa - moveA * n, qb = pb + (depth - moveA) * n;
+        if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
+            pa = qa;
+            pb = qb;
+        } else {
+            separate(pa, pb, ra, rb, n, wa, wb, box, walls); // stops at the walls
+        }
+        x[2 * a] = pa.x();
+        x[2 * a + 1] = pa.y();
+        x[2 * b] = pb.x();
+        x[2 * b + 1] = pb.y();
+    }
+}
+
+} // namespace
 
 void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats)
 {
@@ -33,9 +107,10 @@ void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Con
         m_sorter.sort(out, n);
     };
     if (swept) {
-        run(SweptTest{m_input.x0.data(), m_input.y0.data(), m_input.x.data(), m_input.y.data(), m_input.r.data()});
+        run(SweptTest{BallArrays{m_input.x.data(), m_input.y.data(), m_input.r.data(), m_input.x0.data(),
+                                 m_input.y0.data()}});
     } else {
-        run(OverlapTest{m_input.x.data(), m_input.y.data(), m_input.r.data()});
+        run(OverlapTest{BallArrays{m_input.x.data(), m_input.y.data(), m_input.r.data()}});
     }
     stats.contacts += static_cast<std::int64_t>(out.size());
 }
@@ -95,10 +170,25 @@ void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const Col
     // depend on the order, and balls stacked on one point get the spread-out
     // fallback directions of lineOfImpact for every pair.
     m_detected = balls.position;
-    if (start)
-        m_impact.assign(static_cast<std::size_t>(balls.size()), 0);
     const double e = settings.restitution;
     const Response model = settings.response;
+    if (!start) {
+        switch (model) {
+        case Response::None:
+        case Response::Flag:
+            return;
+        case Response::Reverse1D:
+            return resolveContacts<Response::Reverse1D>(m_contacts, m_detected, balls, e, box, walls);
+        case Response::Elastic1D:
+            return resolveContacts<Response::Elastic1D>(m_contacts, m_detected, balls, e, box, walls);
+        case Response::Axis2D:
+            return resolveContacts<Response::Axis2D>(m_contacts, m_detected, balls, e, box, walls);
+        case Response::Impulse2D:
+            return resolveContacts<Response::Impulse2D>(m_contacts, m_detected, balls, e, box, walls);
+        }
+        return;
+    }
+    m_impact.assign(static_cast<std::size_t>(balls.size()), 0);
     auto& x = balls.position;
     auto& v = balls.velocity;
 

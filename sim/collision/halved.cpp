@@ -9,7 +9,7 @@ void halvedPairs(int n, const Test& test, std::vector<Contact>& out, CollisionSt
 {
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j)
-            if (test(i, j))
+            if (test(static_cast<std::size_t>(i), static_cast<std::size_t>(j)))
                 out.push_back({i, j});
     stats.pairsTested += static_cast<std::int64_t>(n) * (n > 0 ? n - 1 : 0) / 2;
 }

@@ -10,6 +10,8 @@
 
 #include "time_of_impact.h"
 
+#include <cstddef>
+
 namespace forcelab::sim {
 
 inline bool circlesOverlap(double xa, double ya, double ra, double xb, double yb, double rb)
@@ -20,32 +22,43 @@ inline bool circlesOverlap(double xa, double ya, double ra, double xb, double yb
     return dx * dx + dy * dy < s * s;
 }
 
-/// Static test on the balls' current positions (structure of arrays). A ball
-/// that must not take part has x = NaN, which makes every comparison false.
+/// The balls as arrays, in whatever order a broad phase keeps them (by ball
+/// index, sorted by x, or copied per grid cell). x0, y0: start of the step,
+/// used by the continuous test only. A ball that must not take part has
+/// x = NaN, which makes every comparison false.
+struct BallArrays {
+    const double* x = nullptr;
+    const double* y = nullptr;
+    const double* r = nullptr;
+    const double* x0 = nullptr;
+    const double* y0 = nullptr;
+};
+
+/// Static test on the balls' current positions.
 struct OverlapTest {
-    const double* x;
-    const double* y;
-    const double* r;
-    bool operator()(int a, int b) const { return circlesOverlap(x[a], y[a], r[a], x[b], y[b], r[b]); }
+    static constexpr bool kSwept = false;
+    BallArrays ball;
+    bool operator()(std::size_t a, std::size_t b) const
+    {
+        return circlesOverlap(ball.x[a], ball.y[a], ball.r[a], ball.x[b], ball.y[b], ball.r[b]);
+    }
 };
 
 /// Continuous test: the balls touch at the end of the step, or their straight
 /// paths from (x0, y0) to (x, y) bring them into contact during it.
 struct SweptTest {
-    const double* x0;
-    const double* y0;
-    const double* x;
-    const double* y;
-    const double* r;
-    bool operator()(int a, int b) const
+    static constexpr bool kSwept = true;
+    BallArrays ball;
+    bool operator()(std::size_t a, std::size_t b) const
     {
-        if (circlesOverlap(x[a], y[a], r[a], x[b], y[b], r[b]))
+        const BallArrays& p = ball;
+        if (circlesOverlap(p.x[a], p.y[a], p.r[a], p.x[b], p.y[b], p.r[b]))
             return true;
-        const double d0x = x0[b] - x0[a];
-        const double d0y = y0[b] - y0[a];
-        const double ddx = (x[b] - x0[b]) - (x[a] - x0[a]);
-        const double ddy = (y[b] - y0[b]) - (y[a] - y0[a]);
-        return timeOfImpact(d0x, d0y, ddx, ddy, r[a] + r[b]) >= 0.0;
+        const double d0x = p.x0[b] - p.x0[a];
+        const double d0y = p.y0[b] - p.y0[a];
+        const double ddx = (p.x[b] - p.x0[b]) - (p.x[a] - p.x0[a]);
+        const double ddy = (p.y[b] - p.y0[b]) - (p.y[a] - p.y0[a]);
+        return timeOfImpact(d0x, d0y, ddx, ddy, p.r[a] + p.r[b]) >= 0.0;
     }
 };
 

@@ -16,19 +16,25 @@ Vec2 lineOfImpact(const Vec2& d, double s, int a, int b)
     return {std::cos(angle), std::sin(angle)};
 }
 
-void keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls)
+bool keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls)
 {
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
+    bool moved = false;
     for (int k = 0; k < 2; ++k) {
         double lo = r, hi = size[k] - r;
         if (lo > hi) // wider than the box: it can only sit in the middle
             lo = hi = 0.5 * size[k];
-        if (on[k][0] && before[k] >= lo && after[k] < lo)
+        if (on[k][0] && before[k] >= lo && after[k] < lo) {
             after[k] = lo;
-        if (on[k][1] && before[k] <= hi && after[k] > hi)
+            moved = true;
+        }
+        if (on[k][1] && before[k] <= hi && after[k] > hi) {
             after[k] = hi;
+            moved = true;
+        }
     }
+    return moved;
 }
 
 double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, const BoxSettings& box,
@@ -39,19 +45,23 @@ double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double 
         return 0.0;
     const double w = wa + wb;
     const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
-    // Move a by its share, b by what is left, and a again by whatever b could
-    // not take because of a wall. Each move stops at a wall the ball was inside.
-    auto push = [&](Vec2& p, double amount, double r, double sign) {
-        const Vec2 before = p;
-        p += (sign * amount) * n;
-        keepInsideWalls(before, p, r, box, walls);
-        return sign * (p - before).dot(n); // how far it actually went along ±n
-    };
-    const double movedA = push(pa, depth * shareA, ra, -1.0);
-    const double movedB = push(pb, depth - movedA, rb, 1.0);
-    const double missing = depth - movedA - movedB;
-    if (missing > 0.0)
-        push(pa, missing, ra, -1.0);
+    // Move a by its share and b by the rest. A ball stops at a wall it was
+    // inside; then its partner takes what it could not, and if b is the one
+    // stopped, a takes the rest.
+    const double moveA = depth * shareA;
+    Vec2 qa = pa - moveA * n;
+    const double movedA = keepInsideWalls(pa, qa, ra, box, walls) ? (pa - qa).dot(n) : moveA;
+    Vec2 qb = pb + (depth - movedA) * n;
+    if (keepInsideWalls(pb, qb, rb, box, walls)) {
+        const double missing = depth - movedA - (qb - pb).dot(n);
+        if (missing > 0.0) {
+            Vec2 qa2 = qa - missing * n;
+            keepInsideWalls(qa, qa2, ra, box, walls);
+            qa = qa2;
+        }
+    }
+    pa = qa;
+    pb = qb;
     return depth;
 }
 

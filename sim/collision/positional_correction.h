@@ -26,7 +26,7 @@ double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double 
                 const WallSettings& walls);
 
 /// A ball whose centre was inside the walls at `before` and is outside them at
-/// `after` is put back on the wall (position only).
-void keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls);
+/// `after` is put back on the wall (position only). Returns whether it was.
+bool keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls);
 
 } // namespace forcelab::sim

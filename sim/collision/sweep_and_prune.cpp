@@ -136,7 +136,7 @@ void SweepAndPrune::sortByRows()
 }
 
 template <class Test>
-void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out,
+void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
                               CollisionStats& stats)
 {
     refreshKeys(in);
@@ -152,6 +152,13 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::
     m_hiY.resize(n);
     m_index.resize(n);
     m_row.resize(n);
+    m_x.resize(n);
+    m_y.resize(n);
+    m_r.resize(n);
+    if constexpr (Test::kSwept) {
+        m_x0.resize(n);
+        m_y0.resize(n);
+    }
     for (std::size_t k = 0; k < n; ++k) {
         const auto i = static_cast<std::size_t>(m_keys[k].index);
         m_lo[k] = m_keys[k].lo;
@@ -160,7 +167,17 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::
         m_hi[k] = in.hiX[i];
         m_loY[k] = in.loY[i];
         m_hiY[k] = in.hiY[i];
+        m_x[k] = in.x[i];
+        m_y[k] = in.y[i];
+        m_r[k] = in.r[i];
+        if constexpr (Test::kSwept) {
+            m_x0[k] = in.x0[i];
+            m_y0[k] = in.y0[i];
+        }
     }
+    // The narrow phase on the sorted copies (it is symmetric, so the order of
+    // the two balls in a call does not matter).
+    const Test sorted{BallArrays{m_x.data(), m_y.data(), m_r.data(), m_x0.data(), m_y0.data()}};
 
     std::int64_t tested = 0;
     // Sorted positions p, q overlap in x; check y, then the narrow phase.
@@ -168,10 +185,8 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::
         if (m_loY[q] > m_hiY[p] || m_loY[p] > m_hiY[q])
             return;
         ++tested;
-        const int a = std::min(m_index[p], m_index[q]);
-        const int b = std::max(m_index[p], m_index[q]);
-        if (test(a, b))
-            out.push_back({a, b});
+        if (sorted(p, q))
+            out.push_back({std::min(m_index[p], m_index[q]), std::max(m_index[p], m_index[q])});
     };
 
     std::size_t begin = 0;

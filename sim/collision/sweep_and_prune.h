@@ -54,6 +54,7 @@ private:
     std::vector<int> m_rowCount;
     // The sorted balls, structure of arrays, for the sweep itself.
     std::vector<double> m_lo, m_hi, m_loY, m_hiY;
+    std::vector<double> m_x, m_y, m_r, m_x0, m_y0;
     std::vector<int> m_index;
     std::vector<std::int32_t> m_row;
     double m_rowHeight = 0.0;

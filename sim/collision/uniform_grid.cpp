@@ -58,7 +58,7 @@ bool UniformGrid::placeBalls(const BroadPhaseInput& in, double cell, double minX
 }
 
 template <class Test>
-void UniformGrid::findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out,
+void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
                             CollisionStats& stats)
 {
     m_entries = 0;
@@ -108,17 +108,35 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test& test, std::ve
         c = sum;
         sum += count;
     }
-    m_entryBall.resize(static_cast<std::size_t>(m_entries));
+    const auto entries = static_cast<std::size_t>(m_entries);
+    m_entryBall.resize(entries);
+    m_entryFirst.resize(entries);
+    m_ex.resize(entries);
+    m_ey.resize(entries);
+    m_er.resize(entries);
+    if constexpr (Test::kSwept) {
+        m_ex0.resize(entries);
+        m_ey0.resize(entries);
+    }
     if (m_hashed) {
-        m_entryCx.resize(static_cast<std::size_t>(m_entries));
-        m_entryCy.resize(static_cast<std::size_t>(m_entries));
+        m_entryCx.resize(entries);
+        m_entryCy.resize(entries);
     }
     for (const int i : in.active) {
         const auto k = static_cast<std::size_t>(i);
+        const double x = in.x[k], y = in.y[k], r = in.r[k];
         for (std::int32_t cy = m_y0[k]; cy <= m_y1[k]; ++cy)
             for (std::int32_t cx = m_x0[k]; cx <= m_x1[k]; ++cx) {
                 const std::size_t e = m_slotEnd[slotOf(cx, cy)]++;
                 m_entryBall[e] = i;
+                m_entryFirst[e] = static_cast<unsigned char>((cx == m_x0[k] ? 1 : 0) | (cy == m_y0[k] ? 2 : 0));
+                m_ex[e] = x;
+                m_ey[e] = y;
+                m_er[e] = r;
+                if constexpr (Test::kSwept) {
+                    m_ex0[e] = in.x0[k];
+                    m_ey0[e] = in.y0[k];
+                }
                 if (m_hashed) {
                     m_entryCx[e] = cx;
                     m_entryCy[e] = cy;
@@ -126,36 +144,25 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test& test, std::ve
             }
     }
 
+    // Pairs in each cell. Both boxes cover the cell, so the overlap's lower
+    // corner is in this cell exactly when this is the first column of one of
+    // the two balls and the first row of one of them.
+    const Test local{BallArrays{m_ex.data(), m_ey.data(), m_er.data(), m_ex0.data(), m_ey0.data()}};
     std::int64_t tested = 0;
     std::size_t begin = 0;
     for (std::size_t s = 0; s < m_slotEnd.size(); ++s) {
         const std::size_t end = m_slotEnd[s];
-        if (end - begin >= 2) {
-            for (std::size_t p = begin; p < end; ++p) {
-                const auto a = static_cast<std::size_t>(m_entryBall[p]);
-                std::int32_t cx, cy;
-                if (m_hashed) {
-                    cx = m_entryCx[p];
-                    cy = m_entryCy[p];
-                } else {
-                    cx = static_cast<std::int32_t>(static_cast<std::int64_t>(s) % m_nx);
-                    cy = static_cast<std::int32_t>(static_cast<std::int64_t>(s) / m_nx);
-                }
-                for (std::size_t q = p + 1; q < end; ++q) {
-                    if (m_hashed && (m_entryCx[q] != cx || m_entryCy[q] != cy))
-                        continue; // another cell in the same hash slot
-                    const auto b = static_cast<std::size_t>(m_entryBall[q]);
-                    // Keep the pair only in the cell of the overlap's lower corner.
-                    if (std::max(m_x0[a], m_x0[b]) != cx || std::max(m_y0[a], m_y0[b]) != cy)
-                        continue;
-                    if (in.loX[b] > in.hiX[a] || in.loX[a] > in.hiX[b] || in.loY[b] > in.hiY[a] ||
-                        in.loY[a] > in.hiY[b])
-                        continue;
-                    ++tested;
-                    const int lo = static_cast<int>(std::min(a, b));
-                    const int hi = static_cast<int>(std::max(a, b));
-                    if (test(lo, hi))
-                        out.push_back({lo, hi});
+        for (std::size_t p = begin; p + 1 < end; ++p) {
+            const unsigned firstP = m_entryFirst[p];
+            for (std::size_t q = p + 1; q < end; ++q) {
+                if (((firstP | m_entryFirst[q]) & 3u) != 3u)
+                    continue;
+                if (m_hashed && (m_entryCx[q] != m_entryCx[p] || m_entryCy[q] != m_entryCy[p]))
+                    continue; // another cell in the same hash slot
+                ++tested;
+                if (local(p, q)) {
+                    const int a = m_entryBall[p], b = m_entryBall[q];
+                    out.push_back({std::min(a, b), std::max(a, b)});
                 }
             }
         }

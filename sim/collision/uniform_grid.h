@@ -4,8 +4,9 @@
 // for a ball the size of a cell, many for a ball a hundred times larger), and
 // only balls that share a cell reach the narrow phase. Two balls share several
 // cells when their boxes overlap over a cell border, so a pair is kept only in
-// the cell that holds the lower-left corner of the overlap of their boxes:
-// each pair is tested once.
+// the cell that holds the lower-left corner of the overlap of their boxes
+// (the cell that is the first column of one of them and the first row of one
+// of them): each pair is tested once.
 //
 // The cells are counted from the smallest box corner of this step, so balls
 // outside the walls are simply more cells. When the balls are spread so far
@@ -48,7 +49,12 @@ private:
     std::vector<std::int32_t> m_x0, m_x1, m_y0, m_y1;
     // Counting sort of the entries by slot.
     std::vector<std::uint32_t> m_slotEnd;
+    // Per entry, in slot order: the ball, copies of what the narrow phase
+    // reads (so a cell's pairs read memory in order), and two bits: the cell
+    // is the ball's first column (1) / first row (2) of its range.
     std::vector<std::int32_t> m_entryBall;
+    std::vector<unsigned char> m_entryFirst;
+    std::vector<double> m_ex, m_ey, m_er, m_ex0, m_ey0;
     std::vector<std::int32_t> m_entryCx, m_entryCy; // hashed mode only
 };
 
