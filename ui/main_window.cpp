@@ -88,6 +88,13 @@ void MainWindow::createActions()
     m_quitAction->setShortcut(QKeySequence::Quit);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
+    m_presentationAction = new QAction(tr("&Presentation Mode"), this);
+    m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcut(QKeySequence::FullScreen);
+    m_presentationAction->setStatusTip(tr("Full screen with larger text and thicker lines, for a projector"));
+    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+
     m_aboutAction = new QAction(tr("&About ForceLab"), this);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
 }
@@ -104,8 +111,10 @@ void MainWindow::createMenus()
     simulation->addAction(m_stepAction);
     simulation->addAction(m_resetAction);
 
-    // Filled by createDocks and createToolBar with their toggle actions.
+    // Also filled by createDocks and createToolBar with their toggle actions.
     m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_aboutAction);
@@ -244,10 +253,7 @@ bool MainWindow::openLesson(const QString& pathOrId)
 {
     LoadResult result = LessonLoader::load(pathOrId);
     if (!result.ok()) {
-        QMessageBox box(QMessageBox::Warning, tr("Cannot open lesson"),
-                        tr("The lesson could not be opened; the running lesson goes on."), QMessageBox::Ok, this);
-        box.setInformativeText(result.errors.join(QLatin1Char('\n')));
-        box.exec();
+        showLoadErrors(result.errors);
         return false;
     }
     return setLesson(*result.lesson);
@@ -314,6 +320,14 @@ void MainWindow::showLessonText()
     m_lessonText->setHtml(html);
 }
 
+void MainWindow::showLoadErrors(const QStringList& errors)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Cannot open lesson"),
+                    tr("The lesson could not be opened; the running lesson goes on."), QMessageBox::Ok, this);
+    box.setInformativeText(errors.join(QLatin1Char('\n')));
+    box.exec();
+}
+
 void MainWindow::openLessonFile()
 {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open Lesson"), m_lastDirectory,
@@ -323,10 +337,7 @@ void MainWindow::openLessonFile()
     m_lastDirectory = QFileInfo(path).absolutePath();
     const LoadResult result = LessonLoader::loadFile(path);
     if (!result.ok()) {
-        QMessageBox box(QMessageBox::Warning, tr("Cannot open lesson"),
-                        tr("The lesson could not be opened; the running lesson goes on."), QMessageBox::Ok, this);
-        box.setInformativeText(result.errors.join(QLatin1Char('\n')));
-        box.exec();
+        showLoadErrors(result.errors);
         return;
     }
     setLesson(*result.lesson);
@@ -354,6 +365,23 @@ void MainWindow::updatePlayAction(bool playing)
     m_playAction->setText(playing ? tr("&Pause") : tr("&Play"));
     m_playAction->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     m_playAction->setStatusTip(playing ? tr("Pause the simulation") : tr("Run the simulation"));
+}
+
+void MainWindow::setPresentationMode(bool on)
+{
+    // Larger text everywhere and thicker lines on the canvas: readable from
+    // the back of a classroom.
+    if (on && !m_normalFont)
+        m_normalFont = font();
+    QFont f = m_normalFont.value_or(font());
+    if (on)
+        f.setPointSizeF(f.pointSizeF() * 1.4);
+    setFont(f);
+    m_canvas->setLineScale(on ? 1.6 : 1.0);
+    if (on)
+        showFullScreen();
+    else
+        showNormal();
 }
 
 void MainWindow::showError(const QString& message)

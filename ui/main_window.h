@@ -6,8 +6,11 @@
 #include "lessons/lesson.h"
 
 #include <QElapsedTimer>
+#include <QFont>
 #include <QMainWindow>
 #include <QString>
+
+#include <optional>
 
 class QAction;
 class QComboBox;
@@ -57,6 +60,7 @@ private slots:
     void updatePlayAction(bool playing);
     void showError(const QString& message);
     void showTimeDropped(double seconds);
+    void setPresentationMode(bool on);
     void about();
 
 private:
@@ -70,6 +74,8 @@ private:
     void openInitialLesson(const QString& requested);
     void fillLessonChooser();
     void showLessonText();
+    /// The loader's one-line errors in a dialog.
+    void showLoadErrors(const QStringList& errors);
 
     SimulationController* m_controller = nullptr;
     Canvas* m_canvas = nullptr;
@@ -81,6 +87,7 @@ private:
     QAction* m_resetAction = nullptr;
     QAction* m_openAction = nullptr;
     QAction* m_quitAction = nullptr;
+    QAction* m_presentationAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QMenu* m_viewMenu = nullptr;
     QToolBar* m_toolBar = nullptr;
@@ -99,6 +106,7 @@ private:
     QTimer* m_droppedTimer = nullptr;
     QElapsedTimer m_statusClock;
     qint64 m_lastFrames = 0;
+    std::optional<QFont> m_normalFont; // before presentation mode
     QString m_lastLesson;    // from the settings
     QString m_lastDirectory; // of Open lesson…
 };
