@@ -58,7 +58,9 @@ QImage BallSprites::render(double deviceRadius, sim::Rgb color, qreal devicePixe
 {
     // Odd-sized square with the disc centred on the middle pixel's centre,
     // so blitting at (centre - half size) puts the disc where the ball is.
-    const int side = 2 * static_cast<int>(std::ceil(deviceRadius + 1.0)) + 1;
+    // The pixel k columns from the middle spans [k - ½, k + ½], so it touches
+    // the disc only for k < r + ½: m = ceil(r + ½) columns each side suffice.
+    const int side = 2 * static_cast<int>(std::ceil(deviceRadius + 0.5)) + 1;
     QImage image(side, side, QImage::Format_ARGB32_Premultiplied);
     image.fill(Qt::transparent);
     QPainter p(&image);
