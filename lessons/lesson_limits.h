@@ -42,6 +42,7 @@ inline constexpr Range kTolerance{1e-15, 1.0, false, false, ""};
 inline constexpr Range kGravity{-1e7, 1e7, false, false, "px/s²"};
 inline constexpr Range kDragK{0.0, 1e6, false, false, "1/s (linear) or 1/px (quadratic)"};
 inline constexpr Range kWindStrength{0.0, 1e7, false, false, "px/s²"};
+inline constexpr Range kRandomAccel{0.0, 1e7, false, false, "px/s²"};
 inline constexpr Range kSmoothedStep{0.0, 1.0, true, false, ""};
 inline constexpr Range kFrequency{0.0, 1e3, true, false, "Hz"};
 inline constexpr Range kPosition{-1e7, 1e7, false, false, "px"};

@@ -199,7 +199,10 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
 
     // Checks across fields (e.g. the exact integrator with drag) live in the
     // simulation core, so the workbench and the loader agree on them.
-    if (const auto problem = sim::validateSettings(parsed.lesson.scene.settings)) {
+    std::optional<std::string> problem = sim::validateSettings(parsed.lesson.scene.settings);
+    if (!problem)
+        problem = sim::validateSpawn(parsed.lesson.scene.spawn);
+    if (problem) {
         const QString text = QString::fromStdString(*problem);
         const QString keyPath = text.section(QStringLiteral(": "), 0, 0);
         return failure({sourceFor(keyPath, source, overrides) + QStringLiteral(": ") + text});

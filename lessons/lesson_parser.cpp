@@ -374,7 +374,7 @@ private:
 void parseWorld(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
 {
     const QString path = QStringLiteral("world");
-    r.checkKeys(o, path, {"width", "height", "walls", "wall_model", "restitution"});
+    r.checkKeys(o, path, {"width", "height", "walls", "wall_model", "restitution", "middle_wall", "centre_only"});
     r.number(o, path, "width", range::kBoxSize, s.box.width);
     r.number(o, path, "height", range::kBoxSize, s.box.height);
     if (const auto walls = r.array(o, path, "walls", QStringLiteral("an array of wall names (left, right, top, bottom)"))) {
@@ -410,25 +410,28 @@ void parseWorld(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
     }
     r.enumeration(o, path, "wall_model", &sim::parseWallModel, sim::wallModelNames(), s.walls.model);
     r.number(o, path, "restitution", range::kUnit, s.walls.restitution);
+    r.boolean(o, path, "middle_wall", s.walls.middle);
+    r.boolean(o, path, "centre_only", s.walls.centreOnly);
 }
 
 void parseTime(Reader& r, const QJsonObject& o, sim::TimeSettings& t)
 {
     const QString path = QStringLiteral("time");
-    r.checkKeys(o, path, {"integrator", "dt", "substeps", "tolerance", "seed"});
+    r.checkKeys(o, path, {"integrator", "dt", "substeps", "tolerance", "seed", "per_frame"});
     r.enumeration(o, path, "integrator", &sim::parseIntegrator, sim::integratorNames(), t.integrator);
     r.number(o, path, "dt", range::kDt, t.dt);
     r.integer(o, path, "substeps", intrange::kSubstepsLo, intrange::kSubstepsHi, t.substeps);
     r.number(o, path, "tolerance", range::kTolerance, t.tolerance);
     r.seed(o, path, "seed", t.seed);
+    r.boolean(o, path, "per_frame", t.perFrame);
 }
 
 void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
 {
     const QString base = QStringLiteral("models");
     r.checkKeys(models, base,
-                {"gravity", "drag", "wind", "point", "spring", "mutual_gravity", "homing", "pointer", "speed_limit",
-                 "collisions"});
+                {"gravity", "drag", "wind", "random_accel", "point", "spring", "mutual_gravity", "homing", "pointer",
+                 "speed_limit", "collisions"});
 
     if (const auto o = r.object(models, base, "gravity")) {
         const QString p = join(base, "gravity");
@@ -446,13 +449,21 @@ void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
     }
     if (const auto o = r.object(models, base, "wind")) {
         const QString p = join(base, "wind");
-        r.checkKeys(*o, p, {"mode", "strength", "scale", "smoothed_step", "frequency"});
+        r.checkKeys(*o, p, {"mode", "strength", "scale", "smoothed_step", "frequency", "compare"});
         s.wind.mode = sim::WindMode::Random; // present without a mode: the simplest wind
         r.enumeration(*o, p, "mode", &sim::parseWindMode, sim::windModeNames(), s.wind.mode);
         r.number(*o, p, "strength", range::kWindStrength, s.wind.strength);
         r.enumeration(*o, p, "scale", &sim::parseForceScale, sim::forceScaleNames(), s.wind.scale);
         r.number(*o, p, "smoothed_step", range::kSmoothedStep, s.wind.smoothedStep);
         r.number(*o, p, "frequency", range::kFrequency, s.wind.noiseFrequency);
+        r.enumeration(*o, p, "compare", &sim::parseWindMode, sim::windModeNames(), s.wind.compare);
+    }
+    if (const auto o = r.object(models, base, "random_accel")) {
+        const QString p = join(base, "random_accel");
+        r.checkKeys(*o, p, {"enabled", "fixed", "strength"});
+        r.enabled(*o, p, s.randomAccel.enabled);
+        r.boolean(*o, p, "fixed", s.randomAccel.fixed);
+        r.number(*o, p, "strength", range::kRandomAccel, s.randomAccel.strength);
     }
     if (const auto o = r.object(models, base, "point")) {
         const QString p = join(base, "point");
@@ -547,7 +558,8 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
 void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings& s)
 {
     const QString path = QStringLiteral("spawn");
-    r.checkKeys(o, path, {"count", "radius", "speed", "seed", "palette"});
+    r.checkKeys(o, path,
+                {"count", "radius", "speed", "seed", "palette", "horizontal", "fully_inside", "per_step", "max_count"});
     if (r.integer(o, path, "count", 0, kMaxBalls, s.count) && listed + s.count > kMaxBalls) {
         r.fail(join(path, "count"), QStringLiteral("%1 spawned + %2 listed balls is more than the limit of %3")
                                         .arg(s.count)
@@ -557,6 +569,10 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
     r.interval(o, path, "radius", range::kRadius, s.minRadius, s.maxRadius);
     r.interval(o, path, "speed", range::kSpawnSpeed, s.minSpeed, s.maxSpeed);
     r.seed(o, path, "seed", s.seed);
+    r.boolean(o, path, "horizontal", s.horizontal);
+    r.boolean(o, path, "fully_inside", s.fullyInside);
+    r.number(o, path, "per_step", range::kUnit, s.perStep);
+    r.integer(o, path, "max_count", 0, kMaxBalls, s.maxCount);
     if (const auto a = r.array(o, path, "palette", QStringLiteral("an array of colours \"#rrggbb\""))) {
         const QString p = join(path, "palette");
         if (a->size() > kMaxPaletteColours) {
@@ -598,7 +614,8 @@ void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStr
 
 const QStringList& overlayNames()
 {
-    static const QStringList names{"grid", "velocity", "acceleration", "readout", "colliding", "markers"};
+    static const QStringList names{"grid",     "velocity", "acceleration", "readout", "colliding",
+                                   "markers",  "vanes",    "trails"};
     return names;
 }
 
@@ -606,7 +623,10 @@ const QStringList& controlNames()
 {
     static const QStringList names{"gravity", "drag",     "wind",      "point",       "spring",    "mutual_gravity",
                                    "homing",  "pointer",  "speed_limit", "collisions", "walls",     "wall_model",
-                                   "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn"};
+                                   "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn",
+                                   // the switches of the stages that break something on purpose
+                                   "middle_wall", "centre_only", "fully_inside", "per_frame", "random_accel",
+                                   "wind_compare"};
     return names;
 }
 

@@ -151,12 +151,17 @@ QByteArray modelsBlock(const sim::WorldSettings& s)
                       {"strength", num(w.strength)},
                       {"scale", str(sim::toString(w.scale))},
                       {"smoothed_step", num(w.smoothedStep)},
-                      {"frequency", num(w.noiseFrequency)}};
+                      {"frequency", num(w.noiseFrequency)},
+                      {"compare", str(sim::toString(w.compare))}};
     };
     // Wind has no "enabled": mode "off" switches it off, and is written when
     // the other values differ from the defaults.
     if (wind(s.wind) != wind(d.wind))
         m << "\"wind\": " + inlineObject(wind(s.wind));
+    auto randomAccel = [](const sim::RandomAccelSettings& r) {
+        return Fields{{"fixed", r.fixed ? "true" : "false"}, {"strength", num(r.strength)}};
+    };
+    addModel(m, "random_accel", s.randomAccel.enabled, randomAccel(s.randomAccel), randomAccel(d.randomAccel));
     auto point = [](const sim::PointForceSettings& p) {
         return Fields{{"kind", str(sim::toString(p.kind))},  {"x", num(p.position.x())},
                       {"y", num(p.position.y())},            {"strength", num(p.strength)},
@@ -235,7 +240,11 @@ QByteArray saveLesson(const Lesson& lesson)
     Fields spawnFields{{"count", num(spawn.count)},
                        {"radius", inlineArray({num(spawn.minRadius), num(spawn.maxRadius)})},
                        {"speed", inlineArray({num(spawn.minSpeed), num(spawn.maxSpeed)})},
-                       {"seed", seed(spawn.seed)}};
+                       {"seed", seed(spawn.seed)},
+                       {"horizontal", spawn.horizontal ? "true" : "false"},
+                       {"fully_inside", spawn.fullyInside ? "true" : "false"},
+                       {"per_step", num(spawn.perStep)},
+                       {"max_count", num(spawn.maxCount)}};
     if (!spawn.palette.empty()) {
         QList<QByteArray> colours;
         for (const sim::Rgb c : spawn.palette)
@@ -254,12 +263,15 @@ QByteArray saveLesson(const Lesson& lesson)
                                 {"height", num(s.box.height)},
                                 {"walls", inlineArray(walls)},
                                 {"wall_model", str(sim::toString(s.walls.model))},
-                                {"restitution", num(s.walls.restitution)}})},
+                                {"restitution", num(s.walls.restitution)},
+                                {"middle_wall", s.walls.middle ? "true" : "false"},
+                                {"centre_only", s.walls.centreOnly ? "true" : "false"}})},
         {"time", inlineObject({{"integrator", str(sim::toString(s.time.integrator))},
                                {"dt", num(s.time.dt)},
                                {"substeps", num(s.time.substeps)},
                                {"tolerance", num(s.time.tolerance)},
-                               {"seed", seed(s.time.seed)}})},
+                               {"seed", seed(s.time.seed)},
+                               {"per_frame", s.time.perFrame ? "true" : "false"}})},
         {"models", modelsBlock(s)},
         {"balls", blockArray(balls, 2)},
         {"spawn", inlineObject(spawnFields)},
