@@ -1,7 +1,7 @@
 #!/bin/sh
 # A screenshot of the workbench running a lesson, taken under a virtual X
 # server (xvfb-run) so it works on a machine without a display.
-#   tools/screenshot.sh [BUILD_DIR] [OUT.png] [LESSON] [SECONDS]
+#   .ci/screenshot.sh [BUILD_DIR] [OUT.png] [LESSON] [SECONDS]
 # Defaults: build, docs/screenshot.png, the first built-in lesson, 3 s.
 # The window starts from fresh settings (a temporary config directory), so
 # the picture does not depend on the last session's layout.
