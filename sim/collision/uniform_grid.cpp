@@ -109,15 +109,7 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
         sum += count;
     }
     const auto entries = static_cast<std::size_t>(m_entries);
-    m_entryBall.resize(entries);
-    m_entryFirst.resize(entries);
-    m_ex.resize(entries);
-    m_ey.resize(entries);
-    m_er.resize(entries);
-    if constexpr (Test::kSwept) {
-        m_ex0.resize(entries);
-        m_ey0.resize(entries);
-    }
+    m_entry.resize(entries);
     if (m_hashed) {
         m_entryCx.resize(entries);
         m_entryCy.resize(entries);
@@ -128,40 +120,59 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
         for (std::int32_t cy = m_y0[k]; cy <= m_y1[k]; ++cy)
             for (std::int32_t cx = m_x0[k]; cx <= m_x1[k]; ++cx) {
                 const std::size_t e = m_slotEnd[slotOf(cx, cy)]++;
-                m_entryBall[e] = i;
-                m_entryFirst[e] = static_cast<unsigned char>((cx == m_x0[k] ? 1 : 0) | (cy == m_y0[k] ? 2 : 0));
-                m_ex[e] = x;
-                m_ey[e] = y;
-                m_er[e] = r;
-                if constexpr (Test::kSwept) {
-                    m_ex0[e] = in.x0[k];
-                    m_ey0[e] = in.y0[k];
-                }
+                const auto first = static_cast<std::uint32_t>((cx == m_x0[k] ? 1 : 0) | (cy == m_y0[k] ? 2 : 0));
+                m_entry[e] = Entry{x, y, r, i, first};
                 if (m_hashed) {
                     m_entryCx[e] = cx;
                     m_entryCy[e] = cy;
                 }
             }
     }
+    // The continuous test reads start positions too: arrays in entry order.
+    Test local{};
+    if constexpr (Test::kSwept) {
+        m_ex.resize(entries);
+        m_ey.resize(entries);
+        m_er.resize(entries);
+        m_ex0.resize(entries);
+        m_ey0.resize(entries);
+        for (std::size_t e = 0; e < entries; ++e) {
+            const auto k = static_cast<std::size_t>(m_entry[e].ball);
+            m_ex[e] = m_entry[e].x;
+            m_ey[e] = m_entry[e].y;
+            m_er[e] = m_entry[e].r;
+            m_ex0[e] = in.x0[k];
+            m_ey0[e] = in.y0[k];
+        }
+        local = Test{BallArrays{m_ex.data(), m_ey.data(), m_er.data(), m_ex0.data(), m_ey0.data()}};
+    }
+    auto touching = [&](std::size_t p, std::size_t q) {
+        if constexpr (Test::kSwept) {
+            return local(p, q);
+        } else {
+            const Entry& a = m_entry[p];
+            const Entry& b = m_entry[q];
+            return circlesOverlap(a.x, a.y, a.r, b.x, b.y, b.r);
+        }
+    };
 
     // Pairs in each cell. Both boxes cover the cell, so the overlap's lower
     // corner is in this cell exactly when this is the first column of one of
     // the two balls and the first row of one of them.
-    const Test local{BallArrays{m_ex.data(), m_ey.data(), m_er.data(), m_ex0.data(), m_ey0.data()}};
     std::int64_t tested = 0;
     std::size_t begin = 0;
     for (std::size_t s = 0; s < m_slotEnd.size(); ++s) {
         const std::size_t end = m_slotEnd[s];
         for (std::size_t p = begin; p + 1 < end; ++p) {
-            const unsigned firstP = m_entryFirst[p];
+            const std::uint32_t firstP = m_entry[p].first;
             for (std::size_t q = p + 1; q < end; ++q) {
-                if (((firstP | m_entryFirst[q]) & 3u) != 3u)
+                if (((firstP | m_entry[q].first) & 3u) != 3u)
                     continue;
                 if (m_hashed && (m_entryCx[q] != m_entryCx[p] || m_entryCy[q] != m_entryCy[p]))
                     continue; // another cell in the same hash slot
                 ++tested;
-                if (local(p, q)) {
-                    const int a = m_entryBall[p], b = m_entryBall[q];
+                if (touching(p, q)) {
+                    const int a = m_entry[p].ball, b = m_entry[q].ball;
                     out.push_back({std::min(a, b), std::max(a, b)});
                 }
             }

@@ -40,7 +40,7 @@ public:
 private:
     bool placeBalls(const BroadPhaseInput& in, double cell, double minX, double minY);
 
-    double m_cellScale = 1.0;
+    double m_cellScale = 1.5;
     double m_cellSize = 0.0;
     bool m_hashed = false;
     std::int64_t m_entries = 0;
@@ -52,9 +52,15 @@ private:
     // Per entry, in slot order: the ball, copies of what the narrow phase
     // reads (so a cell's pairs read memory in order), and two bits: the cell
     // is the ball's first column (1) / first row (2) of its range.
-    std::vector<std::int32_t> m_entryBall;
-    std::vector<unsigned char> m_entryFirst;
-    std::vector<double> m_ex, m_ey, m_er, m_ex0, m_ey0;
+    // One record per entry, so that the scatter of the counting sort writes
+    // one cache line per entry, not one per array.
+    struct Entry {
+        double x, y, r;
+        std::int32_t ball;
+        std::uint32_t first;
+    };
+    std::vector<Entry> m_entry;
+    std::vector<double> m_ex0, m_ey0, m_ex, m_ey, m_er; // continuous mode only
     std::vector<std::int32_t> m_entryCx, m_entryCy; // hashed mode only
 };
 
