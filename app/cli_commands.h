@@ -1,7 +1,7 @@
 #pragma once
 // The subcommands of forcelab-cli. Each takes the arguments after its name,
 // writes results to `out` and one-line errors to `err`, and returns the exit
-// code (0 success, 2 bad input).
+// code (0 success, 2 bad input, 3 the simulation stopped because it blew up).
 
 #include <ostream>
 #include <string>
@@ -11,6 +11,10 @@ namespace forcelab::cli {
 
 /// forcelab-cli run LESSON [options]: runs a lesson headless.
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+/// forcelab-cli validate FILE...: checks lesson files, prints "FILE: ok" or
+/// every problem; 0 when all are valid, 2 otherwise.
+int validateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 } // namespace forcelab::cli
 

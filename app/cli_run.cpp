@@ -188,9 +188,15 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     }
 
     const auto started = std::chrono::steady_clock::now();
-    for (std::int64_t k = 0; k < steps; ++k)
+    for (std::int64_t k = 0; k < steps && !world.halted(); ++k)
         world.step();
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    // The world stopped itself: the motion blows up. Exit 3 with its reason.
+    if (world.halted()) {
+        err << lesson.source.toStdString() << ": stopped after " << world.stepCount() << " steps: " << *world.halted()
+            << "\n";
+        return 3;
+    }
 
     if (options->json) {
         out << QJsonDocument(report(lesson, world, wallMs)).toJson(QJsonDocument::Compact).toStdString() << "\n";

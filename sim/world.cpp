@@ -1,11 +1,13 @@
 #include "world.h"
 
 #include "names.h"
+#include "stability.h"
 #include "walls.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace forcelab::sim {
@@ -143,6 +145,7 @@ std::optional<std::string> World::reset(const Scene& scene)
     m_stepCount = 0;
     m_last = StepStats{};
     m_totals = StepStats{};
+    m_halted = stabilityProblem(m_settings);
     return std::nullopt;
 }
 
@@ -152,6 +155,7 @@ std::optional<std::string> World::setSettings(const WorldSettings& settings)
         return error;
     m_settings = settings;
     m_integrator.invalidate();
+    m_halted = stabilityProblem(m_settings);
     return std::nullopt;
 }
 
@@ -216,10 +220,30 @@ double World::compareWind() const
     return m_inputs.compareWind.at(m_settings.wind.compare, m_settings.wind, m_time);
 }
 
+// Beyond these the state is lost to rounding (px, px/s): far outside any scene
+// the workbench can show, far inside what a double holds.
+constexpr double kLostPosition = 1e12;
+constexpr double kLostSpeed = 1e12;
+
+bool World::blewUp() const
+{
+    if (m_balls.empty())
+        return false;
+    const double far = m_balls.position.cwiseAbs().maxCoeff();
+    const double fast = m_balls.velocity.cwiseAbs().maxCoeff();
+    return !(far < kLostPosition) || !(fast < kLostSpeed); // also true for NaN
+}
+
 void World::step()
 {
+    if (m_halted)
+        return;
     const auto started = std::chrono::steady_clock::now();
     m_last = StepStats{};
+    // Keep the state so a step that blows up can be taken back. A copy of two
+    // 2×N matrices: small next to the step itself.
+    m_savedPosition = m_balls.position;
+    m_savedVelocity = m_balls.velocity;
     drawStepRandomness();
     m_subTime = 0.0;
     const int substeps = m_settings.time.substeps;
@@ -228,6 +252,28 @@ void World::step()
     for (int k = 0; k < substeps; ++k)
         subStep(h);
     spawnOverTime();
+    if (blewUp()) {
+        // Undo the step and stop, with the likely cause and its fix.
+        m_balls.position = m_savedPosition;
+        m_balls.velocity = m_savedVelocity;
+        m_integrator.invalidate();
+        const WorldSettings& s = m_settings;
+        std::string cause;
+        if (s.mutualGravity.enabled && s.mutualGravity.softening == 0.0)
+            cause = "two bodies passed very close with mutual gravity and no softening: add softening or lower dt";
+        else if (s.point.enabled && s.point.kind == PointKind::Attract && s.point.maxAccel == 0.0)
+            cause = "a ball came very close to the attracting point: set max_accel (the clamp) or lower dt";
+        else if (s.drag.enabled && s.drag.law == DragLaw::Quadratic)
+            cause = "quadratic drag is too strong for this dt at these speeds: lower dt or k";
+        else
+            cause = "the forces are too strong for this time step: lower dt or pick rk45";
+        char when[32];
+        std::snprintf(when, sizeof when, "%.4g", m_time);
+        m_halted = std::string("the simulation blew up at t = ") + when +
+                   " s (a ball was about to leave every sensible range), so it stopped one step before. " +
+                   "Likely cause: " + cause;
+        return;
+    }
     ++m_stepCount;
     m_time += m_settings.time.dt;
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -54,8 +54,13 @@ public:
     void setPointer(const PointerInput& pointer);
     const PointerInput& pointer() const { return m_inputs.pointer; }
 
-    /// Advances the world by settings().time.dt.
+    /// Advances the world by settings().time.dt, unless it is halted.
     void step();
+
+    /// Set when the world has stopped itself because the motion blows up: why,
+    /// in plain words, with the fix. step() does nothing while it is set. New
+    /// settings (setSettings) or a reset clear it if the cause is gone.
+    const std::optional<std::string>& halted() const { return m_halted; }
 
     double time() const { return m_time; }
     std::int64_t stepCount() const { return m_stepCount; }
@@ -78,6 +83,7 @@ private:
     void subStep(double h);
     void drawStepRandomness();
     void spawnOverTime();
+    bool blewUp() const;
 
     WorldSettings m_settings;
     BallState m_balls;
@@ -92,6 +98,9 @@ private:
     std::int64_t m_stepCount = 0;
     StepStats m_last;
     StepStats m_totals;
+    std::optional<std::string> m_halted;
+    Matrix2X m_savedPosition; // state before the step, to undo a step that blew up
+    Matrix2X m_savedVelocity;
     Matrix2X m_startPosition; // scratch: state at the start of a sub-step
     Matrix2X m_startVelocity;
 };

@@ -50,6 +50,7 @@ private slots:
     void stepsZeroPrintsInitialState();
     void optionsOverrideTheLesson();
     void builtInLessonRuns();
+    void blowUpExitsThree();
     void badInputExitsTwo_data();
     void badInputExitsTwo();
 
@@ -141,6 +142,19 @@ void TestCli::builtInLessonRuns()
     const Result text = runCli({"run", "gravity", "--steps", "10"});
     QCOMPARE(text.exitCode, 0);
     QVERIFY(text.out.contains("10 steps"));
+}
+
+// A stiff spring at a large dt: the world stops before stepping and the CLI
+// exits 3 with the reason on stderr.
+void TestCli::blowUpExitsThree()
+{
+    const Result r = runCli({"run", m_lesson, "--integrator", "verlet", "--set", "models.gravity.y=0", "--set",
+                             "models.spring.k=90000", "--steps", "10"});
+    QCOMPARE(r.exitCode, 3);
+    const QString err = QString::fromUtf8(r.err).trimmed();
+    QVERIFY2(err.count('\n') == 0, qPrintable(err));
+    QVERIFY2(err.contains("stopped after 0 steps: verlet is unstable for this spring at dt = 0.01 s"), qPrintable(err));
+    QVERIFY2(err.contains("Lower dt below 0.00667 s"), qPrintable(err)); // 2 / ω
 }
 
 void TestCli::badInputExitsTwo_data()

@@ -1,0 +1,25 @@
+#pragma once
+// Will this integrator at this time step stay stable? For the models whose
+// stiffness does not depend on the state (spring, homing, linear drag) the
+// answer is exact: one step of the integrator on x'' = −ω² x − c x' is a 2×2
+// matrix, and the motion grows when its largest eigenvalue exceeds 1. The
+// check runs the real integrator on that test problem, so it cannot disagree
+// with what the world does.
+
+#include "world_settings.h"
+
+#include <optional>
+#include <string>
+
+namespace forcelab::sim {
+
+/// How much the test motion (spring + homing + linear drag) grows per step:
+/// the spectral radius of one step. 1 or less is stable.
+double linearGrowthPerStep(const WorldSettings& settings, double h);
+
+/// A plain-words explanation with the fix when the settings make the
+/// integrator blow up within 10 s of simulated time (the motion doubling in
+/// less than that), or nullopt.
+std::optional<std::string> stabilityProblem(const WorldSettings& settings);
+
+} // namespace forcelab::sim
