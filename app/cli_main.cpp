@@ -17,6 +17,8 @@ void usage(std::ostream& out)
            "  run LESSON [--integrator NAME] [--dt S] [--substeps K] [--tolerance T]\n"
            "             [--steps N | --time T] [--seed S] [--set KEY.PATH=VALUE]... [--json]\n"
            "      run a lesson (a file, or a built-in id such as 'gravity') headless\n"
+           "  validate FILE...\n"
+           "      check lesson files and list every problem (exit 0 when all are valid, 2 otherwise)\n"
            "  bench [--quick] [--csv FILE]\n"
            "      time collision detection and whole steps at several ball counts\n";
 }
@@ -35,8 +37,10 @@ int main(int argc, char** argv)
     args.erase(args.begin());
     if (command == "run")
         return forcelab::cli::runCommand(args, std::cout, std::cerr);
+    if (command == "validate")
+        return forcelab::cli::validateCommand(args, std::cout, std::cerr);
     if (command == "bench")
         return benchCommand(args, std::cout, std::cerr);
-    std::cerr << "forcelab-cli: unknown command '" << command << "' (try: run, bench)\n";
+    std::cerr << "forcelab-cli: unknown command '" << command << "' (try: run, validate, bench)\n";
     return 2;
 }
