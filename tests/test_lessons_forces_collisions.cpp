@@ -144,6 +144,7 @@ private:
     void detectionOnly(const char* id, sim::Detection expected, double* pairsPerStep);
 
 private slots:
+    void showcaseHomingAndPointer();
     void repulsionSmallBallsFleeFaster();
     void slingshotWithoutClampOnly();
     void elasticBandPeriod();
@@ -164,6 +165,45 @@ private slots:
     void orbitEnergyDrift();
     void bouncingExactKeepsHeight();
 };
+
+// 00: coloured balls drift towards the home of their colour (colliding on the
+// way); a hovering pointer adds a pull towards it, a pressed one a push away.
+void TestLessonsForcesCollisions::showcaseHomingAndPointer()
+{
+    LOAD_SCENE(scene, "showcase");
+    const sim::WorldSettings& s = scene.settings;
+    QVERIFY(s.homing.enabled && s.pointer.enabled && s.collisions.response == sim::Response::Impulse2D);
+    QVERIFY(s.walls.left && s.walls.right && s.walls.top && s.walls.bottom);
+    sim::World w(scene);
+    const sim::BallState& b = w.balls();
+    std::set<sim::Rgb> colours(b.color.begin(), b.color.end());
+    QVERIFY(colours.size() >= 6);
+    auto meanHomeDistance = [&] { return (b.position - b.home).colwise().norm().mean(); };
+    const double before = meanHomeDistance();
+    runFor(w, 10.0);
+    const double after = meanHomeDistance();
+    qInfo("00: %d balls, %zu colours; mean distance to home %.1f px at 0 s, %.1f px at 10 s; %lld contacts", b.size(),
+          colours.size(), before, after, static_cast<long long>(w.totals().contacts));
+    QVERIFY(after < 0.5 * before);
+    QVERIFY(w.totals().contacts > 0);
+    // The pointer's share of the acceleration: towards it while hovering, away while pressed.
+    const sim::Matrix2X base = w.accelerations();
+    const Vec2 at(0.5 * s.box.width, 0.5 * s.box.height);
+    for (bool pressed : {false, true}) {
+        w.setPointer(sim::PointerInput{true, pressed, at});
+        const sim::Matrix2X extra = w.accelerations() - base;
+        double worst = 0.0;
+        for (int i = 0; i < b.size(); ++i) {
+            const Vec2 towards = at - b.position.col(i);
+            if (towards.norm() < 1e-9)
+                continue;
+            worst = std::max(worst, angleBetween(pressed ? Vec2(-towards) : towards, extra.col(i)));
+        }
+        qInfo("00: pointer %s: largest angle between the pointer's share and the direction %s it %.3g rad",
+              pressed ? "pressed" : "hovering", pressed ? "away from" : "towards", worst);
+        QVERIFY(worst < 1e-9);
+    }
+}
 
 // 16: a = S/d² × (m_ref / m): at equal distance the acceleration ratio of a
 // small and a big ball is (r_big / r_small)³, and the small ones get further.
