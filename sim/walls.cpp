@@ -93,35 +93,64 @@ double firstRoot(double p0, double u, double a, double wall, double tMax)
     return best;
 }
 
-// exact: during the step the ball moves along p(t) = p0 + u0 t + ½ a t² with the
-// step's mean acceleration a = (u1 − u0) / h (exactly its path when the
-// acceleration is constant). Find when the edge touches the wall, reverse the
-// normal speed there (times e), and follow the parabola for the rest of the
+// How a ball moved during the step, as the integrator sees it: from p0 it
+// drifts as p(t) = p0 + d t + ½ a t², and its velocity at the end is
+// d + a h + kick. Two shapes cover every integrator:
+//  * a parabola (d = u0, a = (u1 − u0)/h, no kick): the exact path under a
+//    constant force, which Verlet, rk4, rk45 and yoshida4 reproduce exactly
+//    under gravity and to their order otherwise;
+//  * kick and drift (Euler, semi-implicit Euler): these first-order methods
+//    really move in a straight line at d = (p1 − p0)/h and change the
+//    velocity in one kick; the rest of the velocity change is that kick.
+//    Bouncing inside the straight drift keeps semi-implicit Euler symplectic,
+//    so with e = 1 its energy error stays bounded instead of drifting.
+struct StepPath {
+    double drift;   // d, px/s
+    double accel;   // a, px/s²
+    double endKick; // px/s, added to the velocity at the end of the step
+};
+
+StepPath stepPath(IntegratorKind kind, double p0, double u0, double p1, double u1, double h)
+{
+    switch (kind) {
+    case IntegratorKind::Euler:
+    case IntegratorKind::SemiImplicitEuler: {
+        const double d = (p1 - p0) / h;
+        return {d, 0.0, u1 - d};
+    }
+    default:
+        return {u0, (u1 - u0) / h, 0.0};
+    }
+}
+
+// exact: find when the edge touches the wall along the step's path, reverse
+// the normal speed there (times e), and follow the path for the rest of the
 // step. A ball resting on the floor bounces many times a step with ever less
 // speed; after a few the remainder is tiny and the ball is set on the wall.
-void exactAxis(const Axis& ax, double e, double p0, double u0, double h, double& p, double& u, std::int64_t& hits)
+void exactAxis(const Axis& ax, double e, const StepPath& path, double p0, double h, double& p, double& u,
+               std::int64_t& hits)
 {
     if (outside(ax, p0)) { // started outside (spawned there): nothing to solve
         clampAxis(ax, e, p, u);
         ++hits;
         return;
     }
-    const double a = (u - u0) / h;
-    double start = p0, speed = u0, left = h;
+    const double a = path.accel;
+    double start = p0, speed = path.drift, left = h;
     for (int bounce = 0; bounce < 16; ++bounce) {
         // The integrator's end point is outside (that is why we are here); after
-        // a bounce, the parabola's end point decides.
+        // a bounce, the path's end point decides.
         const double end = start + speed * left + 0.5 * a * left * left;
         if (bounce > 0 && !outside(ax, end)) {
             p = end;
-            u = speed + a * left;
+            u = speed + a * left + path.endKick;
             return;
         }
         double tLo = ax.loOn ? firstRoot(start, speed, a, ax.lo, left) : std::nan("");
         double tHi = ax.hiOn ? firstRoot(start, speed, a, ax.hi, left) : std::nan("");
         const bool hitLo = !std::isnan(tLo) && (std::isnan(tHi) || tLo <= tHi);
         const double t = hitLo ? tLo : tHi;
-        if (std::isnan(t)) { // the parabola and the integrator disagree: fall back
+        if (std::isnan(t)) { // the path and the integrator disagree: fall back
             clampAxis(ax, e, p, u);
             ++hits;
             return;
@@ -139,8 +168,9 @@ void exactAxis(const Axis& ax, double e, double p0, double u0, double h, double&
 
 } // namespace
 
-std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const VectorX& radius,
-                        const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x, Matrix2X& v)
+std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, IntegratorKind integrator,
+                        const VectorX& radius, const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x,
+                        Matrix2X& v)
 {
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
@@ -181,7 +211,7 @@ std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const
                 break;
             case WallModel::Exact:
                 --hits; // exactAxis counts each bounce itself
-                exactAxis(ax, e, x0(d, i), v0(d, i), h, p, u, hits);
+                exactAxis(ax, e, stepPath(integrator, x0(d, i), v0(d, i), p, u, h), x0(d, i), h, p, u, hits);
                 break;
             }
         }

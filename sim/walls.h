@@ -14,7 +14,9 @@ namespace forcelab::sim {
 /// both, the middle wall needs x0 to know each ball's side; otherwise they are
 /// not read); x, v are the state after integration and are corrected in place.
 /// Returns the number of bounces.
-std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, const VectorX& radius,
-                        const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x, Matrix2X& v);
+/// `integrator` tells the `exact` model the shape of the path inside the step.
+std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, IntegratorKind integrator,
+                        const VectorX& radius, const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x,
+                        Matrix2X& v);
 
 } // namespace forcelab::sim

@@ -310,8 +310,8 @@ void World::subStep(double h)
     }
 
     // 3. Walls: bounce whatever crossed an enabled wall.
-    const std::int64_t hits = applyWalls(s.walls, s.box, m_balls.radius, m_startPosition, m_startVelocity, h,
-                                         m_balls.position, m_balls.velocity);
+    const std::int64_t hits = applyWalls(s.walls, s.box, s.time.integrator, m_balls.radius, m_startPosition,
+                                         m_startVelocity, h, m_balls.position, m_balls.velocity);
 
     // 4. Collisions: only when the scene asks for them.
     CollisionStats collisions;
