@@ -614,8 +614,8 @@ void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStr
 
 const QStringList& overlayNames()
 {
-    static const QStringList names{"grid",     "velocity", "acceleration", "readout", "colliding",
-                                   "markers",  "vanes",    "trails"};
+    static const QStringList names{"grid",    "velocity", "acceleration", "readout",   "colliding", "markers",
+                                   "vanes",   "trails",   "impact",       "broadphase", "histogram", "totals"};
     return names;
 }
 
@@ -626,7 +626,7 @@ const QStringList& controlNames()
                                    "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn",
                                    // the switches of the stages that break something on purpose
                                    "middle_wall", "centre_only", "fully_inside", "per_frame", "random_accel",
-                                   "wind_compare"};
+                                   "wind_compare", "point_clamp", "response", "detection", "time_scale"};
     return names;
 }
 

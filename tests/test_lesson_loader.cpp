@@ -503,7 +503,7 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
                                    << R"(t.json: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
-                                     << R"(t.json: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails)";
+                                     << R"(t.json: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals)";
     QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
                                      << "t.json: controls.1: \"gravity.y\" is not one of " +
                                             LessonLoader::controlNames().join(", ");
