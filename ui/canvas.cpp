@@ -16,6 +16,9 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     setMouseTracking(true);
     setFocusPolicy(Qt::ClickFocus); // a click on the canvas takes focus from a spin box, so Space plays again
     setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel
+    m_options.trails = &m_trails;
+    m_options.collision = &m_collision;
+    connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::settingsChanged, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::sceneChanged, this, &Canvas::onSceneChanged);
@@ -23,7 +26,28 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
 
 void Canvas::setOverlays(const Overlays& overlays)
 {
+    if (overlays.trails != m_options.overlays.trails)
+        m_trails.clear(); // a trail starts when it is switched on
+    if (overlays.impact != m_options.overlays.impact)
+        resetCollision();
     m_options.overlays = overlays;
+    if (m_options.overlays.trails)
+        m_trails.record(m_controller->world().balls(), m_controller->world().time());
+    update();
+}
+
+void Canvas::setTrailsEnabled(bool enabled)
+{
+    Overlays o = m_options.overlays;
+    o.trails = enabled;
+    setOverlays(o);
+}
+
+void Canvas::setTrailScope(TrailRecorder::Scope scope)
+{
+    m_trails.setScope(scope);
+    if (m_options.overlays.trails)
+        m_trails.record(m_controller->world().balls(), m_controller->world().time());
     update();
 }
 
@@ -34,6 +58,8 @@ void Canvas::setSelectedBall(int index)
     if (index == m_options.selected)
         return;
     m_options.selected = index;
+    m_trails.setSelected(index);
+    resetCollision();
     update();
     emit selectedBallChanged(index);
 }
@@ -93,6 +119,19 @@ QSize Canvas::minimumSizeHint() const
     return {240, 160};
 }
 
+QImage Canvas::renderImage() const
+{
+    const qreal dpr = devicePixelRatioF();
+    QImage image((QSizeF(size()) * dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(dpr);
+    // Its own painter (and sprite cache): a screenshot leaves the canvas as it was.
+    WorldPainter painter;
+    painter.setMarkedColor(m_painter.markedColor());
+    QPainter p(&image);
+    painter.paint(p, QRectF(rect()), m_controller->world(), m_options, dpr);
+    return image;
+}
+
 void Canvas::paintEvent(QPaintEvent*)
 {
     QElapsedTimer timer;
@@ -105,25 +144,91 @@ void Canvas::paintEvent(QPaintEvent*)
 
 void Canvas::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_drag.ball >= 0) {
+        dragTo(event->position(), static_cast<qint64>(event->timestamp()));
+        return;
+    }
     sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
 }
 
 void Canvas::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton)
-        setSelectedBall(ballAt(event->position()));
+    if (event->button() == Qt::LeftButton) {
+        const int ball = ballAt(event->position());
+        setSelectedBall(ball);
+        if (ball >= 0) {
+            // Hold the ball: pointer forces stay off while it is held, so
+            // only the hand moves it.
+            const sim::Vec2 at = widgetToWorld(event->position());
+            m_drag.ball = ball;
+            m_drag.offset = sim::Vec2(m_controller->world().balls().position.col(ball)) - at;
+            m_drag.samples.clear();
+            sendPointer(event->position(), false, false);
+            dragTo(event->position(), static_cast<qint64>(event->timestamp()));
+            return;
+        }
+    }
     sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
 }
 
 void Canvas::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_drag.ball >= 0) {
+        const qint64 now = static_cast<qint64>(event->timestamp());
+        dragTo(event->position(), now);
+        // The throw: the pointer's mean velocity over the last kThrowWindowMs,
+        // from the last sample at or before the window's start (or the
+        // oldest) to the release. A pointer that stood still is a drop.
+        const auto& samples = m_drag.samples;
+        auto start = samples.begin();
+        for (auto it = samples.begin(); it != samples.end() && it->first <= now - kThrowWindowMs; ++it)
+            start = it;
+        const std::pair<qint64, sim::Vec2>& last = samples.back();
+        const double seconds = static_cast<double>(last.first - start->first) * 1e-3;
+        const sim::Vec2 velocity = seconds > 0.0 ? sim::Vec2((last.second - start->second) / seconds) : sim::Vec2(0, 0);
+        const int ball = m_drag.ball;
+        m_drag = Drag();
+        sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+        if (ball < balls.size())
+            balls.velocity.col(ball) = velocity;
+        m_previousVelocity.resize(0, 0); // the hand changed a velocity: no collision "before" from it
+        m_controller->notifyBallsChanged();
+    }
     sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
 }
 
 void Canvas::leaveEvent(QEvent*)
 {
-    // Pointer wind and pointer forces stop when the pointer leaves.
+    // Pointer wind and pointer forces stop when the pointer leaves (a held
+    // ball stays held: the pointer is grabbed while a button is down).
     sendPointer(QPointF(), false, false);
+}
+
+void Canvas::dragTo(const QPointF& widget, qint64 timestampMs)
+{
+    const sim::Vec2 at = widgetToWorld(widget);
+    auto& samples = m_drag.samples;
+    if (!samples.empty() && timestampMs < samples.back().first)
+        timestampMs = samples.back().first; // timestamps never run backwards
+    samples.emplace_back(timestampMs, at);
+    // Keep one sample older than the throw window, for its start.
+    while (samples.size() > 2 && samples[1].first <= timestampMs - kThrowWindowMs)
+        samples.pop_front();
+    m_drag.target = at + m_drag.offset;
+    holdDraggedBall();
+    if (m_controller->isPlaying())
+        update(); // the next frame shows it to everyone
+    else
+        m_controller->notifyBallsChanged();
+}
+
+void Canvas::holdDraggedBall()
+{
+    sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+    if (m_drag.ball < 0 || m_drag.ball >= balls.size())
+        return;
+    balls.position.col(m_drag.ball) = m_drag.target;
+    balls.velocity.col(m_drag.ball).setZero();
 }
 
 void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
@@ -139,9 +244,73 @@ void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
 
 void Canvas::onSceneChanged()
 {
+    m_drag = Drag();
+    m_trails.clear();
+    resetCollision();
     if (m_options.selected >= m_controller->world().balls().size())
         setSelectedBall(-1);
     update();
+}
+
+void Canvas::resetCollision()
+{
+    m_collision = CollisionView();
+    m_previousVelocity.resize(0, 0);
+    m_previousTime = -1.0;
+    m_previousPartner = -1;
+}
+
+void Canvas::onStepped()
+{
+    const sim::World& world = m_controller->world();
+    if (m_drag.ball >= 0 && world.time() != m_previousTime)
+        holdDraggedBall(); // the steps of this frame moved it; the hand holds it
+    if (m_options.overlays.trails)
+        m_trails.record(world.balls(), world.time());
+    if (m_options.overlays.impact)
+        trackCollision();
+    m_previousTime = world.time();
+}
+
+void Canvas::trackCollision()
+{
+    const sim::World& world = m_controller->world();
+    const sim::BallState& balls = world.balls();
+    const int i = m_options.selected;
+    if (i < 0 || i >= balls.size()) {
+        m_previousVelocity.resize(0, 0);
+        return;
+    }
+    if (world.time() == m_previousTime) { // no step (an edit while paused): only the state moved
+        m_previousVelocity = balls.velocity;
+        return;
+    }
+    // The selected ball's partner in this step's contacts (sorted by (a, b)).
+    int partner = -1;
+    for (const sim::Contact& c : world.contacts()) {
+        if (c.a == i || c.b == i) {
+            partner = c.a == i ? c.b : c.a;
+            break;
+        }
+    }
+    // A new contact, not one that lasts from the frame before (resting balls).
+    if (partner >= 0 && partner != m_previousPartner && m_previousVelocity.cols() == balls.size()) {
+        CollisionView v;
+        v.a = i;
+        v.b = partner;
+        v.positionA = balls.position.col(i);
+        v.positionB = balls.position.col(partner);
+        v.radiusA = balls.radius[i];
+        v.radiusB = balls.radius[partner];
+        v.beforeA = m_previousVelocity.col(i);
+        v.beforeB = m_previousVelocity.col(partner);
+        v.afterA = balls.velocity.col(i);
+        v.afterB = balls.velocity.col(partner);
+        v.time = world.time();
+        m_collision = v;
+    }
+    m_previousPartner = partner;
+    m_previousVelocity = balls.velocity;
 }
 
 } // namespace forcelab

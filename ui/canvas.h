@@ -2,13 +2,22 @@
 // The central canvas: shows the controller's world (through WorldPainter) and
 // turns pointer events into the world's PointerInput. Setters store and call
 // update(); all drawing happens in paintEvent.
+//
+// Pointer: hovering attracts and pressing on empty space repels (when the
+// lesson has pointer forces), leaving stops both. Pressing on a ball selects
+// it and holds it: it follows the pointer (velocity 0) until release, then
+// flies off with the pointer's velocity over the last kThrowWindowMs.
 
+#include "trail_recorder.h"
 #include "view_transform.h"
 #include "world_painter.h"
 
 #include "sim/types.h"
 
+#include <QImage>
 #include <QWidget>
+
+#include <deque>
 
 namespace forcelab {
 
@@ -31,6 +40,29 @@ public:
     /// Thicker lines and larger text (presentation mode).
     void setLineScale(double scale);
     const PaintOptions& paintOptions() const { return m_options; }
+
+    /// Switches the trails overlay (same as setOverlays with overlays.trails).
+    void setTrailsEnabled(bool enabled);
+    bool trailsEnabled() const { return m_options.overlays.trails; }
+    /// Trails behind every ball (up to TrailRecorder::kMaxBalls) or the selected ball only.
+    void setTrailScope(TrailRecorder::Scope scope);
+    TrailRecorder::Scope trailScope() const { return m_trails.scope(); }
+    const TrailRecorder& trails() const { return m_trails; }
+
+    /// The selected ball's most recent collision (the "impact" overlay), or
+    /// an invalid view. Tracked only while that overlay is on and a ball is
+    /// selected; "before" is the state at the end of the previous frame, so it
+    /// is exactly the state before the step when a frame takes one step.
+    const CollisionView& collisionView() const { return m_collision; }
+
+    /// The picture the canvas shows now, at its size and device pixel ratio
+    /// (for screenshots).
+    QImage renderImage() const;
+
+    /// The ball held by the pointer, or -1.
+    int draggedBall() const { return m_drag.ball; }
+    /// A thrown ball gets the pointer's mean velocity over this many ms before release.
+    static constexpr qint64 kThrowWindowMs = 50;
 
     /// The current map between widget and world coordinates (letterboxed).
     ViewTransform viewTransform() const;
@@ -57,12 +89,30 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
+    struct Drag {
+        int ball = -1;
+        sim::Vec2 offset{0, 0}; // ball centre minus pointer, world px
+        sim::Vec2 target{0, 0}; // where the held ball is kept, world px
+        std::deque<std::pair<qint64, sim::Vec2>> samples; // (event ms, pointer world px)
+    };
+
     void sendPointer(const QPointF& widget, bool inside, bool pressed);
     void onSceneChanged();
+    void onStepped();
+    void trackCollision();
+    void holdDraggedBall();
+    void dragTo(const QPointF& widget, qint64 timestampMs);
+    void resetCollision();
 
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
     PaintOptions m_options;
+    TrailRecorder m_trails;
+    CollisionView m_collision;
+    sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
+    double m_previousTime = -1.0;
+    int m_previousPartner = -1;
+    Drag m_drag;
     qint64 m_frames = 0;
     double m_lastPaintMs = 0.0;
 };

@@ -1,5 +1,9 @@
 #include "world_painter.h"
 
+#include "trail_recorder.h"
+
+#include "sim/names.h"
+
 #include <QFontDatabase>
 #include <QFontMetricsF>
 #include <QLineF>
@@ -8,10 +12,12 @@
 #include <QPainterPath>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace forcelab {
 
@@ -22,6 +28,11 @@ Overlays Overlays::fromNames(const QStringList& names)
     o.acceleration = names.contains(QStringLiteral("acceleration"));
     o.readout = names.contains(QStringLiteral("readout"));
     o.colliding = names.contains(QStringLiteral("colliding"));
+    o.trails = names.contains(QStringLiteral("trails"));
+    o.vanes = names.contains(QStringLiteral("vanes"));
+    o.impact = names.contains(QStringLiteral("impact"));
+    o.broadphase = names.contains(QStringLiteral("broadphase"));
+    o.histogram = names.contains(QStringLiteral("histogram"));
     return o;
 }
 
@@ -38,6 +49,10 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     p.setClipRect(area);
     p.fillRect(area, QColor::fromRgb(canvas_colors::kLetterbox));
     paintBox(p, v, world, options);
+    if (options.overlays.broadphase)
+        paintBroadPhase(p, v, world, options);
+    if (options.overlays.trails && options.trails)
+        paintTrails(p, v, world, options);
     if (options.overlays.markers)
         paintMarkers(p, v, world, options);
     // Collision responses mark balls; "flag" exists to show exactly that.
@@ -51,6 +66,10 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     const sim::Matrix2X* a = accelerations ? &*accelerations : nullptr;
     if (options.overlays.velocity || options.overlays.acceleration)
         paintArrows(p, v, world, options, a);
+    if (options.overlays.impact && options.collision && options.collision->valid())
+        paintCollision(p, v, options);
+    if (options.overlays.vanes)
+        paintVanes(p, v, world, options);
     if (options.overlays.readout)
         paintReadout(p, area, v, world, options, a);
     p.restore();
@@ -213,6 +232,14 @@ void WorldPainter::paintMarkers(QPainter& p, const ViewTransform& view, const si
             p.drawEllipse(view.toWidget(h.at), 12.0 * k, 12.0 * k);
         }
     }
+    const sim::PointerInput& pointer = world.pointer();
+    if (s.pointer.enabled && pointer.inside) {
+        // The pointer's pull (blue, hovering) or push (red, pressed): two rings.
+        const QPointF c = view.toWidget(pointer.position);
+        p.setPen(QPen(pointer.pressed ? QColor(0xc0, 0x40, 0x30) : QColor(0x30, 0x60, 0xc0), 1.5 * k));
+        p.drawEllipse(c, 6.0 * k, 6.0 * k);
+        p.drawEllipse(c, 14.0 * k, 14.0 * k);
+    }
 }
 
 namespace {
@@ -340,6 +367,272 @@ void WorldPainter::paintReadout(QPainter& p, const QRectF& area, const ViewTrans
         p.setPen(c);
         p.drawText(QPointF(panel.left() + pad, y), lines[k]);
         y += fm.lineSpacing();
+    }
+}
+
+void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world,
+                                   const PaintOptions&)
+{
+    const sim::BallState& balls = world.balls();
+    const int n = balls.size();
+    const sim::Detection detection = world.settings().collisions.detection;
+    if (n == 0 || (detection != sim::Detection::Grid && detection != sim::Detection::Sweep))
+        return;
+    const QRectF box = view.boxRect();
+    const double s = view.scale();
+    const QColor color = QColor::fromRgb(canvas_colors::kBroadPhase);
+    p.save();
+    p.setClipRect(box, Qt::IntersectClip);
+    p.setRenderHint(QPainter::Antialiasing, false);
+    const bool perBall = n <= kMaxBroadPhaseBalls;
+
+    if (detection == sim::Detection::Grid) {
+        // The grid's cells, as the detector builds them: squares 1.5 ball
+        // sizes wide (the mean diameter), counted from the smallest corner of
+        // the balls' boxes. Two balls are tested only when they share a cell.
+        double minX = std::numeric_limits<double>::infinity(), minY = minX, sum = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double r = balls.radius[i];
+            minX = std::min(minX, balls.position(0, i) - r);
+            minY = std::min(minY, balls.position(1, i) - r);
+            sum += 2.0 * r;
+        }
+        const double cell = 1.5 * sum / n;
+        if (!(cell * s >= 4.0) || !std::isfinite(minX) || !std::isfinite(minY)) {
+            p.restore();
+            return; // cells smaller than 4 px would only grey the picture
+        }
+        const sim::Vec2 from = view.toWorld(box.topLeft()), to = view.toWorld(box.bottomRight());
+        const auto firstX = static_cast<long long>(std::floor((from.x() - minX) / cell));
+        const auto lastX = static_cast<long long>(std::ceil((to.x() - minX) / cell));
+        const auto firstY = static_cast<long long>(std::floor((from.y() - minY) / cell));
+        const auto lastY = static_cast<long long>(std::ceil((to.y() - minY) / cell));
+        if (perBall && (lastX - firstX) * (lastY - firstY) <= 1'000'000) {
+            // Shade the cells that hold at least one ball.
+            const long long nx = lastX - firstX + 1;
+            std::vector<unsigned char> used(static_cast<std::size_t>(nx * (lastY - firstY + 1)), 0);
+            QList<QRectF> rects;
+            for (int i = 0; i < n; ++i) {
+                const double r = balls.radius[i], x = balls.position(0, i), y = balls.position(1, i);
+                const long long x0 = std::max(firstX, static_cast<long long>(std::floor((x - r - minX) / cell)));
+                const long long x1 = std::min(lastX, static_cast<long long>(std::floor((x + r - minX) / cell)));
+                const long long y0 = std::max(firstY, static_cast<long long>(std::floor((y - r - minY) / cell)));
+                const long long y1 = std::min(lastY, static_cast<long long>(std::floor((y + r - minY) / cell)));
+                for (long long cy = y0; cy <= y1; ++cy)
+                    for (long long cx = x0; cx <= x1; ++cx) {
+                        unsigned char& u = used[static_cast<std::size_t>((cy - firstY) * nx + (cx - firstX))];
+                        if (!u) {
+                            u = 1;
+                            rects.append(QRectF(view.toWidget(sim::Vec2(minX + cx * cell, minY + cy * cell)),
+                                                QSizeF(cell * s, cell * s)));
+                        }
+                    }
+            }
+            QColor fill = color;
+            fill.setAlpha(28);
+            p.setPen(Qt::NoPen);
+            p.setBrush(fill);
+            p.drawRects(rects);
+        }
+        QList<QLineF> lines;
+        for (long long cx = firstX; cx <= lastX; ++cx) {
+            const double x = view.toWidget(sim::Vec2(minX + cx * cell, 0.0)).x();
+            lines.append(QLineF(x, box.top(), x, box.bottom()));
+        }
+        for (long long cy = firstY; cy <= lastY; ++cy) {
+            const double y = view.toWidget(sim::Vec2(0.0, minY + cy * cell)).y();
+            lines.append(QLineF(box.left(), y, box.right(), y));
+        }
+        QColor line = color;
+        line.setAlpha(110);
+        p.setPen(QPen(line, 1.0));
+        p.drawLines(lines);
+    } else {
+        // Sort and sweep in rows as tall as the tallest ball: each ball's
+        // x-interval [x - r, x + r] is a band in the row of its top edge; a
+        // pair is tested only when the bands overlap in one row or the two
+        // rows next to each other.
+        const double row = 2.0 * balls.radius.maxCoeff();
+        if (!(row * s >= 4.0)) {
+            p.restore();
+            return;
+        }
+        QList<QLineF> lines;
+        const sim::BoxSettings& size = world.settings().box;
+        for (int k = 1; k * row < size.height; ++k) {
+            const double y = view.toWidget(sim::Vec2(0.0, k * row)).y();
+            lines.append(QLineF(box.left(), y, box.right(), y));
+        }
+        if (perBall) {
+            QList<QRectF> bands;
+            bands.reserve(n);
+            for (int i = 0; i < n; ++i) {
+                const double r = balls.radius[i];
+                const double top = std::floor((balls.position(1, i) - r) / row) * row;
+                bands.append(QRectF(view.toWidget(sim::Vec2(balls.position(0, i) - r, top)),
+                                    QSizeF(2.0 * r * s, row * s)));
+            }
+            QColor fill = color;
+            fill.setAlpha(36);
+            p.setPen(Qt::NoPen);
+            p.setBrush(fill);
+            p.drawRects(bands);
+        }
+        QColor line = color;
+        line.setAlpha(140);
+        p.setPen(QPen(line, 1.0, Qt::DashLine));
+        p.drawLines(lines);
+    }
+    p.restore();
+}
+
+void WorldPainter::paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world,
+                               const PaintOptions& options)
+{
+    const TrailRecorder& trails = *options.trails;
+    const int length = trails.length();
+    const std::vector<int>& tracked = trails.balls();
+    const sim::BallState& balls = world.balls();
+    if (length < 2 || tracked.empty())
+        return;
+    // Four bands of age, each more transparent than the one before: the
+    // trail fades towards its oldest end. Up to 200 balls keep their own
+    // colour; more get one colour and a single draw call per band.
+    constexpr int kBands = 4;
+    const bool ownColours = tracked.size() <= 200;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    std::array<QList<QLineF>, kBands> shared;
+    for (std::size_t slot = 0; slot < tracked.size(); ++slot) {
+        const int ball = tracked[slot];
+        if (ball >= balls.size())
+            continue;
+        std::array<QList<QLineF>, kBands> own;
+        auto& lines = ownColours ? own : shared;
+        QPointF previous = view.toWidget(sim::Vec2(trails.at(static_cast<int>(slot), 0).x(),
+                                                   trails.at(static_cast<int>(slot), 0).y()));
+        for (int age = 1; age < length; ++age) {
+            const QPointF w = trails.at(static_cast<int>(slot), age);
+            const QPointF next = view.toWidget(sim::Vec2(w.x(), w.y()));
+            lines[static_cast<std::size_t>(age * kBands / length)].append(QLineF(previous, next));
+            previous = next;
+        }
+        if (ownColours) {
+            const QColor c = QColor::fromRgb(balls.color[static_cast<std::size_t>(ball)]).darker(130);
+            for (int band = 0; band < kBands; ++band) {
+                QColor faded = c;
+                faded.setAlpha(230 - 50 * band);
+                p.setPen(QPen(faded, 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
+                p.drawLines(own[static_cast<std::size_t>(band)]);
+            }
+        }
+    }
+    if (!ownColours) {
+        for (int band = 0; band < kBands; ++band) {
+            QColor faded = QColor::fromRgb(canvas_colors::kTrail);
+            faded.setAlpha(200 - 45 * band);
+            p.setPen(QPen(faded, 1.5 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
+            p.drawLines(shared[static_cast<std::size_t>(band)]);
+        }
+    }
+}
+
+void WorldPainter::paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options)
+{
+    const CollisionView& c = *options.collision;
+    const sim::Vec2 d = c.positionB - c.positionA;
+    const double distance = d.norm();
+    if (!(distance > 0.0))
+        return;
+    const double k = options.lineScale;
+    // n: the line of impact (centre to centre); t: the tangent, at right
+    // angles to it. An impulse acts only along n, so the velocity components
+    // along t are the same before and after.
+    const sim::Vec2 n = d / distance;
+    const sim::Vec2 t(-n.y(), n.x());
+    const sim::Vec2 contact = c.positionA + n * (c.radiusA * distance / (c.radiusA + c.radiusB));
+    const double reach = 1.6 * (c.radiusA + c.radiusB) + 30.0;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setBrush(Qt::NoBrush);
+    // Where the balls were: outlines.
+    p.setPen(QPen(QColor(0x50, 0x58, 0x66), 1.0 * k, Qt::DotLine));
+    p.drawEllipse(view.toWidget(c.positionA), view.toWidget(c.radiusA), view.toWidget(c.radiusA));
+    p.drawEllipse(view.toWidget(c.positionB), view.toWidget(c.radiusB), view.toWidget(c.radiusB));
+    p.setPen(QPen(QColor::fromRgb(canvas_colors::kTangent), 1.5 * k, Qt::DashLine));
+    p.drawLine(view.toWidget(contact - t * reach), view.toWidget(contact + t * reach));
+    p.setPen(QPen(QColor::fromRgb(canvas_colors::kImpactLine), 2.0 * k));
+    p.drawLine(view.toWidget(c.positionA - n * (c.radiusA + reach)), view.toWidget(c.positionB + n * (c.radiusB + reach)));
+
+    // Velocities: before dashed, after solid, from each centre.
+    const double head = 9.0 * k;
+    QList<QLineF> before, after;
+    auto arrow = [&](QList<QLineF>& lines, const sim::Vec2& from, const sim::Vec2& v) {
+        appendArrow(lines, view.toWidget(from), view.toWidget(from + options.velocityScale * v), head);
+    };
+    arrow(before, c.positionA, c.beforeA);
+    arrow(before, c.positionB, c.beforeB);
+    arrow(after, c.positionA, c.afterA);
+    arrow(after, c.positionB, c.afterB);
+    const QColor v = QColor::fromRgb(canvas_colors::kVelocity);
+    p.setPen(QPen(v.lighter(150), 2.0 * k, Qt::DashLine, Qt::RoundCap));
+    p.drawLines(before);
+    p.setPen(QPen(v, 2.5 * k, Qt::SolidLine, Qt::RoundCap));
+    p.drawLines(after);
+
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(12 * k)));
+    p.setFont(font);
+    p.setPen(QColor::fromRgb(canvas_colors::kImpactLine));
+    p.drawText(view.toWidget(c.positionB + n * (c.radiusB + reach)) + QPointF(4 * k, -4 * k),
+               QStringLiteral("line of impact"));
+    p.setPen(QColor::fromRgb(canvas_colors::kTangent));
+    p.drawText(view.toWidget(contact + t * reach) + QPointF(4 * k, -4 * k), QStringLiteral("tangent"));
+}
+
+QPointF WorldPainter::vaneCentre(const ViewTransform& view, int index, double lineScale)
+{
+    const QRectF box = view.boxRect();
+    const double r = vaneRadius(lineScale);
+    return box.topLeft() + QPointF(r + 14.0 * lineScale + index * (2.0 * r + 60.0 * lineScale), r + 14.0 * lineScale);
+}
+
+void WorldPainter::paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world,
+                              const PaintOptions& options)
+{
+    const sim::WindSettings& wind = world.settings().wind;
+    struct Vane { sim::WindMode mode; double value; };
+    std::vector<Vane> vanes;
+    vanes.push_back({wind.mode, world.wind()});
+    if (wind.compare != sim::WindMode::Off)
+        vanes.push_back({wind.compare, world.compareWind()});
+    const double k = options.lineScale;
+    const double r = vaneRadius(k);
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(12 * k)));
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    for (std::size_t i = 0; i < vanes.size(); ++i) {
+        const QPointF c = vaneCentre(view, static_cast<int>(i), k);
+        // The arrow starts at the hub and points where the wind blows; its
+        // length is the wind as a share of the set strength (a full radius
+        // at full strength).
+        p.setPen(QPen(QColor(0x9a, 0xa2, 0xae), 1.0 * k));
+        p.setBrush(QColor(255, 255, 255, 215));
+        p.drawEllipse(c, r, r);
+        const double share = wind.strength > 0.0 ? std::clamp(vanes[i].value / wind.strength, -1.0, 1.0) : 0.0;
+        QList<QLineF> lines;
+        appendArrow(lines, c, c + QPointF(share * r, 0.0), 8.0 * k);
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kVane), 3.0 * k, Qt::SolidLine, Qt::RoundCap));
+        p.drawLines(lines);
+        p.setBrush(QColor::fromRgb(canvas_colors::kVane));
+        p.setPen(Qt::NoPen);
+        p.drawEllipse(c, 2.5 * k, 2.5 * k);
+        const std::string_view name = sim::toString(vanes[i].mode);
+        const QString label = QStringLiteral("%1  %2 px/s²")
+                                  .arg(QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size())))
+                                  .arg(vanes[i].value, 0, 'f', 0);
+        p.setPen(QColor(0x1d, 0x22, 0x2c));
+        p.drawText(QPointF(c.x() - 0.5 * fm.horizontalAdvance(label), c.y() + r + fm.ascent() + 2.0 * k), label);
     }
 }
 

@@ -23,12 +23,33 @@ struct Overlays {
     bool acceleration = false; ///< [acceleration] acceleration arrows
     bool readout = false;      ///< [readout] position, velocity, acceleration of the selected ball
     bool colliding = false;    ///< [colliding] balls touching another ball drawn in the marked colour
-    bool markers = true;       ///< [markers] point-force centre and spring anchor
+    bool markers = true;       ///< [markers] point-force centre, spring anchor, homes, the pointer's pull or push
+    bool trails = false;       ///< [trails] a fading line behind each ball (or the selected one)
+    bool vanes = false;        ///< [vanes] one wind vane per wind model (the acting one and wind.compare)
+    bool impact = false;       ///< [impact] the selected ball's last collision: line of impact, tangent, velocities before and after
+    bool broadphase = false;   ///< [broadphase] the grid cells or the sweep's x-intervals of the collision detection
+    bool histogram = false;    ///< [histogram] not drawn on the canvas: the plots dock shows the speed histogram
 
-    /// From a lesson's overlay names; unknown names are ignored (the loader has checked them).
+    /// From a lesson's overlay names; unknown names are ignored (the loader has
+    /// checked them). grid and markers are on in every lesson (they hide
+    /// nothing); the others are on exactly when named.
     static Overlays fromNames(const QStringList& names);
     friend bool operator==(const Overlays&, const Overlays&) = default;
 };
+
+/// The selected ball's last collision, frozen at the frame it was found:
+/// where both balls were and their velocities just before and after.
+struct CollisionView {
+    int a = -1, b = -1;         ///< the two balls (a is the selected one)
+    sim::Vec2 positionA{0, 0}, positionB{0, 0}; ///< px, centres when the contact was found
+    double radiusA = 0.0, radiusB = 0.0;        ///< px
+    sim::Vec2 beforeA{0, 0}, beforeB{0, 0};     ///< px/s, velocities at the end of the frame before
+    sim::Vec2 afterA{0, 0}, afterB{0, 0};       ///< px/s, velocities at the end of the frame of the contact
+    double time = 0.0;          ///< s, world time of the frame of the contact
+    bool valid() const { return a >= 0 && b >= 0; }
+};
+
+class TrailRecorder;
 
 struct PaintOptions {
     Overlays overlays;
@@ -37,6 +58,8 @@ struct PaintOptions {
     double accelerationScale = 0.05; ///< s²: an acceleration arrow is a × this
     double lineScale = 1.0;         ///< thicker lines and larger text for a projector
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
+    const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
+    const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
 };
 
 /// The canvas palette (light, high contrast: readable on a projector).
@@ -49,6 +72,11 @@ inline constexpr QRgb kGridMajor = 0xffdde1e7;
 inline constexpr QRgb kVelocity = 0xff1f7a3a;
 inline constexpr QRgb kAcceleration = 0xffb0186a;
 inline constexpr QRgb kSelection = 0xff111111;
+inline constexpr QRgb kTrail = 0xff5a6478;      ///< trails when too many balls for their own colours
+inline constexpr QRgb kVane = 0xff1c5d99;
+inline constexpr QRgb kImpactLine = 0xffd9480f;
+inline constexpr QRgb kTangent = 0xff6c757d;
+inline constexpr QRgb kBroadPhase = 0xff4263eb;
 } // namespace canvas_colors
 
 class WorldPainter {
@@ -67,6 +95,12 @@ public:
 
     /// Above this many balls, arrows are drawn for the selected ball only.
     static constexpr int kMaxArrowBalls = 2000;
+    /// Above this many balls, the broad-phase view shows the cells or rows but not each ball's share.
+    static constexpr int kMaxBroadPhaseBalls = 5000;
+
+    /// Centre and radius (widget px) of wind vane `index` (0: the acting wind, 1: the compared one).
+    static QPointF vaneCentre(const ViewTransform& view, int index, double lineScale);
+    static double vaneRadius(double lineScale) { return 26.0 * lineScale; }
 
 private:
     void paintBox(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
@@ -75,6 +109,10 @@ private:
     void paintMarkers(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintArrows(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
                      const sim::Matrix2X* accelerations);
+    void paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
+    void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
+    void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
+    void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
                       const PaintOptions& options, const sim::Matrix2X* accelerations);
 

@@ -1,0 +1,322 @@
+#include "plots_dock.h"
+
+#include "simulation_controller.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QLineSeries>
+#include <QPainter>
+#include <QTabWidget>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace forcelab {
+
+namespace {
+
+// The points of samples [first, end) as (t, value), at most `maxPoints` of
+// them: every k-th sample and always the newest, so a long window stays cheap
+// to draw and the right edge is exact.
+template <class Value>
+QList<QPointF> decimated(const std::deque<PlotsDock::Sample>& samples, std::size_t first, int maxPoints, Value value)
+{
+    QList<QPointF> points;
+    const std::size_t n = samples.size() - first;
+    if (n == 0)
+        return points;
+    const std::size_t stride = std::max<std::size_t>(1, (n + static_cast<std::size_t>(maxPoints) - 1) /
+                                                            static_cast<std::size_t>(maxPoints));
+    points.reserve(static_cast<qsizetype>(n / stride + 2));
+    for (std::size_t k = first; k < samples.size(); k += stride)
+        points.append(QPointF(samples[k].t, value(samples[k])));
+    if ((samples.size() - 1 - first) % stride != 0)
+        points.append(QPointF(samples.back().t, value(samples.back())));
+    return points;
+}
+
+// y range of some series with a 5% margin; a flat line gets ±1 (or ±5%).
+void fitY(QValueAxis* axis, const QList<QList<QPointF>>& lists)
+{
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const QList<QPointF>& points : lists)
+        for (const QPointF& p : points)
+            if (std::isfinite(p.y())) {
+                lo = std::min(lo, p.y());
+                hi = std::max(hi, p.y());
+            }
+    if (!(lo <= hi)) {
+        axis->setRange(0.0, 1.0);
+        return;
+    }
+    const double margin = hi > lo ? 0.05 * (hi - lo) : std::max(1.0, 0.05 * std::abs(hi));
+    axis->setRange(lo - margin, hi + margin);
+}
+
+} // namespace
+
+PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
+    : QDockWidget(tr("Plots"), parent)
+    , m_controller(controller)
+{
+    setObjectName(QStringLiteral("plotsDock"));
+    m_kinetic = new QLineSeries(this);
+    m_kinetic->setName(tr("kinetic"));
+    m_potential = new QLineSeries(this);
+    m_potential->setName(tr("potential"));
+    m_total = new QLineSeries(this);
+    m_total->setName(tr("total"));
+    m_p = new QLineSeries(this);
+    m_p->setName(tr("|p|"));
+    m_px = new QLineSeries(this);
+    m_px->setName(tr("px"));
+    m_py = new QLineSeries(this);
+    m_py->setName(tr("py"));
+    m_cost = new QLineSeries(this);
+    m_cost->setName(tr("step"));
+    m_histogram = new QLineSeries(this);
+    m_histogram->setName(tr("balls"));
+    m_maxwell = new QLineSeries(this);
+    m_maxwell->setName(tr("Maxwell–Boltzmann (2D)"));
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(makeChart(tr("Energy"), tr("energy (mass·px²/s²)"), {m_kinetic, m_potential, m_total}, &m_energyX,
+                             &m_energyY),
+                   tr("Energy"));
+    m_tabs->addTab(makeChart(tr("Momentum"), tr("momentum (mass·px/s)"), {m_p, m_px, m_py}, &m_momentumX,
+                             &m_momentumY),
+                   tr("Momentum"));
+    m_tabs->addTab(makeChart(tr("Cost of a step"), tr("µs"), {m_cost}, &m_costX, &m_costY), tr("Step cost"));
+    m_histogramView = makeChart(tr("Speeds"), tr("share per px/s"), {m_histogram, m_maxwell}, &m_speedX, &m_speedY);
+    m_speedX->setTitleText(tr("speed (px/s)"));
+    m_histogramView->setParent(this);
+    m_histogramView->hide();
+    setWidget(m_tabs);
+
+    // The same colours as the canvas where they mean the same thing.
+    m_total->setPen(QPen(QColor(0x1d, 0x22, 0x2c), 2.0));
+    m_maxwell->setPen(QPen(QColor(0xd9, 0x48, 0x0f), 2.0));
+
+    m_redraw.setSingleShot(true);
+    m_redraw.setInterval(kRedrawMs);
+    connect(&m_redraw, &QTimer::timeout, this, &PlotsDock::refreshCharts);
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            refreshCharts();
+    });
+    connect(m_controller, &SimulationController::stepped, this, &PlotsDock::onStepped);
+    connect(m_controller, &SimulationController::sceneChanged, this, &PlotsDock::clearSamples);
+    onStepped();
+}
+
+PlotsDock::~PlotsDock() = default;
+
+QChartView* PlotsDock::makeChart(const QString& title, const QString& yTitle, const QList<QLineSeries*>& series,
+                                 QValueAxis** xAxis, QValueAxis** yAxis)
+{
+    auto* chart = new QChart();
+    chart->setTitle(title);
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    *xAxis = new QValueAxis(chart);
+    (*xAxis)->setTitleText(tr("t (s)"));
+    (*xAxis)->setLabelFormat(QStringLiteral("%.1f"));
+    *yAxis = new QValueAxis(chart);
+    (*yAxis)->setTitleText(yTitle);
+    (*yAxis)->setLabelFormat(QStringLiteral("%.3g"));
+    chart->addAxis(*xAxis, Qt::AlignBottom);
+    chart->addAxis(*yAxis, Qt::AlignLeft);
+    for (QLineSeries* s : series) {
+        s->setUseOpenGL(false);
+        chart->addSeries(s);
+        s->attachAxis(*xAxis);
+        s->attachAxis(*yAxis);
+    }
+    auto* view = new QChartView(chart);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumSize(240, 160);
+    return view;
+}
+
+QLineSeries* PlotsDock::series(Series which) const
+{
+    switch (which) {
+    case Series::Kinetic: return m_kinetic;
+    case Series::Potential: return m_potential;
+    case Series::Total: return m_total;
+    case Series::MomentumMagnitude: return m_p;
+    case Series::MomentumX: return m_px;
+    case Series::MomentumY: return m_py;
+    case Series::StepCost: return m_cost;
+    case Series::Histogram: return m_histogram;
+    case Series::MaxwellBoltzmann: return m_maxwell;
+    }
+    return nullptr;
+}
+
+void PlotsDock::setHistogramShown(bool shown)
+{
+    if (shown == m_histogramShown)
+        return;
+    m_histogramShown = shown;
+    if (shown) {
+        m_tabs->addTab(m_histogramView, tr("Speeds"));
+        m_tabs->setCurrentWidget(m_histogramView);
+        refreshHistogram();
+    } else {
+        m_tabs->removeTab(m_tabs->indexOf(m_histogramView));
+        m_histogramView->setParent(this);
+        m_histogramView->hide();
+    }
+}
+
+void PlotsDock::clearSamples()
+{
+    m_samples.clear();
+    m_lastTime = -1.0;
+    scheduleRefresh();
+}
+
+void PlotsDock::onStepped()
+{
+    const sim::World& world = m_controller->world();
+    // Only a frame that moved time on is a sample: redraws and edits while
+    // paused add nothing.
+    if (!(world.time() > m_lastTime))
+        return;
+    m_lastTime = world.time();
+    Sample s;
+    s.t = world.time();
+    const sim::Energy e = world.energy();
+    s.kinetic = e.kinetic;
+    s.potential = e.potential;
+    s.total = e.total();
+    const sim::Vec2 p = world.momentum();
+    s.px = p.x();
+    s.py = p.y();
+    s.p = p.norm();
+    s.stepMicros = world.lastStep().seconds * 1e6;
+    m_samples.push_back(s);
+    while (!m_samples.empty() &&
+           (m_samples.size() > kMaxSamples || m_samples.front().t < s.t - kWindowSeconds))
+        m_samples.pop_front();
+    scheduleRefresh();
+}
+
+void PlotsDock::scheduleRefresh()
+{
+    if (isVisible() && !m_redraw.isActive())
+        m_redraw.start();
+}
+
+void PlotsDock::refreshCharts()
+{
+    m_redraw.stop();
+    const double end = m_samples.empty() ? 0.0 : m_samples.back().t;
+    const double start = std::max(0.0, end - kWindowSeconds);
+    for (QValueAxis* x : {m_energyX, m_momentumX, m_costX})
+        x->setRange(start, std::max(start + kWindowSeconds, end));
+
+    auto points = [this](auto value) { return decimated(m_samples, 0, kMaxPoints, value); };
+    const QList<QPointF> kinetic = points([](const Sample& s) { return s.kinetic; });
+    const QList<QPointF> potential = points([](const Sample& s) { return s.potential; });
+    const QList<QPointF> total = points([](const Sample& s) { return s.total; });
+    m_kinetic->replace(kinetic);
+    m_potential->replace(potential);
+    m_total->replace(total);
+    fitY(m_energyY, {kinetic, potential, total});
+
+    const QList<QPointF> p = points([](const Sample& s) { return s.p; });
+    const QList<QPointF> px = points([](const Sample& s) { return s.px; });
+    const QList<QPointF> py = points([](const Sample& s) { return s.py; });
+    m_p->replace(p);
+    m_px->replace(px);
+    m_py->replace(py);
+    fitY(m_momentumY, {p, px, py});
+
+    const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
+    m_cost->replace(cost);
+    fitY(m_costY, {cost, {QPointF(0.0, 0.0)}});
+
+    if (m_histogramShown)
+        refreshHistogram();
+}
+
+void PlotsDock::refreshHistogram()
+{
+    const Histogram h = speedHistogram(m_controller->world().balls());
+    // The histogram as a step outline: up the left edge of each bin, across, down.
+    QList<QPointF> steps;
+    steps.reserve(2 * h.density.size() + 2);
+    steps.append(QPointF(0.0, 0.0));
+    for (qsizetype k = 0; k < h.density.size(); ++k) {
+        steps.append(QPointF(static_cast<double>(k) * h.binWidth, h.density[k]));
+        steps.append(QPointF(static_cast<double>(k + 1) * h.binWidth, h.density[k]));
+    }
+    if (!h.density.isEmpty())
+        steps.append(QPointF(static_cast<double>(h.density.size()) * h.binWidth, 0.0));
+    m_histogram->replace(steps);
+    m_maxwell->replace(h.curve);
+    const double top = static_cast<double>(h.density.size()) * h.binWidth;
+    m_speedX->setRange(0.0, top > 0.0 ? top : 1.0);
+    fitY(m_speedY, {steps, h.curve});
+    m_speedY->setMin(0.0);
+}
+
+PlotsDock::Histogram PlotsDock::speedHistogram(const sim::BallState& balls, int bins, int curvePoints)
+{
+    Histogram h;
+    const int n = balls.size();
+    if (n == 0 || bins < 1)
+        return h;
+    const Eigen::VectorXd speed = balls.velocity.colwise().norm().transpose();
+    const double top = speed.maxCoeff();
+    if (!(top > 0.0) || !std::isfinite(top))
+        return h;
+    h.binWidth = top * (1.0 + 1e-9) / bins;
+    h.density = QList<double>(bins, 0.0);
+    for (int i = 0; i < n; ++i)
+        h.density[std::min(bins - 1, static_cast<int>(speed[i] / h.binWidth))] += 1.0;
+    for (double& d : h.density)
+        d /= n * h.binWidth;
+
+    // In 2D each ball has two degrees of freedom, so its mean kinetic energy
+    // is kT (½kT each). A ball of mass m then has the speed density
+    //     f_m(v) = (m v / kT) exp(−m v² / 2kT),
+    // and a mix of masses has the mixture of these curves.
+    h.kT = 0.5 * balls.mass.dot(speed.cwiseAbs2()) / n;
+    if (!(h.kT > 0.0))
+        return h;
+    std::map<double, int> masses;
+    for (int i = 0; i < n; ++i)
+        ++masses[balls.mass[i]];
+    // Many distinct masses (random radii): the curve from every ball would
+    // cost N per point; 256 mass quantiles of equal weight describe it.
+    std::vector<std::pair<double, double>> groups; // (mass, weight)
+    if (masses.size() <= 256) {
+        for (const auto& [m, count] : masses)
+            groups.emplace_back(m, static_cast<double>(count) / n);
+    } else {
+        std::vector<double> sorted(balls.mass.data(), balls.mass.data() + n);
+        std::sort(sorted.begin(), sorted.end());
+        for (int q = 0; q < 256; ++q)
+            groups.emplace_back(sorted[static_cast<std::size_t>((2 * q + 1) * n / 512)], 1.0 / 256.0);
+    }
+    const int points = std::max(2, curvePoints);
+    const double range = static_cast<double>(bins) * h.binWidth;
+    h.curve.reserve(points);
+    for (int k = 0; k < points; ++k) {
+        const double v = range * k / (points - 1);
+        double f = 0.0;
+        for (const auto& [m, weight] : groups)
+            f += weight * (m * v / h.kT) * std::exp(-m * v * v / (2.0 * h.kT));
+        h.curve.append(QPointF(v, f));
+    }
+    return h;
+}
+
+} // namespace forcelab
