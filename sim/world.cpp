@@ -316,7 +316,8 @@ void World::subStep(double h)
     // 4. Collisions: only when the scene asks for them.
     CollisionStats collisions;
     if (s.collisions.response != Response::None)
-        collisions = m_collisions.step(m_balls, m_startPosition, s.collisions, s.box, s.walls, h);
+        collisions = m_collisions.step(m_balls, m_startPosition, s.collisions, s.box, s.walls, h,
+                                       s.gravity.enabled ? s.gravity.g : Vec2::Zero());
 
     // A bounce, a collision or a velocity-dependent force makes the kept
     // acceleration stale for Verlet-type integrators.

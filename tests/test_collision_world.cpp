@@ -6,6 +6,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
+#include <random>
 
 using namespace forcelab::sim;
 
@@ -38,6 +40,10 @@ private slots:
     void detectorsGiveTheSameRun();
     void flagLeavesMotionAlone();
     void continuousWithExactWalls();
+    void columnStandsUnderGravity_data();
+    void columnStandsUnderGravity();
+    void pileSettlesUnderGravity();
+    void gravityFreeStepIsOnePass();
 };
 
 // 2,000 balls in a box, 2d-impulse with e = 1, walls with e = 1, no gravity or
@@ -155,6 +161,182 @@ void TestCollisionWorld::continuousWithExactWalls()
     }
     QVERIFY(std::abs(w.energy().kinetic - 0.5 * w.balls().mass[0] * std::pow(1000.0 / s.settings.time.dt, 2)) <=
             1e-9 * w.energy().kinetic);
+}
+
+namespace {
+
+// Deepest overlap of any touching pair, as a share of the smaller radius.
+double deepestOverlap(const World& w)
+{
+    CollisionSystem sys;
+    std::vector<Contact> pairs;
+    sys.detect(w.balls(), Detection::Sweep, pairs);
+    const BallState& b = w.balls();
+    double worst = 0.0;
+    for (const Contact& c : pairs) {
+        const double depth = b.radius[c.a] + b.radius[c.b] - (b.position.col(c.b) - b.position.col(c.a)).norm();
+        worst = std::max(worst, depth / std::min(b.radius[c.a], b.radius[c.b]));
+    }
+    return worst;
+}
+
+bool allInside(const World& w)
+{
+    const BallState& b = w.balls();
+    const BoxSettings& box = w.settings().box;
+    for (int i = 0; i < b.size(); ++i) {
+        const double r = b.radius[i], x = b.position(0, i), y = b.position(1, i);
+        if (!(x >= r - 1e-9 && x <= box.width - r + 1e-9 && y >= r - 1e-9 && y <= box.height - r + 1e-9))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+void TestCollisionWorld::columnStandsUnderGravity_data()
+{
+    QTest::addColumn<int>("wallModel");
+    QTest::addColumn<int>("substeps");
+    QTest::newRow("clamp, 1 sub-step") << int(WallModel::Clamp) << 1;
+    QTest::newRow("exact, 1 sub-step") << int(WallModel::Exact) << 1;
+    QTest::newRow("clamp, 4 sub-steps") << int(WallModel::Clamp) << 4;
+}
+
+// A column of 20 balls (r = 10 px) standing on the floor, dropped from 1 px
+// gaps, gravity 980 px/s², e = 0.9 for balls and walls, 60 Hz: after 10 s it
+// is still a column 20 diameters tall (within 2%), no pair overlaps by more
+// than 1% of a radius, and it never did during the run.
+void TestCollisionWorld::columnStandsUnderGravity()
+{
+    QFETCH(int, wallModel);
+    QFETCH(int, substeps);
+    const double r = 10.0, height = 600.0;
+    Scene s;
+    s.settings.box = BoxSettings{200.0, height};
+    s.settings.walls = WallSettings{true, true, true, true, static_cast<WallModel>(wallModel), 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.time.substeps = substeps;
+    s.settings.collisions.detection = Detection::Sweep;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    for (int i = 0; i < 20; ++i) {
+        Ball b;
+        b.radius = r;
+        b.position = Vec2(100.0, height - r - (2.0 * r + 1.0) * i);
+        s.balls.push_back(b);
+    }
+    World w(s);
+    double worstOverlap = 0.0;
+    for (int step = 0; step < 600; ++step) {
+        w.step();
+        if (step >= 60) // after the first second, once the 1 px drops have landed
+            worstOverlap = std::max(worstOverlap, deepestOverlap(w));
+    }
+    const BallState& b = w.balls();
+    QVERIFY(b.position.allFinite() && b.velocity.allFinite());
+    const double top = b.position.row(1).minCoeff() - r, bottom = b.position.row(1).maxCoeff() + r;
+    const double columnHeight = bottom - top;
+    qInfo("column height %.4f px (20 diameters = 400), deepest overlap %.3g r", columnHeight, worstOverlap);
+    // Known gaps (see docs/performance.md, "Piles"): contacts are only pairs
+    // that already overlap, so a column starting at touching distance falls
+    // onto itself one ball per sub-step and the first impacts overlap deeply;
+    // with exact walls the floor ball is often not on the floor when solved.
+    if (wallModel == int(WallModel::Exact))
+        QEXPECT_FAIL("", "exact walls: the floor contact is missed, the column sinks (~314 px)", Continue);
+    QVERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, qPrintable(QString::number(columnHeight)));
+    QEXPECT_FAIL("", "no speculative contacts yet: deepest overlap 3% r (4 sub-steps) to 100% r (1 sub-step)", Continue);
+    QVERIFY2(worstOverlap <= 0.01, qPrintable(QString::number(worstOverlap)));
+    // Still one column: no ball moved sideways, and they are still in order.
+    QVERIFY((b.position.row(0).array() == 100.0).all());
+    bool ordered = true;
+    for (int i = 0; i + 1 < 20; ++i)
+        ordered = ordered && b.position(1, i + 1) < b.position(1, i);
+    if (substeps == 1)
+        QEXPECT_FAIL("", "1 sub-step: the first hard impacts push some balls through each other", Continue);
+    QVERIFY(ordered);
+    QVERIFY(allInside(w));
+}
+
+// 2,000 balls (r = 3–5 px) on a jittered grid filling 30% of a box, random
+// speeds, gravity, e = 0.9, one sub-step at 60 Hz (the bench's scene): after
+// 20 s the pile has settled. Its kinetic energy is a tiny share of the
+// potential energy it started with, it is about as dense as packed discs
+// (a hexagonal packing has 3 contacts per ball), no pair overlaps by more than
+// 2% of the smaller radius, and every ball is inside the box.
+void TestCollisionWorld::pileSettlesUnderGravity()
+{
+    const int n = 2000;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Ball> balls(n);
+    double area = 0.0;
+    for (Ball& b : balls) {
+        b.radius = 3.0 + 2.0 * u(rng);
+        area += std::numbers::pi * b.radius * b.radius;
+    }
+    const double side = std::sqrt(area / 0.3);
+    const int cols = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    const double cell = side / cols;
+    for (int i = 0; i < n; ++i) {
+        Ball& b = balls[static_cast<std::size_t>(i)];
+        const double slack = std::max(0.0, 0.5 * cell - b.radius);
+        b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
+                          (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
+        const double angle = 2.0 * std::numbers::pi * u(rng);
+        b.velocity = 100.0 * u(rng) * Vec2(std::cos(angle), std::sin(angle));
+    }
+    Scene s;
+    s.settings.box = BoxSettings{side, side};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.collisions.detection = Detection::Grid;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    s.balls = balls;
+    World w(s);
+    // Potential energy above the floor: Σ m g (H − r − y).
+    auto potential = [&](const World& world) {
+        const BallState& b = world.balls();
+        double pe = 0.0;
+        for (int i = 0; i < b.size(); ++i)
+            pe += b.mass[i] * 980.0 * (side - b.radius[i] - b.position(1, i));
+        return pe;
+    };
+    const double pe0 = potential(w);
+    for (int step = 0; step < 1200; ++step) {
+        w.step();
+        QVERIFY(w.halted() == std::nullopt);
+    }
+    const BallState& b = w.balls();
+    QVERIFY(b.position.allFinite() && b.velocity.allFinite());
+    const double ke = w.energy().kinetic;
+    const double perBall = double(w.lastStep().contacts) / n;
+    const double overlap = deepestOverlap(w);
+    qInfo("after 20 s: KE / PE0 = %.3g, PE / PE0 = %.3f, %.2f contacts per ball, deepest overlap %.3g r",
+          ke / pe0, potential(w) / pe0, perBall, overlap);
+    QVERIFY2(ke <= 1e-3 * pe0, qPrintable(QString::number(ke / pe0)));
+    QVERIFY2(perBall <= 4.0 && perBall >= 1.5, qPrintable(QString::number(perBall)));
+    QEXPECT_FAIL("", "no speculative contacts yet: a few pairs that met hard stay deeply overlapped (~1.9 r)", Continue);
+    QVERIFY2(overlap <= 0.02, qPrintable(QString::number(overlap)));
+    QVERIFY(allInside(w));
+}
+
+// Without gravity nothing rests: the collision stage makes its one pass and
+// the resting-contact solver is never used, so gravity-free scenes keep the
+// textbook step (and the energy test above).
+void TestCollisionWorld::gravityFreeStepIsOnePass()
+{
+    World w(boxOfBalls(500, 400.0, 300.0, Detection::Sweep, 0.9));
+    CollisionSystem sys;
+    BallState b = w.balls();
+    const Matrix2X start = b.position;
+    sys.step(b, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0);
+    QVERIFY(!sys.contacts().empty());
+    QCOMPARE(sys.lastVelocityPasses(), 0);
+    BallState g = w.balls();
+    sys.step(g, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
+    QVERIFY(sys.lastVelocityPasses() >= 2);
 }
 
 QTEST_APPLESS_MAIN(TestCollisionWorld)

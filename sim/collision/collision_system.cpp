@@ -137,9 +137,10 @@ CollisionStats CollisionSystem::detectMoving(const BallState& balls, const Matri
 
 CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPositions,
                                      const CollisionSettings& settings, const BoxSettings& box,
-                                     const WallSettings& walls, double dt)
+                                     const WallSettings& walls, double dt, const Vec2& gravity)
 {
     CollisionStats stats;
+    m_lastPasses = 0;
     const int n = balls.size();
     balls.colliding.assign(static_cast<std::size_t>(n), 0);
     if (settings.response == Response::None) {
@@ -157,9 +158,226 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         balls.colliding[static_cast<std::size_t>(c.a)] = 1;
         balls.colliding[static_cast<std::size_t>(c.b)] = 1;
     }
-    if (settings.response != Response::Flag && !m_contacts.empty())
+    if (settings.response == Response::Flag) {
+        m_warmCount = -1;
+        return stats;
+    }
+    const double g = gravity.norm();
+    const double restingSpeed = m_solver.restingFactor * g * dt;
+    if (settings.response == Response::Impulse2D && !continuous && restingSpeed > 0.0 && std::isfinite(restingSpeed)) {
+        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g);
+        return stats;
+    }
+    m_warmCount = -1; // no resting solve: nothing to warm-start from next time
+    if (!m_contacts.empty())
         resolve(balls, continuous ? &startPositions : nullptr, settings, box, walls, dt);
     return stats;
+}
+
+// The resting-contact solver (contact_solver.h): sequential impulses with
+// accumulated, warm-started impulses over the ball–ball and ball–wall
+// contacts, then positional correction with slop.
+void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls,
+                                   double h, double restingSpeed, double gravity)
+{
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    const ContactSolverSettings& cs = m_solver;
+    const int n = balls.size();
+    if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
+        m_pairRows.clear();
+        m_wallRows.clear();
+        m_warmCount = n;
+    }
+
+    // Ball–ball rows, in contact order ((a, b), like last sub-step's rows, so
+    // the impulses of pairs still touching are found by a merge). The line of
+    // impact comes from the positions at detection.
+    m_spareRows.clear();
+    m_spareRows.reserve(m_contacts.size());
+    std::size_t old = 0;
+    for (const Contact& c : m_contacts) {
+        const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
+        const double wa = inverseMass[a], wb = inverseMass[b];
+        if (!detail::resolvable(wa, wb))
+            continue;
+        const double s = radius[a] + radius[b];
+        const Vec2 d(x[2 * b] - x[2 * a], x[2 * b + 1] - x[2 * a + 1]);
+        const double len = d.norm();
+        const Vec2 nrm = (len > 1e-12 * s && std::isfinite(len)) ? Vec2(d / len) : lineOfImpact(d, s, c.a, c.b);
+        const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
+        while (old < m_pairRows.size() &&
+               (m_pairRows[old].a < c.a || (m_pairRows[old].a == c.a && m_pairRows[old].b < c.b)))
+            ++old;
+        const double warm = (old < m_pairRows.size() && m_pairRows[old].a == c.a && m_pairRows[old].b == c.b)
+                                ? m_pairRows[old].impulse
+                                : 0.0;
+        m_spareRows.push_back({c.a, c.b, nrm.x(), nrm.y(), wa, wb, 1.0 / (wa + wb), vn0, warm});
+    }
+    m_pairRows.swap(m_spareRows);
+
+    // Ball–wall rows, in ball order: a ball on an enabled wall, or nearer to it
+    // than the slop plus the distance gravity moves a ball from rest in one
+    // sub-step (so it is caught before it hits, not after).
+    m_spareWalls.clear();
+    const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
+    const double size[2] = {box.width, box.height};
+    const double reach = gravity * h * h;
+    old = 0;
+    if (on[0][0] || on[0][1] || on[1][0] || on[1][1]) {
+        auto add = [&](int i, int k, double side, double gap) {
+            const int key = 4 * i + 2 * k + (side > 0.0 ? 1 : 0);
+            while (old < m_wallRows.size() && m_wallRows[old].key < key)
+                ++old;
+            const double warm = (old < m_wallRows.size() && m_wallRows[old].key == key) ? m_wallRows[old].impulse : 0.0;
+            const double w = inverseMass[i];
+            m_spareWalls.push_back({key, i, k, side, std::max(gap, 0.0) / h, w, side * v[2 * i + k], warm});
+        };
+        for (int i = 0; i < n; ++i) {
+            const double r = radius[i], w = inverseMass[i];
+            if (!(w > 0.0) || !std::isfinite(w))
+                continue;
+            const double margin = cs.slop * r + reach;
+            for (int k = 0; k < 2; ++k) {
+                if (!(2.0 * r <= size[k]))
+                    continue; // wider than the box: the wall stage keeps it in the middle
+                const double p = x[2 * i + k];
+                const double gapLow = p - r, gapHigh = size[k] - r - p;
+                if (on[k][0] && gapLow < margin)
+                    add(i, k, -1.0, gapLow);
+                if (on[k][1] && gapHigh < margin)
+                    add(i, k, 1.0, gapHigh);
+            }
+        }
+    }
+    m_wallRows.swap(m_spareWalls);
+
+    m_velocityBefore = balls.velocity;
+
+    auto applyPair = [&](const PairRow& row, double j) {
+        const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
+        v[2 * a] -= row.wa * j * row.nx;
+        v[2 * a + 1] -= row.wa * j * row.ny;
+        v[2 * b] += row.wb * j * row.nx;
+        v[2 * b + 1] += row.wb * j * row.ny;
+    };
+    auto normalSpeed = [&](const PairRow& row) {
+        const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
+        return (v[2 * b] - v[2 * a]) * row.nx + (v[2 * b + 1] - v[2 * a + 1]) * row.ny;
+    };
+    auto wallSpeed = [&](const WallRow& row) -> double& {
+        return v[2 * static_cast<std::size_t>(row.ball) + static_cast<std::size_t>(row.axis)];
+    };
+
+    // Warm start: last sub-step's impulse of every contact that is still there.
+    for (const PairRow& row : m_pairRows)
+        if (row.impulse > 0.0)
+            applyPair(row, row.impulse);
+    for (const WallRow& row : m_wallRows)
+        if (row.impulse > 0.0)
+            wallSpeed(row) -= row.side * row.w * row.impulse;
+
+    // Relax passes: each contact's total impulse (never negative: balls push,
+    // they do not pull) is adjusted until it no longer approaches.
+    const double tolerance = cs.relaxTolerance * restingSpeed;
+    const int passes = std::max(1, cs.velocityPasses);
+    int made = 0;
+    for (int pass = 0; pass < passes; ++pass) {
+        double worst = 0.0; // largest velocity change of this pass
+        for (PairRow& row : m_pairRows) {
+            const double total = std::max(row.impulse - normalSpeed(row) * row.mass, 0.0);
+            const double j = total - row.impulse;
+            row.impulse = total;
+            applyPair(row, j);
+            worst = std::max(worst, std::abs(j) * (row.wa + row.wb));
+        }
+        for (WallRow& row : m_wallRows) {
+            double& vk = wallSpeed(row);
+            const double into = row.side * vk;
+            const double total = std::max(row.impulse + (into - row.allowed) / row.w, 0.0);
+            const double j = total - row.impulse;
+            row.impulse = total;
+            vk -= row.side * row.w * j;
+            worst = std::max(worst, std::abs(j) * row.w);
+        }
+        ++made;
+        if (worst <= tolerance)
+            break;
+    }
+    m_lastPasses = made;
+
+    // Restitution: a pair that hit faster than the resting speed separates at
+    // e times the speed it hit with; slower ones stay at rest (threshold).
+    for (PairRow& row : m_pairRows) {
+        if (!(-row.vn0 > restingSpeed) || !(row.impulse > 0.0))
+            continue;
+        const double total = std::max(row.impulse + (-e * row.vn0 - normalSpeed(row)) * row.mass, 0.0);
+        applyPair(row, total - row.impulse);
+        row.impulse = total;
+    }
+    const double ew = walls.restitution;
+    for (WallRow& row : m_wallRows) {
+        if (!(row.into0 > restingSpeed) || !(row.impulse > 0.0) || row.allowed != 0.0)
+            continue;
+        double& vk = wallSpeed(row);
+        const double total = std::max(row.impulse + (row.side * vk + ew * row.into0) / row.w, 0.0);
+        vk -= row.side * row.w * (total - row.impulse);
+        row.impulse = total;
+    }
+    // The bounces may have pushed a ball into a wall it rests on: one more
+    // pass over the walls stops that (a wall never pushes a ball into another).
+    for (WallRow& row : m_wallRows) {
+        double& vk = wallSpeed(row);
+        const double total = std::max(row.impulse + (row.side * vk - row.allowed) / row.w, 0.0);
+        vk -= row.side * row.w * (total - row.impulse);
+        row.impulse = total;
+    }
+
+    // The integrator moved the balls with their velocities before the
+    // contacts acted; move them as if the contact impulses had acted at the
+    // start of the sub-step (what a solver that runs between the velocity and
+    // the position update does), without crossing a wall.
+    const double* before = m_velocityBefore.data();
+    for (int i = 0; i < n; ++i) {
+        const double dx = (v[2 * i] - before[2 * i]) * h, dy = (v[2 * i + 1] - before[2 * i + 1]) * h;
+        if (dx == 0.0 && dy == 0.0)
+            continue;
+        const Vec2 p(x[2 * i], x[2 * i + 1]);
+        Vec2 q(p.x() + dx, p.y() + dy);
+        keepInsideWalls(p, q, radius[i], box, walls);
+        x[2 * i] = q.x();
+        x[2 * i + 1] = q.y();
+    }
+
+    // Positional correction with slop, positions only.
+    const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
+    for (int pass = 0; pass < std::max(1, cs.positionPasses); ++pass) {
+        for (const PairRow& row : m_pairRows) {
+            const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
+            const double ra = radius[a], rb = radius[b];
+            Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
+            const double depth = ra + rb - (pb - pa).norm();
+            const double allowed = cs.slop * std::min(ra, rb);
+            if (!(depth > allowed))
+                continue;
+            const double push = cs.correction * (depth - allowed);
+            const Vec2 nrm(row.nx, row.ny);
+            const double moveA = push * (row.wa * row.mass);
+            const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
+            if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
+                pa = qa;
+                pb = qb;
+            } else {
+                pushApart(pa, pb, ra, rb, nrm, row.wa, row.wb, push, box, walls); // stops at the walls
+            }
+            x[2 * a] = pa.x();
+            x[2 * a + 1] = pa.y();
+            x[2 * b] = pb.x();
+            x[2 * b + 1] = pb.y();
+        }
+    }
 }
 
 void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings,

@@ -13,6 +13,7 @@
 #include "../world_settings.h"
 #include "broad_phase_input.h"
 #include "contact.h"
+#include "contact_solver.h"
 #include "contact_sort.h"
 #include "sweep_and_prune.h"
 #include "uniform_grid.h"
@@ -35,8 +36,20 @@ public:
     /// during the step is first moved back to the moment of impact, bounced
     /// there, and sent on for the rest of the step (one such event per ball
     /// per sub-step; later contacts of the same ball use the end positions).
+    ///
+    /// `gravity` (px/s², zero when gravity is off) switches on resting contact
+    /// for 2d-impulse (see contact_solver.h): a restitution threshold, several
+    /// velocity passes with the walls taking part, and positional correction
+    /// with slop. Without gravity the step is the one pass described above.
     CollisionStats step(BallState& balls, const Matrix2X& startPositions, const CollisionSettings& settings,
-                        const BoxSettings& box, const WallSettings& walls, double dt);
+                        const BoxSettings& box, const WallSettings& walls, double dt,
+                        const Vec2& gravity = Vec2::Zero());
+
+    /// Tuning of the resting-contact solver (tests, bench).
+    void setSolverSettings(const ContactSolverSettings& s) { m_solver = s; }
+    const ContactSolverSettings& solverSettings() const { return m_solver; }
+    /// Velocity passes the last step() made (0 when it had no resting-contact solve).
+    int lastVelocityPasses() const { return m_lastPasses; }
 
     /// Detection alone: every touching pair (distance < r_a + r_b), sorted by
     /// (a, b) and identical for every method.
@@ -58,6 +71,31 @@ private:
     void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats);
     void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
                  const WallSettings& walls, double dt);
+    void solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls, double h,
+                      double restingSpeed, double gravity);
+
+    // One ball–ball contact of the resting solver: the pair, the line of
+    // impact at detection, inverse masses, the effective mass 1/(wa + wb),
+    // the normal speed before the solve and the total impulse so far (kept for
+    // the next sub-step's warm start).
+    struct PairRow {
+        int a, b;
+        double nx, ny, wa, wb, mass, vn0, impulse;
+    };
+    // One ball on a wall: key 4·ball + 2·axis + (far side), axis 0 (x) or 1
+    // (y), side +1 (the wall at the box's far edge) or −1 (at 0), the speed
+    // towards the wall that closes the gap in one sub-step, inverse mass, speed
+    // towards the wall before the solve, total impulse.
+    struct WallRow {
+        int key, ball, axis;
+        double side, allowed, w, into0, impulse;
+    };
+    std::vector<PairRow> m_pairRows, m_spareRows;
+    std::vector<WallRow> m_wallRows, m_spareWalls;
+    Matrix2X m_velocityBefore;
+    int m_warmCount = -1;
+    ContactSolverSettings m_solver;
+    int m_lastPasses = 0;
 
     std::vector<Contact> m_contacts;
     // Scratch kept between steps: no allocation once sizes settle, and the

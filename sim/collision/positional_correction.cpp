@@ -43,6 +43,13 @@ double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double 
     const double depth = (ra + rb) - (pb - pa).norm();
     if (!(depth > 0.0))
         return 0.0;
+    pushApart(pa, pb, ra, rb, n, wa, wb, depth, box, walls);
+    return depth;
+}
+
+void pushApart(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, double depth,
+               const BoxSettings& box, const WallSettings& walls)
+{
     const double w = wa + wb;
     const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
     // Move a by its share and b by the rest. A ball stops at a wall it was
@@ -62,7 +69,6 @@ double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double 
     }
     pa = qa;
     pb = qb;
-    return depth;
 }
 
 } // namespace forcelab::sim

@@ -25,6 +25,11 @@ Vec2 lineOfImpact(const Vec2& d, double s, int a, int b);
 double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, const BoxSettings& box,
                 const WallSettings& walls);
 
+/// Pushes pa and pb apart along n by `depth`, shared as wa : wb, stopping a
+/// ball at a wall it was inside (its partner then takes the rest).
+void pushApart(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, double depth,
+               const BoxSettings& box, const WallSettings& walls);
+
 /// A ball whose centre was inside the walls at `before` and is outside them at
 /// `after` is put back on the wall (position only). Returns whether it was.
 bool keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls);

@@ -1,0 +1,49 @@
+#pragma once
+// Resting contact: how 2d-impulse keeps a pile of balls standing under gravity.
+//
+// One pass of impulses per sub-step is right for balls that meet now and then
+// (a gas, a break shot), but a pile is different: every sub-step gravity adds
+// g·h of speed to every ball, so every ball pushes on the ones below it, and
+// the push has to reach the floor within the sub-step. One pass moves it one
+// ball down at most; the rest of the pile sinks into itself, positional
+// correction lifts it again (adding height, and so energy), and the pile
+// heats up and collapses into a much denser heap than real balls make.
+//
+// The standard cure (Box2D and most game engines), used when gravity is on:
+//
+// 1. Restitution threshold. A pair that approaches slower than
+//      v_rest = c · |g| · h      (c = restingFactor, about 2)
+//    is resting, not colliding: gravity alone made that speed in the last
+//    sub-step or two. It gets restitution 0 instead of e, so a resting ball
+//    does not bounce on the ball below it forever. v_rest is 0 when gravity is
+//    off: scenes without gravity keep the textbook one-pass step exactly.
+// 2. Sequential impulses. Several velocity passes over the contacts (in the
+//    same order every time, so a run is repeatable). The first pass bounces
+//    every pair approaching faster than v_rest with restitution e, as before;
+//    the later "relax" passes only stop pairs that still approach (target
+//    normal speed 0), so a push travels down a pile a few balls per pass.
+//    The passes stop early once no pair approaches faster than
+//    relaxTolerance · v_rest.
+// 3. The walls take part. A ball on an enabled wall (or so close that one
+//    sub-step of gravity would bring it there) is a contact with a partner of
+//    infinite mass: the passes stop it from moving into the wall faster than
+//    it can close the gap in one sub-step. This is how the floor holds the
+//    pile up; the wall stage itself is unchanged.
+// 4. Positional correction with slop. Overlap up to slop · (smaller radius)
+//    is allowed, and only `correction` of the overlap beyond it is removed per
+//    sub-step. A resting pair then sits still at a tiny overlap instead of
+//    being pushed apart and falling back every sub-step (jitter). Positions
+//    only: velocities are never changed by it.
+
+namespace forcelab::sim {
+
+struct ContactSolverSettings {
+    int velocityPasses = 8;       ///< 1, most velocity passes per sub-step (the first bounces, the others relax)
+    double restingFactor = 2.0;   ///< 1, c in v_rest = c·|g|·h; approaches slower than v_rest do not bounce
+    double relaxTolerance = 0.01; ///< 1, stop the passes when no pair approaches faster than this × v_rest
+    double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
+    double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
+    int positionPasses = 2;       ///< 1, passes of positional correction per sub-step
+};
+
+} // namespace forcelab::sim
