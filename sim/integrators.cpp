@@ -9,6 +9,7 @@ void Integrator::invalidate()
 {
     m_aValid = false;
     m_rk45h = 0.0;
+    m_ias15.reset();
 }
 
 const Matrix2X& Integrator::startAcceleration(const ForceModel& forces, const Matrix2X& x, const Matrix2X& v,
@@ -97,6 +98,10 @@ void Integrator::advance(IntegratorKind kind, const ForceModel& forces, Matrix2X
     }
     case IntegratorKind::Rk45:
         dormandPrince(forces, x, v, t, h, tolerance, stats);
+        m_aValid = false;
+        break;
+    case IntegratorKind::Ias15:
+        m_ias15.advance(forces, x, v, t, h, tolerance, stats);
         m_aValid = false;
         break;
     }

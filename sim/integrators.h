@@ -9,6 +9,7 @@
 //   yoshida4            three Verlet steps of weights w1, w0, w1      4th order, symplectic, 3 evaluations*
 //   rk45                adaptive Dormand–Prince 5(4) over the step    5th order, 6 per accepted step
 //   exact               x += v h + ½ a h², v += a h                   exact for constant a, 1 evaluation
+//   ias15               adaptive Gauss–Radau predictor–corrector     15th order, 1 + 7 per pass (ias15.h)
 //
 // * Verlet-type methods end a step with the acceleration at the new position,
 //   which is the first acceleration of the next step. The integrator keeps it
@@ -16,6 +17,7 @@
 //   changes the state or the forces (a bounce, a collision, new settings).
 
 #include "force_model.h"
+#include "ias15.h"
 #include "world_settings.h"
 
 #include <cstdint>
@@ -23,8 +25,8 @@
 namespace forcelab::sim {
 
 struct IntegratorStats {
-    std::int64_t accepted = 0; ///< rk45 sub-steps accepted
-    std::int64_t rejected = 0; ///< rk45 sub-steps rejected (error above tolerance)
+    std::int64_t accepted = 0; ///< rk45 / ias15 sub-steps accepted
+    std::int64_t rejected = 0; ///< rk45 / ias15 sub-steps rejected (error above tolerance)
 };
 
 class Integrator {
@@ -45,6 +47,7 @@ private:
     Matrix2X m_a;           // acceleration at the current state (kept between Verlet-type steps)
     bool m_aValid = false;
     double m_rk45h = 0.0;   // rk45's last good sub-step, s (0: choose afresh)
+    Ias15 m_ias15;          // the reference integrator and its state between steps
     // Scratch for multi-stage methods, reused between steps to avoid allocation.
     Matrix2X m_kx[7], m_kv[7], m_xs, m_vs, m_xn, m_vn;
 };

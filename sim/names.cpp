@@ -13,7 +13,7 @@ constexpr std::array<std::string_view, 3> kForceScales{"none", "radius", "mass"}
 constexpr std::array<std::string_view, 2> kPointKinds{"attract", "repel"};
 constexpr std::array<std::string_view, 4> kDetections{"brute", "halved", "sweep", "grid"};
 constexpr std::array<std::string_view, 6> kResponses{"none", "flag", "1d-reverse", "1d-elastic", "2d-axis", "2d-impulse"};
-constexpr std::array<std::string_view, 7> kIntegrators{"euler", "semi-implicit-euler", "verlet", "rk4", "yoshida4", "rk45", "exact"};
+constexpr std::array<std::string_view, 8> kIntegrators{"euler", "semi-implicit-euler", "verlet", "rk4", "yoshida4", "rk45", "exact", "ias15"};
 
 template <typename E, std::size_t N>
 std::optional<E> lookup(const std::array<std::string_view, N>& table, std::string_view name)
@@ -42,7 +42,12 @@ std::optional<ForceScale> parseForceScale(std::string_view n) { return lookup<Fo
 std::optional<PointKind> parsePointKind(std::string_view n) { return lookup<PointKind>(kPointKinds, n); }
 std::optional<Detection> parseDetection(std::string_view n) { return lookup<Detection>(kDetections, n); }
 std::optional<Response> parseResponse(std::string_view n) { return lookup<Response>(kResponses, n); }
-std::optional<IntegratorKind> parseIntegrator(std::string_view n) { return lookup<IntegratorKind>(kIntegrators, n); }
+std::optional<IntegratorKind> parseIntegrator(std::string_view n)
+{
+    if (n == "reference") // the most accurate integrator, whatever it is called
+        return IntegratorKind::Ias15;
+    return lookup<IntegratorKind>(kIntegrators, n);
+}
 
 std::span<const std::string_view> wallModelNames() { return kWallModels; }
 std::span<const std::string_view> dragLawNames() { return kDragLaws; }

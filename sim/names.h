@@ -28,7 +28,7 @@ std::optional<ForceScale> parseForceScale(std::string_view name);
 std::optional<PointKind> parsePointKind(std::string_view name);
 std::optional<Detection> parseDetection(std::string_view name);
 std::optional<Response> parseResponse(std::string_view name);
-/// Also accepts the alias "reference" once a reference integrator exists.
+/// Also accepts the alias "reference" for the reference integrator (ias15).
 std::optional<IntegratorKind> parseIntegrator(std::string_view name);
 
 /// The accepted names, in declaration order, e.g. {"clamp", "mirror", "exact"}.

@@ -87,7 +87,7 @@ double linearGrowthPerStep(const WorldSettings& settings, double h)
 std::optional<std::string> stabilityProblem(const WorldSettings& s)
 {
     const IntegratorKind kind = s.time.integrator;
-    if (kind == IntegratorKind::Rk45 || kind == IntegratorKind::Exact) // adapts its own step / has no such model
+    if (kind == IntegratorKind::Rk45 || kind == IntegratorKind::Ias15 || kind == IntegratorKind::Exact) // adapts its own step / has no such model
         return std::nullopt;
     const LinearModel model = linearModel(s);
     if (!model.any())

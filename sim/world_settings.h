@@ -127,13 +127,13 @@ struct CollisionSettings {
     bool continuous = false;            ///< find the time of impact inside the step
 };
 
-enum class IntegratorKind { Euler, SemiImplicitEuler, Verlet, Rk4, Yoshida4, Rk45, Exact };
+enum class IntegratorKind { Euler, SemiImplicitEuler, Verlet, Rk4, Yoshida4, Rk45, Exact, Ias15 };
 
 struct TimeSettings {
     IntegratorKind integrator = IntegratorKind::SemiImplicitEuler;
     double dt = 1.0 / 60.0;   ///< s, one step of the world
     int substeps = 1;         ///< 1, a step is split into this many equal sub-steps
-    double tolerance = 1e-9;  ///< 1, rk45 local error tolerance (absolute and relative)
+    double tolerance = 1e-9;  ///< 1, rk45 local error tolerance (absolute and relative); ias15 error per sub-step (|b₆| / |a|)
     std::uint64_t seed = 1;   ///< random generator seed (wind, random acceleration, spawning)
     bool perFrame = false;    ///< ignore dt: each step moves the balls as if 1/60 s had passed (stage 5's bug)
 };
