@@ -26,8 +26,9 @@ struct RenderBenchRow {
     int balls = 0;
     double meanRadius = 0.0; ///< px (world; the image shows the box at scale 0.975)
     BallDrawing drawing = BallDrawing::Sprites;
-    double medianMs = 0.0; ///< per frame
+    double medianMs = 0.0; ///< per frame, wall clock
     double minMs = 0.0;
+    double cpuMedianMs = 0.0; ///< per frame, this thread's CPU time (what a busy machine does not inflate)
     double nsPerBall = 0.0; ///< median / balls
 };
 
