@@ -16,6 +16,14 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 /// every problem; 0 when all are valid, 2 otherwise.
 int validateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+/// forcelab-cli sweep [options]: work-precision study of the integrators on
+/// reference problems with closed-form answers (table, CSV, PNG chart).
+int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+/// forcelab-cli render LESSON --time T --out FILE.png [--size WxH]: draws the
+/// lesson at simulated time T with the canvas's painter. Needs a QGuiApplication.
+int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
 } // namespace forcelab::cli
 
 /// forcelab-cli bench [options]: collision and step benchmarks.

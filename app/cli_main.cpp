@@ -3,6 +3,10 @@
 #include "cli_commands.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
+
+#include <algorithm>
+#include <memory>
 
 #include <iostream>
 #include <string>
@@ -20,15 +24,26 @@ void usage(std::ostream& out)
            "  validate FILE...\n"
            "      check lesson files and list every problem (exit 0 when all are valid, 2 otherwise)\n"
            "  bench [--quick] [--csv FILE]\n"
-           "      time collision detection and whole steps at several ball counts\n";
+           "      time collision detection and whole steps at several ball counts\n"
+           "  sweep [--problem NAME] [--quick] [--csv FILE] [--png FILE]\n"
+           "      error against cost of every integrator on problems with known answers\n"
+           "  render LESSON --time T --out FILE.png [--size WxH]\n"
+           "      draw a lesson at simulated time T as the workbench's canvas shows it\n";
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-    QCoreApplication app(argc, argv); // resources and QtCore's file access
     std::vector<std::string> args(argv + 1, argv + argc);
+    // Drawing text needs a QGuiApplication (fonts); without a display it runs
+    // on the offscreen platform. Everything else needs only QtCore.
+    const bool draws = !args.empty() && (args[0] == "render" ||
+                                         (args[0] == "sweep" && std::find(args.begin(), args.end(), "--png") != args.end()));
+    if (draws && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    const std::unique_ptr<QCoreApplication> app =
+        draws ? std::make_unique<QGuiApplication>(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
         usage(args.empty() ? std::cerr : std::cout);
         return args.empty() ? 2 : 0;
@@ -41,6 +56,10 @@ int main(int argc, char** argv)
         return forcelab::cli::validateCommand(args, std::cout, std::cerr);
     if (command == "bench")
         return benchCommand(args, std::cout, std::cerr);
-    std::cerr << "forcelab-cli: unknown command '" << command << "' (try: run, validate, bench)\n";
+    if (command == "sweep")
+        return forcelab::cli::sweepCommand(args, std::cout, std::cerr);
+    if (command == "render")
+        return forcelab::cli::renderCommand(args, std::cout, std::cerr);
+    std::cerr << "forcelab-cli: unknown command '" << command << "' (try: run, validate, bench, sweep, render)\n";
     return 2;
 }
