@@ -395,8 +395,11 @@ void drawPanel(QPainter& p, const QRectF& area, const Problem& problem, const st
     for (const Row& r : all)
         if (r.problem == problem.name && !r.blewUp && r.evaluations > 0)
             rows.push_back(&r);
-    static constexpr double kErrorFloor = 1e-16; // exact results are drawn on the floor
-    auto errorOf = [](const Row* r) { return std::max(r->positionError, kErrorFloor); };
+    // Exact results are drawn on the floor; an error beyond 100 times the
+    // problem's size (the orbit is lost) is drawn on the ceiling.
+    static constexpr double kErrorFloor = 1e-16;
+    const double ceiling = std::pow(10.0, ceilLog(100.0 * problem.length));
+    auto errorOf = [=](const Row* r) { return std::clamp(r->positionError, kErrorFloor, ceiling); };
     double xMin = 1e300, xMax = 0, yMin = 1e300, yMax = 0;
     for (const Row* r : rows) {
         xMin = std::min(xMin, double(r->evaluations));
