@@ -276,8 +276,10 @@ void Canvas::trackCollision()
 {
     const sim::World& world = m_controller->world();
     const sim::BallState& balls = world.balls();
-    const int i = m_options.selected;
-    if (i < 0 || i >= balls.size()) {
+    // Nothing selected: ball 0, as the readout does (a lesson on one
+    // collision shows it without a click).
+    const int i = m_options.selected >= 0 ? m_options.selected : 0;
+    if (i >= balls.size()) {
         m_previousVelocity.resize(0, 0);
         return;
     }

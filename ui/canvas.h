@@ -49,10 +49,11 @@ public:
     TrailRecorder::Scope trailScope() const { return m_trails.scope(); }
     const TrailRecorder& trails() const { return m_trails; }
 
-    /// The selected ball's most recent collision (the "impact" overlay), or
-    /// an invalid view. Tracked only while that overlay is on and a ball is
-    /// selected; "before" is the state at the end of the previous frame, so it
-    /// is exactly the state before the step when a frame takes one step.
+    /// The selected ball's (or, with none selected, ball 0's) most recent
+    /// collision for the "impact" overlay, or an invalid view. Tracked only
+    /// while that overlay is on; "before" is the state at the end of the
+    /// previous frame, so it is exactly the state before the step when a frame
+    /// takes one step (a new contact, not one lasting from the frame before).
     const CollisionView& collisionView() const { return m_collision; }
 
     /// The picture the canvas shows now, at its size and device pixel ratio
