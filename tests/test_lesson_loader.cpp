@@ -470,7 +470,7 @@ void TestLessonLoader::badInput_data()
         << R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
     QTest::newRow("bad integrator")
         << minimal(R"("time": {"integrator": "rk5"})")
-        << R"(t.json: time.integrator: "rk5" is not one of euler, semi-implicit-euler, verlet, rk4, yoshida4, rk45, exact)";
+        << R"(t.json: time.integrator: "rk5" is not one of euler, semi-implicit-euler, verlet, rk4, yoshida4, rk45, exact, ias15)";
     QTest::newRow("unknown key with suggestion")
         << minimal(R"("models": {"gravty": {"y": 1}})")
         << R"(t.json: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
