@@ -97,6 +97,7 @@ private slots:
     void trailFollowsThePastPath();
     void vanePointsWhereTheWindBlows();
     void lineOfImpactPassesThroughBothCentres();
+    void totalsShowTheWorldsEnergyAndMomentum();
     void broadPhaseShowsCellsAndIntervals();
     void pointerHoverAttractsPressRepelsLeaveStops();
     void draggingABallThrowsIt();
@@ -112,9 +113,9 @@ void GuiCanvasTest::overlayNamesSwitchOverlays()
     QVERIFY(none.grid && none.markers);
     QVERIFY(!none.velocity && !none.trails && !none.vanes && !none.impact && !none.broadphase && !none.histogram);
     const Overlays all = Overlays::fromNames({"velocity", "acceleration", "readout", "colliding", "trails", "vanes",
-                                              "impact", "broadphase", "histogram"});
+                                              "impact", "broadphase", "histogram", "totals"});
     QVERIFY(all.velocity && all.acceleration && all.readout && all.colliding && all.trails && all.vanes &&
-            all.impact && all.broadphase && all.histogram);
+            all.impact && all.broadphase && all.histogram && all.totals);
 }
 
 void GuiCanvasTest::velocityArrowPointsAlongVelocity()
@@ -294,6 +295,31 @@ void GuiCanvasTest::lineOfImpactPassesThroughBothCentres()
     for (int k = 2; k <= 10; ++k)
         onTangent += nearestColorDistance(image, canvas.worldToWidget(contact + t * (6.0 * k)), canvas_colors::kTangent) <= 40;
     QVERIFY(onTangent >= 3);
+}
+
+void GuiCanvasTest::totalsShowTheWorldsEnergyAndMomentum()
+{
+    SimulationController controller;
+    sim::Scene scene = box({ball({100, 100}, {50, -20}, 10), ball({400, 100}, {-30, 0}, 12)});
+    scene.settings.gravity.enabled = true;
+    QVERIFY(!controller.setScene(scene));
+    controller.stepOnce();
+    const sim::Energy e = controller.world().energy();
+    const QStringList text = WorldPainter::totalsText(controller.world());
+    QCOMPARE(text.size(), 4);
+    QCOMPARE(text[0].section(u' ', -1).toDouble(), QString::number(e.kinetic, 'g', 6).toDouble());
+    QCOMPARE(text[2].section(u' ', -1).toDouble(), QString::number(e.total(), 'g', 6).toDouble());
+    QVERIFY(std::abs(text[2].section(u' ', -1).toDouble() / e.total() - 1.0) < 1e-5);
+    QVERIFY(text[3].contains(QString::number(controller.world().momentum().x(), 'g', 6)));
+
+    // The panel sits in the box's top-right corner only when switched on.
+    Canvas canvas(&controller);
+    canvas.resize(900, 500);
+    const QPointF corner = canvas.worldToWidget({590, 14});
+    canvas.setOverlays(only([](Overlays&) {}));
+    QCOMPARE(colorDistance(pixelAt(canvas.grab().toImage(), corner), canvas_colors::kBackground), 0);
+    canvas.setOverlays(only([](Overlays& o) { o.totals = true; }));
+    QVERIFY(colorDistance(pixelAt(canvas.grab().toImage(), corner), canvas_colors::kBackground) > 0);
 }
 
 void GuiCanvasTest::broadPhaseShowsCellsAndIntervals()

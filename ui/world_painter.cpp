@@ -33,6 +33,7 @@ Overlays Overlays::fromNames(const QStringList& names)
     o.impact = names.contains(QStringLiteral("impact"));
     o.broadphase = names.contains(QStringLiteral("broadphase"));
     o.histogram = names.contains(QStringLiteral("histogram"));
+    o.totals = names.contains(QStringLiteral("totals"));
     return o;
 }
 
@@ -70,6 +71,8 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
         paintCollision(p, v, options);
     if (options.overlays.vanes)
         paintVanes(p, v, world, options);
+    if (options.overlays.totals)
+        paintTotals(p, v, world, options);
     if (options.overlays.readout)
         paintReadout(p, area, v, world, options, a);
     p.restore();
@@ -633,6 +636,48 @@ void WorldPainter::paintVanes(QPainter& p, const ViewTransform& view, const sim:
                                   .arg(vanes[i].value, 0, 'f', 0);
         p.setPen(QColor(0x1d, 0x22, 0x2c));
         p.drawText(QPointF(c.x() - 0.5 * fm.horizontalAdvance(label), c.y() + r + fm.ascent() + 2.0 * k), label);
+    }
+}
+
+QStringList WorldPainter::totalsText(const sim::World& world)
+{
+    const sim::Energy e = world.energy();
+    const sim::Vec2 m = world.momentum();
+    auto num = [](double v) { return QString::number(v, 'g', 6); };
+    return {
+        QStringLiteral("kinetic   %1").arg(num(e.kinetic)),
+        QStringLiteral("potential %1").arg(num(e.potential)),
+        QStringLiteral("total     %1").arg(num(e.total())),
+        QStringLiteral("momentum  (%1, %2)").arg(num(m.x()), num(m.y())),
+    };
+}
+
+void WorldPainter::paintTotals(QPainter& p, const ViewTransform& view, const sim::World& world,
+                               const PaintOptions& options)
+{
+    // What a model keeps and what it loses: energy (mass·px²/s²) and
+    // momentum (mass·px/s) of all balls, in the box's top-right corner.
+    const QStringList lines = totalsText(world);
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setPixelSize(static_cast<int>(std::lround(13 * options.lineScale)));
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    double width = 0.0;
+    for (const QString& line : lines)
+        width = std::max(width, fm.horizontalAdvance(line));
+    const double pad = 6.0 * options.lineScale, inset = 10.0 * options.lineScale;
+    const QRectF box = view.boxRect();
+    const QSizeF size(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad);
+    const QRectF panel(QPointF(box.right() - inset - size.width(), box.top() + inset), size);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
+    p.setBrush(QColor(255, 255, 255, 225));
+    p.drawRoundedRect(panel, 6, 6);
+    p.setPen(QColor(0x1d, 0x22, 0x2c));
+    double y = panel.top() + pad + fm.ascent();
+    for (const QString& line : lines) {
+        p.drawText(QPointF(panel.left() + pad, y), line);
+        y += fm.lineSpacing();
     }
 }
 

@@ -29,6 +29,7 @@ struct Overlays {
     bool impact = false;       ///< [impact] the selected ball's last collision: line of impact, tangent, velocities before and after
     bool broadphase = false;   ///< [broadphase] the grid cells or the sweep's x-intervals of the collision detection
     bool histogram = false;    ///< [histogram] not drawn on the canvas: the plots dock shows the speed histogram
+    bool totals = false;       ///< [totals] total energy and momentum in the box's top-right corner
 
     /// From a lesson's overlay names; unknown names are ignored (the loader has
     /// checked them). grid and markers are on in every lesson (they hide
@@ -101,6 +102,8 @@ public:
     /// Centre and radius (widget px) of wind vane `index` (0: the acting wind, 1: the compared one).
     static QPointF vaneCentre(const ViewTransform& view, int index, double lineScale);
     static double vaneRadius(double lineScale) { return 26.0 * lineScale; }
+    /// The lines of the totals panel: kinetic, potential and total energy, momentum.
+    static QStringList totalsText(const sim::World& world);
 
 private:
     void paintBox(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
@@ -112,6 +115,7 @@ private:
     void paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
+    void paintTotals(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
                       const PaintOptions& options, const sim::Matrix2X* accelerations);
