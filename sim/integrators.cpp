@@ -25,12 +25,22 @@ const Matrix2X& Integrator::startAcceleration(const ForceModel& forces, const Ma
 // One velocity-Verlet step: half a kick with the old acceleration, a drift
 // with the half-step velocity, a new acceleration, the second half kick.
 // Time-reversible and symplectic for position-only forces.
+//
+// A velocity-dependent force (drag) needs the acceleration at the end
+// velocity, which the second kick is computing. Using the half-step velocity
+// instead makes the method first order; predicting the end velocity with that
+// acceleration and evaluating once more restores second order, at the price
+// of one extra evaluation per step while drag is on.
 void Integrator::kickDriftKick(const ForceModel& forces, Matrix2X& x, Matrix2X& v, double t, double h)
 {
     const Matrix2X& a = startAcceleration(forces, x, v, t);
     v.noalias() += (0.5 * h) * a;
     x.noalias() += h * v;
     forces.acceleration(x, v, t + h, m_a);
+    if (!forces.velocityIndependent()) {
+        m_vs = v + (0.5 * h) * m_a; // predicted end velocity
+        forces.acceleration(x, m_vs, t + h, m_a);
+    }
     v.noalias() += (0.5 * h) * m_a;
 }
 
