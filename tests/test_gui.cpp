@@ -325,15 +325,20 @@ void GuiTest::pointerEventsReachTheWorld()
     QVERIFY(!p.pressed);
     QVERIFY((p.position - sim::Vec2(310.0 / 1.2, 200.0)).norm() < 1e-9);
 
-    // Pressing on ball 1 (world (310, 210) → widget (462, 262)) repels and selects it.
+    // Pressing on ball 1 (world (310, 210) → widget (462, 262)) selects and
+    // holds it: pointer forces stay off while a ball is in the hand.
     QTest::mousePress(&canvas, Qt::LeftButton, {}, QPoint(462, 262));
+    QCOMPARE(canvas.selectedBall(), 1);
+    QVERIFY(!controller.world().pointer().inside);
+    QTest::mouseRelease(&canvas, Qt::LeftButton, {}, QPoint(462, 262));
+
+    // Pressing on empty space repels from there; releasing goes back to hovering.
+    QTest::mousePress(&canvas, Qt::LeftButton, {}, QPoint(400, 250));
     p = controller.world().pointer();
     QVERIFY(p.inside);
     QVERIFY(p.pressed);
-    QVERIFY((p.position - sim::Vec2(372.0 / 1.2, 252.0 / 1.2)).norm() < 1e-9);
-    QCOMPARE(canvas.selectedBall(), 1);
-
-    QTest::mouseRelease(&canvas, Qt::LeftButton, {}, QPoint(462, 262));
+    QVERIFY((p.position - sim::Vec2(310.0 / 1.2, 200.0)).norm() < 1e-9);
+    QTest::mouseRelease(&canvas, Qt::LeftButton, {}, QPoint(400, 250));
     QVERIFY(controller.world().pointer().inside);
     QVERIFY(!controller.world().pointer().pressed);
 

@@ -1,31 +1,41 @@
 #include "main_window.h"
 
 #include "canvas.h"
+#include "parameter_commands.h"
+#include "inspector_dock.h"
+#include "lessons_dock.h"
 #include "parameter_panel.h"
+#include "plots_dock.h"
 #include "simulation_controller.h"
+#include "trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QImage>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QScrollArea>
+#include <QRegularExpression>
+#include <QSaveFile>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
-#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QStyle>
-#include <QTextBrowser>
-#include <QTextDocument>
 #include <QTimer>
 #include <QToolBar>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
 
 namespace forcelab {
 
@@ -43,10 +53,11 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_controller->setSuspended(true); // until the window is shown
     m_canvas = new Canvas(m_controller, this);
     setCentralWidget(m_canvas);
+    m_trajectory = new TrajectoryExport(m_controller, this);
 
     createActions();
     createMenus();
-    createToolBar();
+    createToolBars();
     createDocks();
     createStatusBar();
     readSettings();
@@ -68,20 +79,78 @@ void MainWindow::createActions()
     m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
     m_stepAction->setObjectName(QStringLiteral("stepAction"));
     m_stepAction->setShortcuts({QKeySequence(Qt::Key_Right), QKeySequence(Qt::Key_Period)});
-    m_stepAction->setStatusTip(tr("Pause and advance by one time step dt"));
+    m_stepAction->setStatusTip(tr("Pause and advance by one time step dt (→ or .)"));
     connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
 
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("&Reset"), this);
     m_resetAction->setObjectName(QStringLiteral("resetAction"));
     m_resetAction->setShortcut(Qt::Key_R);
-    m_resetAction->setStatusTip(tr("Start the lesson again with its own values"));
-    connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
+    m_resetAction->setStatusTip(tr("Start the lesson again with its own values (R)"));
+    connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLesson);
+
+    m_slowerAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("S&lower"), this);
+    m_slowerAction->setObjectName(QStringLiteral("slowerAction"));
+    m_slowerAction->setShortcut(Qt::Key_BracketLeft);
+    m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to %1× ([)").arg(SimulationController::kMinTimeScale));
+    connect(m_slowerAction, &QAction::triggered, this, &MainWindow::slower);
+
+    m_fasterAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Faster"), this);
+    m_fasterAction->setObjectName(QStringLiteral("fasterAction"));
+    m_fasterAction->setShortcut(Qt::Key_BracketRight);
+    m_fasterAction->setStatusTip(tr("Double the speed, up to %1× (])").arg(SimulationController::kMaxTimeScale));
+    connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
 
     m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
     m_openAction->setObjectName(QStringLiteral("openAction"));
     m_openAction->setShortcut(QKeySequence::Open);
     m_openAction->setStatusTip(tr("Open a lesson file from disk"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openLessonFile);
+
+    m_saveAction = new QAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save Scene as Lesson…"), this);
+    m_saveAction->setObjectName(QStringLiteral("saveAction"));
+    m_saveAction->setShortcut(QKeySequence::Save);
+    m_saveAction->setStatusTip(tr("Save the balls as they are now and the live settings as a lesson file"));
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveLessonFile);
+
+    m_screenshotAction = new QAction(tr("Screens&hot…"), this);
+    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
+    m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_screenshotAction->setStatusTip(tr("Save a picture of the canvas as PNG"));
+    connect(m_screenshotAction, &QAction::triggered, this, &MainWindow::saveScreenshot);
+
+    m_recordAction = new QAction(tr("Re&cord Trajectory"), this);
+    m_recordAction->setObjectName(QStringLiteral("recordAction"));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_recordAction->setStatusTip(tr("Record the path of the selected ball (or of all balls when none is selected)"));
+    connect(m_recordAction, &QAction::toggled, this, [this](bool on) {
+        if (on == m_trajectory->isRecording())
+            return;
+        if (on) {
+            m_trajectory->start(m_controller->world(), m_canvas->selectedBall());
+            statusBar()->showMessage(m_canvas->selectedBall() >= 0
+                                         ? tr("Recording ball #%1").arg(m_canvas->selectedBall())
+                                         : tr("Recording every ball"), 4000);
+        } else {
+            m_trajectory->stop();
+        }
+    });
+    connect(m_trajectory, &TrajectoryExport::recordingChanged, m_recordAction, &QAction::setChecked);
+
+    m_exportAction = new QAction(tr("&Export Trajectory…"), this);
+    m_exportAction->setObjectName(QStringLiteral("exportAction"));
+    m_exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
+    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportTrajectory);
+
+    m_previousAction = new QAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Previous Lesson"), this);
+    m_previousAction->setObjectName(QStringLiteral("previousLessonAction"));
+    m_previousAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Left));
+    connect(m_previousAction, &QAction::triggered, this, &MainWindow::previousLesson);
+    m_nextAction = new QAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Next Lesson"), this);
+    m_nextAction->setObjectName(QStringLiteral("nextLessonAction"));
+    m_nextAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Right));
+    connect(m_nextAction, &QAction::triggered, this, &MainWindow::nextLesson);
 
     m_quitAction = new QAction(tr("&Quit"), this);
     m_quitAction->setObjectName(QStringLiteral("quitAction"));
@@ -92,7 +161,7 @@ void MainWindow::createActions()
     m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
     m_presentationAction->setCheckable(true);
     m_presentationAction->setShortcut(QKeySequence::FullScreen);
-    m_presentationAction->setStatusTip(tr("Full screen with larger text and thicker lines, for a projector"));
+    m_presentationAction->setStatusTip(tr("Full screen with larger text and thicker lines, for a projector (F11)"));
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
 
     m_aboutAction = new QAction(tr("&About ForceLab"), this);
@@ -103,15 +172,30 @@ void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(m_openAction);
+    file->addAction(m_saveAction);
+    file->addSeparator();
+    file->addAction(m_screenshotAction);
+    file->addAction(m_recordAction);
+    file->addAction(m_exportAction);
     file->addSeparator();
     file->addAction(m_quitAction);
+
+    // Undo / Redo come from the Parameters panel's stack (createDocks).
+    menuBar()->addMenu(tr("&Edit"))->setObjectName(QStringLiteral("editMenu"));
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
     simulation->addAction(m_stepAction);
     simulation->addAction(m_resetAction);
+    simulation->addSeparator();
+    simulation->addAction(m_slowerAction);
+    simulation->addAction(m_fasterAction);
 
-    // Also filled by createDocks and createToolBar with their toggle actions.
+    QMenu* lessons = menuBar()->addMenu(tr("&Lesson"));
+    lessons->addAction(m_previousAction);
+    lessons->addAction(m_nextAction);
+
+    // Also filled by createToolBars and createDocks with their toggle actions.
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
     m_viewMenu->addSeparator();
@@ -120,50 +204,91 @@ void MainWindow::createMenus()
     help->addAction(m_aboutAction);
 }
 
-void MainWindow::createToolBar()
+void MainWindow::createToolBars()
 {
-    m_toolBar = addToolBar(tr("Simulation"));
-    m_toolBar->setObjectName(QStringLiteral("simulationToolBar"));
-    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_toolBar->addAction(m_playAction);
-    m_toolBar->addAction(m_stepAction);
-    m_toolBar->addAction(m_resetAction);
-    m_toolBar->addSeparator();
-    m_toolBar->addWidget(new QLabel(tr(" Lesson: "), m_toolBar));
-    m_lessonChooser = new QComboBox(m_toolBar);
-    m_lessonChooser->setObjectName(QStringLiteral("lessonChooser"));
-    m_lessonChooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    m_lessonChooser->setFocusPolicy(Qt::ClickFocus);
-    fillLessonChooser();
-    connect(m_lessonChooser, &QComboBox::activated, this, &MainWindow::chooseLesson);
-    m_toolBar->addWidget(m_lessonChooser);
-    m_toolBar->addAction(m_openAction);
-    m_viewMenu->addAction(m_toolBar->toggleViewAction());
+    m_simulationToolBar = addToolBar(tr("Simulation"));
+    m_simulationToolBar->setObjectName(QStringLiteral("simulationToolBar"));
+    m_simulationToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_simulationToolBar->addAction(m_playAction);
+    m_simulationToolBar->addAction(m_stepAction);
+    m_simulationToolBar->addAction(m_resetAction);
+    m_simulationToolBar->addSeparator();
+    m_simulationToolBar->addAction(m_slowerAction);
+    m_simulationToolBar->addAction(m_fasterAction);
+
+    m_fileToolBar = addToolBar(tr("File"));
+    m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
+    m_fileToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_fileToolBar->addAction(m_openAction);
+    m_fileToolBar->addAction(m_saveAction);
+    m_fileToolBar->addAction(m_screenshotAction);
+    m_fileToolBar->addAction(m_recordAction);
+    m_fileToolBar->addAction(m_exportAction);
+
+    m_viewMenu->addAction(m_simulationToolBar->toggleViewAction());
+    m_viewMenu->addAction(m_fileToolBar->toggleViewAction());
+    m_viewMenu->addSeparator();
 }
 
 void MainWindow::createDocks()
 {
-    m_lessonText = new QTextBrowser;
-    m_lessonText->setObjectName(QStringLiteral("lessonText"));
-    m_lessonText->setOpenExternalLinks(true);
-    m_lessonDock = new QDockWidget(tr("Lesson"), this);
-    m_lessonDock->setObjectName(QStringLiteral("lessonDock"));
-    m_lessonDock->setWidget(m_lessonText);
-    addDockWidget(Qt::LeftDockWidgetArea, m_lessonDock);
+    m_lessonsDock = new LessonsDock(this);
+    m_lessonsDock->setCourse(LessonsDock::builtInCourse());
+    m_lessonsDock->setNavigationActions(m_previousAction, m_nextAction);
+    connect(m_lessonsDock, &LessonsDock::lessonChosen, this, &MainWindow::chooseLesson);
+    addDockWidget(Qt::LeftDockWidgetArea, m_lessonsDock);
 
     m_parameters = new ParameterPanel(m_controller);
     auto* scroll = new QScrollArea;
     scroll->setWidget(m_parameters);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_parametersDock = new QDockWidget(tr("Parameters"), this);
     m_parametersDock->setObjectName(QStringLiteral("parametersDock"));
     m_parametersDock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, m_parametersDock);
 
-    m_viewMenu->addSeparator();
-    m_viewMenu->addAction(m_lessonDock->toggleViewAction());
+    m_inspectorDock = new InspectorDock(m_controller, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_inspectorDock);
+    splitDockWidget(m_parametersDock, m_inspectorDock, Qt::Vertical);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_inspectorDock, &InspectorDock::setSelectedBall);
+    // The inspector's trail switch: a trail behind the selected ball alone,
+    // or back to what the lesson shows.
+    connect(m_inspectorDock, &InspectorDock::trailToggled, this, [this](bool on) {
+        m_canvas->setTrailScope(on ? TrailRecorder::Scope::Selected : TrailRecorder::Scope::All);
+        m_canvas->setTrailsEnabled(on || m_lesson.overlays.contains(QStringLiteral("trails")));
+    });
+
+    // The plots under the canvas only: the side docks keep the full height.
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    m_plotsDock = new PlotsDock(m_controller, this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
+
+    m_undoAction = m_parameters->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setObjectName(QStringLiteral("undoAction"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setIcon(style()->standardIcon(QStyle::SP_ArrowLeft));
+    m_redoAction = m_parameters->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setObjectName(QStringLiteral("redoAction"));
+    m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    m_redoAction->setIcon(style()->standardIcon(QStyle::SP_ArrowRight));
+    if (QMenu* edit = menuBar()->findChild<QMenu*>(QStringLiteral("editMenu"))) {
+        edit->addAction(m_undoAction);
+        edit->addAction(m_redoAction);
+    }
+    m_simulationToolBar->addSeparator();
+    m_simulationToolBar->addAction(m_undoAction);
+    m_simulationToolBar->addAction(m_redoAction);
+
+    m_viewMenu->addAction(m_lessonsDock->toggleViewAction());
     m_viewMenu->addAction(m_parametersDock->toggleViewAction());
+    m_viewMenu->addAction(m_plotsDock->toggleViewAction());
+    m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
+    resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
+    resizeDocks({m_plotsDock}, {190}, Qt::Vertical);
+    resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);
 }
 
 void MainWindow::createStatusBar()
@@ -179,6 +304,7 @@ void MainWindow::createStatusBar()
                            tr("The computer could not keep up: simulated time was skipped"));
     m_droppedLabel->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold"));
     m_timeLabel = label(QStringLiteral("timeLabel"), tr("Simulated time"));
+    m_speedLabel = label(QStringLiteral("speedLabel"), tr("Simulated seconds per real second ([ slower, ] faster)"));
     m_fpsLabel = label(QStringLiteral("fpsLabel"), tr("Frames drawn per second, and the time to draw one"));
     m_costLabel = label(QStringLiteral("costLabel"), tr("Wall-clock time of the last simulation step"));
     m_ballsLabel = label(QStringLiteral("ballsLabel"), tr("Number of balls"));
@@ -187,6 +313,7 @@ void MainWindow::createStatusBar()
 
     connect(m_controller, &SimulationController::errorOccurred, this, &MainWindow::showError);
     connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
+    connect(m_controller, &SimulationController::timeScaleChanged, this, &MainWindow::updateStatus);
 
     m_droppedTimer = new QTimer(this);
     m_droppedTimer->setSingleShot(true);
@@ -266,58 +393,68 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_lesson = lesson;
     m_canvas->setOverlays(Overlays::fromNames(lesson.overlays));
     m_canvas->setSelectedBall(-1);
+    m_canvas->setTrailScope(TrailRecorder::Scope::All);
+    m_inspectorDock->setSelectedBall(-1);
+    m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
-    showLessonText();
-    {
-        const QSignalBlocker block(m_lessonChooser);
-        m_lessonChooser->setCurrentIndex(m_lessonChooser->findData(lesson.source));
-    }
+    m_lessonsDock->setCurrentLesson(lesson);
+    m_parameters->setLessonControls(lesson.controls);
+    // Undo steps belong to the lesson they were made in.
+    m_parameters->undoStack()->clear();
     m_controller->play();
     return true;
 }
 
-void MainWindow::fillLessonChooser()
+void MainWindow::chooseLesson(const QString& source)
 {
-    m_lessonChooser->clear();
-    for (const QString& file : LessonLoader::builtInFiles()) {
-        const LoadResult result = LessonLoader::load(file);
-        const QString name = QFileInfo(file).completeBaseName();
-        const QString text = result.ok()
-            ? QStringLiteral("%1  %2").arg(result.lesson->stage, 2, 10, QLatin1Char('0')).arg(result.lesson->title)
-            : name;
-        m_lessonChooser->addItem(text, result.ok() ? result.lesson->source : file);
-    }
-}
-
-void MainWindow::chooseLesson(int index)
-{
-    const QString source = m_lessonChooser->itemData(index).toString();
     if (source.isEmpty() || source == m_lesson.source)
         return;
-    if (!openLesson(source)) {
-        const QSignalBlocker block(m_lessonChooser);
-        m_lessonChooser->setCurrentIndex(m_lessonChooser->findData(m_lesson.source));
-    }
+    if (!openLesson(source))
+        m_lessonsDock->setCurrentLesson(m_lesson); // back to the running lesson
 }
 
-void MainWindow::showLessonText()
+void MainWindow::previousLesson()
 {
-    QString html = QStringLiteral("<h2>%1</h2>").arg(m_lesson.title.toHtmlEscaped());
-    if (m_lesson.stage > 0)
-        html += QStringLiteral("<p style='color:#5a6270'>%1</p>").arg(tr("Stage %1").arg(m_lesson.stage));
-    if (Qt::mightBeRichText(m_lesson.text)) {
-        html += m_lesson.text;
-    } else {
-        for (const QString& paragraph : m_lesson.text.split(QStringLiteral("\n\n"), Qt::SkipEmptyParts))
-            html += QStringLiteral("<p>%1</p>").arg(paragraph.toHtmlEscaped());
+    chooseLesson(m_lessonsDock->previousSource());
+}
+
+void MainWindow::nextLesson()
+{
+    chooseLesson(m_lessonsDock->nextSource());
+}
+
+void MainWindow::resetLesson()
+{
+    // The lesson's own values and balls. The undo history goes with them:
+    // its steps were made on a world that no longer exists.
+    m_controller->reset();
+    m_parameters->undoStack()->clear();
+}
+
+void MainWindow::scaleTime(double factor)
+{
+    const double now = m_controller->timeScale();
+    // Halving from 0.1 gives 0.05; doubling from 3 stops at 4, the limit, not beyond.
+    const double wanted = std::clamp(now * factor, SimulationController::kMinTimeScale,
+                                     SimulationController::kMaxTimeScale);
+    if (wanted == now) {
+        statusBar()->showMessage(factor < 1.0 ? tr("Already the slowest speed, %1×").arg(now)
+                                              : tr("Already the fastest speed, %1×").arg(now), 3000);
+        return;
     }
-    if (!m_lesson.challenges.isEmpty()) {
-        html += QStringLiteral("<h3>%1</h3><ul>").arg(tr("Try this"));
-        for (const QString& challenge : m_lesson.challenges)
-            html += QStringLiteral("<li style='margin-bottom:6px'>%1</li>").arg(challenge.toHtmlEscaped());
-        html += QStringLiteral("</ul>");
-    }
-    m_lessonText->setHtml(html);
+    m_controller->setTimeScale(wanted);
+    m_parameters->undoStack()->push(new TimeScaleCommand(m_controller, now, wanted));
+    statusBar()->showMessage(tr("Speed %1×").arg(wanted), 2000);
+}
+
+void MainWindow::slower()
+{
+    scaleTime(0.5);
+}
+
+void MainWindow::faster()
+{
+    scaleTime(2.0);
 }
 
 void MainWindow::showLoadErrors(const QStringList& errors)
@@ -343,6 +480,97 @@ void MainWindow::openLessonFile()
     setLesson(*result.lesson);
 }
 
+QString MainWindow::suggestedFileName(const QString& extension) const
+{
+    const QString stem = m_lesson.id.isEmpty() ? QStringLiteral("scene") : m_lesson.id;
+    return QDir(m_lastDirectory.isEmpty() ? QDir::homePath() : m_lastDirectory)
+        .filePath(QStringLiteral("%1-t%2.%3").arg(stem).arg(m_controller->world().time(), 0, 'f', 1).arg(extension));
+}
+
+Lesson MainWindow::currentSceneAsLesson() const
+{
+    Lesson lesson = m_lesson;
+    const sim::World& world = m_controller->world();
+    lesson.scene.settings = world.settings();
+    lesson.scene.spawn = m_controller->spawn();
+    lesson.scene.spawn.count = 0; // every ball is listed
+    const sim::BallState& balls = world.balls();
+    lesson.scene.balls.clear();
+    lesson.scene.balls.reserve(static_cast<std::size_t>(balls.size()));
+    for (int i = 0; i < balls.size(); ++i)
+        lesson.scene.balls.push_back(balls.ball(i));
+    if (lesson.id.isEmpty())
+        lesson.id = QStringLiteral("saved-scene");
+    return lesson;
+}
+
+bool MainWindow::saveLessonTo(const QString& path)
+{
+    Lesson lesson = currentSceneAsLesson();
+    // The file's name as its id, when it makes a valid one.
+    static const QRegularExpression validId(QStringLiteral("^[A-Za-z0-9_-]{1,64}$"));
+    if (const QString stem = QFileInfo(path).completeBaseName(); validId.match(stem).hasMatch())
+        lesson.id = stem;
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(saveLesson(lesson)) < 0 || !file.commit()) {
+        showError(tr("%1: cannot write the lesson: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %n ball(s) and the settings to %1", nullptr, int(lesson.scene.balls.size()))
+                                 .arg(QDir::toNativeSeparators(path)), 5000);
+    return true;
+}
+
+void MainWindow::saveLessonFile()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Scene as Lesson"), suggestedFileName("json"),
+                                                      tr("Lesson files (*.json)"));
+    if (path.isEmpty())
+        return;
+    m_lastDirectory = QFileInfo(path).absolutePath();
+    saveLessonTo(path);
+}
+
+bool MainWindow::saveScreenshotTo(const QString& path)
+{
+    const QImage image = m_canvas->renderImage();
+    if (!image.save(path, "PNG")) {
+        showError(tr("%1: cannot write the picture").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved the picture to %1").arg(QDir::toNativeSeparators(path)), 5000);
+    return true;
+}
+
+void MainWindow::saveScreenshot()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Screenshot"), suggestedFileName("png"),
+                                                      tr("PNG images (*.png)"));
+    if (path.isEmpty())
+        return;
+    m_lastDirectory = QFileInfo(path).absolutePath();
+    saveScreenshotTo(path);
+}
+
+void MainWindow::exportTrajectory()
+{
+    if (m_trajectory->rows().empty()) {
+        statusBar()->showMessage(tr("Nothing recorded yet: switch on Record Trajectory (Ctrl+Shift+R) first"), 5000);
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Trajectory"), suggestedFileName("csv"),
+                                                      tr("CSV files (*.csv)"));
+    if (path.isEmpty())
+        return;
+    m_lastDirectory = QFileInfo(path).absolutePath();
+    if (auto error = m_trajectory->save(path)) {
+        showError(*error);
+        return;
+    }
+    statusBar()->showMessage(tr("Wrote %L1 rows to %2").arg(m_trajectory->rows().size())
+                                 .arg(QDir::toNativeSeparators(path)), 5000);
+}
+
 void MainWindow::updateStatus()
 {
     const sim::World& world = m_controller->world();
@@ -353,6 +581,7 @@ void MainWindow::updateStatus()
     m_lastFrames = frames;
 
     m_timeLabel->setText(tr("t = %1 s").arg(world.time(), 0, 'f', 3));
+    m_speedLabel->setText(tr("speed %1×").arg(m_controller->timeScale(), 0, 'g', 3));
     m_fpsLabel->setText(tr("%1 fps · draw %2 ms").arg(fps, 0, 'f', 0).arg(m_canvas->lastPaintMs(), 0, 'f', 2));
     m_costLabel->setText(tr("step %1 µs").arg(last.seconds * 1e6, 0, 'f', 0));
     const int n = world.balls().size();
@@ -364,7 +593,7 @@ void MainWindow::updatePlayAction(bool playing)
 {
     m_playAction->setText(playing ? tr("&Pause") : tr("&Play"));
     m_playAction->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-    m_playAction->setStatusTip(playing ? tr("Pause the simulation") : tr("Run the simulation"));
+    m_playAction->setStatusTip(playing ? tr("Pause the simulation (Space)") : tr("Run the simulation (Space)"));
 }
 
 void MainWindow::setPresentationMode(bool on)

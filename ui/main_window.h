@@ -1,7 +1,8 @@
 #pragma once
-// The workbench window: the canvas in the middle, docks around it (Lesson,
-// Parameters), one QAction per command shared by menu and toolbar, a status
-// bar with the step's numbers, and layout plus last lesson kept in QSettings.
+// The workbench window: the canvas in the middle and four docks around it
+// (Lessons, Parameters, Plots, Inspector), one QAction per command shared by
+// menu and toolbar, a status bar with the step's numbers, and layout plus last
+// lesson kept in QSettings.
 
 #include "lessons/lesson.h"
 
@@ -13,19 +14,21 @@
 #include <optional>
 
 class QAction;
-class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
-class QTextBrowser;
 class QTimer;
 class QToolBar;
 
 namespace forcelab {
 
 class Canvas;
+class InspectorDock;
+class LessonsDock;
 class ParameterPanel;
+class PlotsDock;
 class SimulationController;
+class TrajectoryExport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -43,9 +46,21 @@ public:
     bool setLesson(const Lesson& lesson);
     const Lesson& lesson() const { return m_lesson; }
 
+    /// The running scene as a lesson: the lesson's text with the live
+    /// settings, every current ball listed and no random spawning.
+    Lesson currentSceneAsLesson() const;
+    /// Writes currentSceneAsLesson() to `path`. On failure shows the error in
+    /// the status bar and returns false.
+    bool saveLessonTo(const QString& path);
+    /// Writes a picture of the canvas to `path` (PNG).
+    bool saveScreenshotTo(const QString& path);
+
     SimulationController* controller() const { return m_controller; }
     Canvas* canvas() const { return m_canvas; }
     ParameterPanel* parameterPanel() const { return m_parameters; }
+    LessonsDock* lessonsDock() const { return m_lessonsDock; }
+    InspectorDock* inspectorDock() const { return m_inspectorDock; }
+    PlotsDock* plotsDock() const { return m_plotsDock; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -55,7 +70,15 @@ protected:
 
 private slots:
     void openLessonFile();
-    void chooseLesson(int index);
+    void saveLessonFile();
+    void saveScreenshot();
+    void exportTrajectory();
+    void chooseLesson(const QString& source);
+    void previousLesson();
+    void nextLesson();
+    void resetLesson();
+    void slower();
+    void faster();
     void updateStatus();
     void updatePlayAction(bool playing);
     void showError(const QString& message);
@@ -66,37 +89,51 @@ private slots:
 private:
     void createActions();
     void createMenus();
-    void createToolBar();
+    void createToolBars();
     void createDocks();
     void createStatusBar();
     void readSettings();
     void writeSettings() const;
     void openInitialLesson(const QString& requested);
-    void fillLessonChooser();
-    void showLessonText();
     /// The loader's one-line errors in a dialog.
     void showLoadErrors(const QStringList& errors);
+    /// Multiplies the time scale by `factor` within the controller's limits (an undo step).
+    void scaleTime(double factor);
+    QString suggestedFileName(const QString& extension) const;
 
     SimulationController* m_controller = nullptr;
     Canvas* m_canvas = nullptr;
     ParameterPanel* m_parameters = nullptr;
+    LessonsDock* m_lessonsDock = nullptr;
+    InspectorDock* m_inspectorDock = nullptr;
+    QDockWidget* m_parametersDock = nullptr;
+    PlotsDock* m_plotsDock = nullptr;
+    TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
 
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
     QAction* m_resetAction = nullptr;
+    QAction* m_slowerAction = nullptr;
+    QAction* m_fasterAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
     QAction* m_openAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_screenshotAction = nullptr;
+    QAction* m_recordAction = nullptr;
+    QAction* m_exportAction = nullptr;
+    QAction* m_previousAction = nullptr;
+    QAction* m_nextAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QMenu* m_viewMenu = nullptr;
-    QToolBar* m_toolBar = nullptr;
-    QComboBox* m_lessonChooser = nullptr;
-    QDockWidget* m_lessonDock = nullptr;
-    QDockWidget* m_parametersDock = nullptr;
-    QTextBrowser* m_lessonText = nullptr;
+    QToolBar* m_simulationToolBar = nullptr;
+    QToolBar* m_fileToolBar = nullptr;
 
     QLabel* m_timeLabel = nullptr;
+    QLabel* m_speedLabel = nullptr;
     QLabel* m_fpsLabel = nullptr;
     QLabel* m_costLabel = nullptr;
     QLabel* m_ballsLabel = nullptr;
@@ -108,7 +145,7 @@ private:
     qint64 m_lastFrames = 0;
     std::optional<QFont> m_normalFont; // before presentation mode
     QString m_lastLesson;    // from the settings
-    QString m_lastDirectory; // of Open lesson…
+    QString m_lastDirectory; // of Open / Save lesson, screenshots and exports
 };
 
 } // namespace forcelab

@@ -22,6 +22,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
         return message;
     }
     m_scene = scene;
+    m_spawn = scene.spawn;
     m_accumulator = 0.0;
     m_droppedTime = 0.0;
     m_clock.restart();
@@ -116,12 +117,35 @@ void SimulationController::stepOnce()
     emit stepped();
 }
 
+bool SimulationController::respawn(const sim::SpawnSettings& spawn)
+{
+    sim::Scene scene = m_scene;
+    scene.settings = m_world.settings();
+    scene.spawn = spawn;
+    if (static_cast<double>(scene.balls.size()) + spawn.count > sim::kMaxBalls) {
+        emit errorOccurred(tr("spawn.count: %1 listed + %2 random balls is more than the limit of %3")
+                               .arg(scene.balls.size()).arg(spawn.count).arg(sim::kMaxBalls));
+        return false;
+    }
+    if (auto error = m_world.reset(scene)) {
+        emit errorOccurred(QString::fromStdString(*error));
+        return false;
+    }
+    m_spawn = spawn;
+    m_accumulator = 0.0;
+    m_clock.restart();
+    emit sceneChanged();
+    emit stepped();
+    return true;
+}
+
 void SimulationController::reset()
 {
     if (auto error = m_world.reset(m_scene)) {
         emit errorOccurred(QString::fromStdString(*error));
         return;
     }
+    m_spawn = m_scene.spawn;
     m_accumulator = 0.0;
     m_droppedTime = 0.0;
     m_clock.restart();

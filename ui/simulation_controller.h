@@ -35,6 +35,13 @@ public:
     std::optional<QString> setScene(const sim::Scene& scene);
     const sim::Scene& scene() const { return m_scene; }
 
+    /// The spawn settings the world was last started with (the scene's, or a respawn's).
+    const sim::SpawnSettings& spawn() const { return m_spawn; }
+    /// Starts again from the scene's listed balls plus `spawn`'s random ones,
+    /// keeping the live settings (the ball-count control). Returns false (and
+    /// signals the error) when the spawn settings are refused.
+    bool respawn(const sim::SpawnSettings& spawn);
+
     /// Pushes a whole settings struct. Returns false (and emits
     /// errorOccurred) when the world refuses it; the world then keeps its settings.
     bool setSettings(const sim::WorldSettings& settings);
@@ -72,7 +79,7 @@ public slots:
     void togglePlay();
     /// Pauses and advances exactly one step of dt.
     void stepOnce();
-    /// Restarts the scene with the lesson's own settings and balls.
+    /// Restarts the scene with the lesson's own settings, balls and spawn settings.
     void reset();
     void setTimeScale(double scale);
     /// Stops the timer while the window is hidden; playing resumes after.
@@ -94,6 +101,7 @@ private:
 
     sim::World m_world;
     sim::Scene m_scene;
+    sim::SpawnSettings m_spawn; // of the running world
     QTimer m_timer;
     QElapsedTimer m_clock;
     double m_accumulator = 0.0; // s of simulated time not yet stepped

@@ -1,0 +1,739 @@
+// The workbench around the canvas, driven as a user would: every control of
+// the Parameters dock changes the world field it edits, undo and redo put it
+// back and again, Reset restores the lesson, lessons switch the docks and the
+// controls shown, keyboard shortcuts act, a saved scene opens as the same
+// scene, the Lessons tree follows the course, and the Inspector shows the
+// selected ball's numbers as the world has them.
+
+#include "ui/canvas.h"
+#include "ui/inspector_dock.h"
+#include "ui/lessons_dock.h"
+#include "ui/main_window.h"
+#include "ui/number_control.h"
+#include "ui/parameter_panel.h"
+#include "ui/simulation_controller.h"
+
+#include "lessons/lesson_loader.h"
+#include "sim/names.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBrowser>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+using namespace forcelab;
+
+namespace {
+
+// A scene in which no model is on, with two listed balls and three random ones.
+sim::Scene plainScene()
+{
+    sim::Scene scene;
+    scene.settings.box = {600.0, 400.0};
+    sim::Ball a;
+    a.position = {150.0, 120.0};
+    a.velocity = {40.0, -10.0};
+    a.radius = 20.0;
+    a.color = 0xe05050;
+    sim::Ball b;
+    b.position = {420.0, 260.0};
+    b.velocity = {-25.0, 30.0};
+    b.radius = 12.0;
+    b.mass = 3.5;
+    b.color = 0x3090d0;
+    scene.balls = {a, b};
+    scene.spawn.count = 3;
+    return scene;
+}
+
+// One control of the table: the widget to set, the value to give it, and how
+// to read back the field it edits (enums as their index, switches as 0 / 1).
+struct ControlCase {
+    const char* row;     // ParameterPanel row key (or section key for a model's switch)
+    const char* widget;  // objectName
+    QVariant value;      // number for spin boxes, text for combos and the seed, bool for switches
+    double expected;     // the field's value afterwards, in the world's units
+    std::function<double(const SimulationController&)> field;
+};
+
+using C = const SimulationController&;
+double settingsOf(C c, const std::function<double(const sim::WorldSettings&)>& f)
+{
+    return f(c.world().settings());
+}
+#define FIELD(expr) [](C c) { return settingsOf(c, [](const sim::WorldSettings& s) { return double(expr); }); }
+
+template <class Enum>
+double indexOf(std::span<const std::string_view> names, const char* name)
+{
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name)
+            return double(i);
+    return -1.0;
+}
+
+const std::vector<ControlCase>& controlCases()
+{
+    static const std::vector<ControlCase> cases{
+        {"gravity", "gravityGroup", true, 1.0, FIELD(s.gravity.enabled)},
+        {"gravity_x", "gravityXSpin", -123.5, -123.5, FIELD(s.gravity.g.x())},
+        {"gravity_y", "gravityYSpin", 500.0, 500.0, FIELD(s.gravity.g.y())},
+        {"wall_sides", "wallLeftCheck", false, 0.0, FIELD(s.walls.left)},
+        {"wall_sides", "wallRightCheck", false, 0.0, FIELD(s.walls.right)},
+        {"wall_sides", "wallTopCheck", false, 0.0, FIELD(s.walls.top)},
+        {"wall_sides", "wallBottomCheck", false, 0.0, FIELD(s.walls.bottom)},
+        {"wall_model", "wallModelCombo", "reverse", indexOf<sim::WallModel>(sim::wallModelNames(), "reverse"),
+         FIELD(s.walls.model)},
+        {"wall_restitution", "restitutionSpin", 0.75, 0.75, FIELD(s.walls.restitution)},
+        {"middle_wall", "middleWallCheck", true, 1.0, FIELD(s.walls.middle)},
+        {"centre_only", "centreOnlyCheck", true, 1.0, FIELD(s.walls.centreOnly)},
+        {"drag", "dragGroup", true, 1.0, FIELD(s.drag.enabled)},
+        {"drag_law", "dragLawCombo", "quadratic", indexOf<sim::DragLaw>(sim::dragLawNames(), "quadratic"),
+         FIELD(s.drag.law)},
+        {"drag_k", "dragKSpin", 0.0125, 0.0125, FIELD(s.drag.k)},
+        {"wind_mode", "windModeCombo", "noise", indexOf<sim::WindMode>(sim::windModeNames(), "noise"),
+         FIELD(s.wind.mode)},
+        {"wind_strength", "windStrengthSpin", 1234.0, 1234.0, FIELD(s.wind.strength)},
+        {"wind_scale", "windScaleCombo", "mass", indexOf<sim::ForceScale>(sim::forceScaleNames(), "mass"),
+         FIELD(s.wind.scale)},
+        {"wind_smoothed_step", "windSmoothedStepSpin", 0.25, 0.25, FIELD(s.wind.smoothedStep)},
+        {"wind_frequency", "windFrequencySpin", 2.5, 2.5, FIELD(s.wind.noiseFrequency)},
+        {"wind_compare", "windCompareCombo", "smoothed", indexOf<sim::WindMode>(sim::windModeNames(), "smoothed"),
+         FIELD(s.wind.compare)},
+        {"random_accel", "randomAccelGroup", true, 1.0, FIELD(s.randomAccel.enabled)},
+        {"random_fixed", "randomFixedCheck", true, 1.0, FIELD(s.randomAccel.fixed)},
+        {"random_strength", "randomStrengthSpin", 250.0, 250.0, FIELD(s.randomAccel.strength)},
+        {"point", "pointGroup", true, 1.0, FIELD(s.point.enabled)},
+        {"point_kind", "pointKindCombo", "repel", indexOf<sim::PointKind>(sim::pointKindNames(), "repel"),
+         FIELD(s.point.kind)},
+        {"point_x", "pointXSpin", 111.0, 111.0, FIELD(s.point.position.x())},
+        {"point_y", "pointYSpin", 222.0, 222.0, FIELD(s.point.position.y())},
+        {"point_strength", "pointStrengthSpin", 2.5e7, 2.5e7, FIELD(s.point.strength)},
+        {"point_clamp", "pointClampSpin", 4000.0, 4000.0, FIELD(s.point.maxAccel)},
+        {"point_scale", "pointScaleCombo", "radius", indexOf<sim::ForceScale>(sim::forceScaleNames(), "radius"),
+         FIELD(s.point.scale)},
+        {"spring", "springGroup", true, 1.0, FIELD(s.spring.enabled)},
+        {"spring_k", "springKSpin", 9.0, 9.0, FIELD(s.spring.k)},
+        {"spring_x", "springXSpin", 250.0, 250.0, FIELD(s.spring.anchor.x())},
+        {"spring_y", "springYSpin", 150.0, 150.0, FIELD(s.spring.anchor.y())},
+        {"mutual_gravity", "mutualGravityGroup", true, 1.0, FIELD(s.mutualGravity.enabled)},
+        {"mutual_g", "mutualGSpin", -5e4, -5e4, FIELD(s.mutualGravity.G)},
+        {"mutual_softening", "mutualSofteningSpin", 3.5, 3.5, FIELD(s.mutualGravity.softening)},
+        {"homing", "homingGroup", true, 1.0, FIELD(s.homing.enabled)},
+        {"homing_strength", "homingStrengthSpin", 0.5, 0.5, FIELD(s.homing.strength)},
+        {"pointer", "pointerGroup", true, 1.0, FIELD(s.pointer.enabled)},
+        {"pointer_strength", "pointerStrengthSpin", 5e6, 5e6, FIELD(s.pointer.strength)},
+        {"pointer_clamp", "pointerClampSpin", 0.0, 0.0, FIELD(s.pointer.maxAccel)},
+        {"speed_limit", "speedLimitGroup", true, 1.0, FIELD(s.speedLimit.enabled)},
+        {"speed_limit", "speedLimitSpin", 450.0, 450.0, FIELD(s.speedLimit.max)},
+        {"detection", "detectionCombo", "grid", indexOf<sim::Detection>(sim::detectionNames(), "grid"),
+         FIELD(s.collisions.detection)},
+        {"response", "responseCombo", "2d-impulse", indexOf<sim::Response>(sim::responseNames(), "2d-impulse"),
+         FIELD(s.collisions.response)},
+        {"ball_restitution", "ballRestitutionSpin", 0.5, 0.5, FIELD(s.collisions.restitution)},
+        {"continuous", "continuousCheck", true, 1.0, FIELD(s.collisions.continuous)},
+        {"integrator", "integratorCombo", "rk45", indexOf<sim::IntegratorKind>(sim::integratorNames(), "rk45"),
+         FIELD(s.time.integrator)},
+        {"dt", "dtSpin", 5.0, 0.005, FIELD(s.time.dt)},
+        {"substeps", "substepsSpin", 4.0, 4.0, FIELD(s.time.substeps)},
+        {"tolerance", "toleranceSpin", 1e-6, 1e-6, FIELD(s.time.tolerance)},
+        {"per_frame", "perFrameCheck", true, 1.0, FIELD(s.time.perFrame)},
+        {"seed", "seedEdit", "12345", 12345.0, FIELD(s.time.seed)},
+        {"time_scale", "timeScaleSpin", 0.25, 0.25, [](C c) { return c.timeScale(); }},
+        {"ball_count", "ballCountSpin", 12.0, 12.0, [](C c) { return double(c.spawn().count); }},
+        {"fully_inside", "fullyInsideCheck", false, 0.0, [](C c) { return double(c.spawn().fullyInside); }},
+    };
+    return cases;
+}
+
+// Sets a widget as a user's finished edit would.
+bool setWidget(QWidget* w, const QVariant& value)
+{
+    if (auto* spin = qobject_cast<QDoubleSpinBox*>(w)) {
+        spin->setValue(value.toDouble());
+    } else if (auto* combo = qobject_cast<QComboBox*>(w)) {
+        const int i = combo->findText(value.toString());
+        if (i < 0)
+            return false;
+        combo->setCurrentIndex(i);
+    } else if (auto* check = qobject_cast<QCheckBox*>(w)) {
+        check->setChecked(value.toBool());
+    } else if (auto* group = qobject_cast<QGroupBox*>(w)) {
+        group->setChecked(value.toBool());
+    } else if (auto* edit = qobject_cast<QLineEdit*>(w)) {
+        edit->setText(value.toString());
+        emit edit->editingFinished();
+    } else {
+        return false;
+    }
+    return true;
+}
+
+bool sameBits(double a, double b)
+{
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+// Every field of two settings structs, bit for bit; the first difference named.
+QString settingsDifference(const sim::WorldSettings& a, const sim::WorldSettings& b)
+{
+#define SAME(f)                                                                                                        \
+    if (!sameBits(double(a.f), double(b.f)))                                                                           \
+        return QStringLiteral(#f ": %1 vs %2").arg(double(a.f), 0, 'g', 17).arg(double(b.f), 0, 'g', 17);
+    SAME(box.width) SAME(box.height)
+    SAME(walls.left) SAME(walls.right) SAME(walls.top) SAME(walls.bottom) SAME(walls.model) SAME(walls.restitution)
+    SAME(walls.middle) SAME(walls.centreOnly)
+    SAME(time.integrator) SAME(time.dt) SAME(time.substeps) SAME(time.tolerance) SAME(time.perFrame)
+    if (a.time.seed != b.time.seed)
+        return QStringLiteral("time.seed");
+    SAME(gravity.enabled) SAME(gravity.g.x()) SAME(gravity.g.y())
+    SAME(drag.enabled) SAME(drag.law) SAME(drag.k)
+    SAME(wind.mode) SAME(wind.strength) SAME(wind.scale) SAME(wind.smoothedStep) SAME(wind.noiseFrequency)
+    SAME(wind.compare)
+    SAME(randomAccel.enabled) SAME(randomAccel.fixed) SAME(randomAccel.strength)
+    SAME(point.enabled) SAME(point.kind) SAME(point.position.x()) SAME(point.position.y()) SAME(point.strength)
+    SAME(point.maxAccel) SAME(point.scale)
+    SAME(spring.enabled) SAME(spring.anchor.x()) SAME(spring.anchor.y()) SAME(spring.k)
+    SAME(mutualGravity.enabled) SAME(mutualGravity.G) SAME(mutualGravity.softening)
+    SAME(homing.enabled) SAME(homing.strength)
+    SAME(pointer.enabled) SAME(pointer.strength) SAME(pointer.maxAccel)
+    SAME(speedLimit.enabled) SAME(speedLimit.max)
+    SAME(collisions.detection) SAME(collisions.response) SAME(collisions.restitution) SAME(collisions.continuous)
+#undef SAME
+    return {};
+}
+
+Lesson lessonOf(const sim::Scene& scene, const QStringList& controls = {})
+{
+    Lesson lesson;
+    lesson.id = QStringLiteral("test-scene");
+    lesson.title = QStringLiteral("Test scene");
+    lesson.scene = scene;
+    lesson.controls = controls;
+    return lesson;
+}
+
+} // namespace
+
+class GuiWorkbenchTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void tableCoversEveryControl();
+    void eachControlEditsItsFieldAndUndoes_data();
+    void eachControlEditsItsFieldAndUndoes();
+    void sliderDragIsOneUndoStep();
+    void logSliderSpansDecades();
+    void outOfRangeIsReportedNotClamped();
+    void resetRestoresTheLessonsValues();
+    void lessonControlsComeFirst();
+    void switchingLessonsUpdatesTheDocks();
+    void shortcutsAct();
+    void saveThenOpenGivesTheSameScene();
+    void lessonsTreeFollowsTheCourse();
+    void inspectorShowsTheSelectedBall();
+};
+
+void GuiWorkbenchTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("ForceLabTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_gui_workbench"));
+    QSettings().clear();
+}
+
+void GuiWorkbenchTest::tableCoversEveryControl()
+{
+    // "Every parameter": each row of the panel has at least one case below,
+    // and every control name a lesson may list shows at least one row.
+    SimulationController controller;
+    ParameterPanel panel(&controller);
+    QStringList covered;
+    for (const ControlCase& c : controlCases())
+        covered.append(QString::fromLatin1(c.row));
+    for (const QString& row : panel.rowKeys())
+        QVERIFY2(covered.contains(row), qPrintable(row));
+    for (const QString& name : LessonLoader::controlNames()) {
+        const QStringList rows = ParameterPanel::rowsForControl(name);
+        QVERIFY2(!rows.isEmpty(), qPrintable(name));
+        for (const QString& row : rows)
+            QVERIFY2(panel.rowKeys().contains(row), qPrintable(row));
+    }
+}
+
+void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes_data()
+{
+    QTest::addColumn<int>("index");
+    for (std::size_t i = 0; i < controlCases().size(); ++i)
+        QTest::newRow(controlCases()[i].widget) << int(i);
+}
+
+void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes()
+{
+    QFETCH(int, index);
+    const ControlCase& c = controlCases()[std::size_t(index)];
+    SimulationController controller;
+    QVERIFY(!controller.setScene(plainScene()));
+    ParameterPanel panel(&controller);
+    panel.setShowAll(true);
+    QSignalSpy errors(&controller, &SimulationController::errorOccurred);
+
+    QWidget* w = panel.findChild<QWidget*>(QString::fromLatin1(c.widget));
+    QVERIFY2(w, c.widget);
+    const double before = c.field(controller);
+    QVERIFY2(before != c.expected, "the case must change the field");
+    const int steps = panel.undoStack()->count();
+
+    QVERIFY(setWidget(w, c.value));
+    QVERIFY2(errors.isEmpty(), errors.isEmpty() ? "" : qPrintable(errors.first().first().toString()));
+    QCOMPARE(c.field(controller), c.expected);
+    QCOMPARE(panel.undoStack()->count(), steps + 1);
+
+    panel.undoStack()->undo();
+    QCOMPARE(c.field(controller), before);
+    panel.undoStack()->redo();
+    QCOMPARE(c.field(controller), c.expected);
+    QCOMPARE(errors.count(), 0);
+
+    if (QString::fromLatin1(c.row) == QStringLiteral("ball_count"))
+        QCOMPARE(controller.world().balls().size(), 2 + 12); // the listed two and twelve placed at random
+}
+
+void GuiWorkbenchTest::sliderDragIsOneUndoStep()
+{
+    SimulationController controller;
+    QVERIFY(!controller.setScene(plainScene()));
+    ParameterPanel panel(&controller);
+    auto* slider = panel.findChild<QSlider*>(QStringLiteral("gravityYSlider"));
+    QVERIFY(slider);
+    const double g0 = controller.world().settings().gravity.g.y();
+
+    // One drag: three moves, each live in the world, one undo step.
+    slider->setSliderDown(true);
+    for (int p : {600, 700, 800}) {
+        slider->setValue(p);
+        const double want = -2000.0 + 4000.0 * p / NumberControl::kSteps;
+        QCOMPARE(controller.world().settings().gravity.g.y(), want);
+    }
+    slider->setSliderDown(false);
+    QCOMPARE(panel.undoStack()->count(), 1);
+    // A second drag of the same slider is a step of its own.
+    slider->setSliderDown(true);
+    slider->setValue(900);
+    slider->setSliderDown(false);
+    QCOMPARE(panel.undoStack()->count(), 2);
+    panel.undoStack()->undo();
+    QCOMPARE(controller.world().settings().gravity.g.y(), 1200.0);
+    panel.undoStack()->undo();
+    QCOMPARE(controller.world().settings().gravity.g.y(), g0);
+}
+
+void GuiWorkbenchTest::logSliderSpansDecades()
+{
+    SimulationController controller;
+    ParameterPanel panel(&controller);
+    auto* control = panel.findChild<NumberControl*>(QStringLiteral("mutualGControl"));
+    QVERIFY(control);
+    // 1 … 1e8 over the slider: each eighth of the travel is a factor of 10.
+    QCOMPARE(control->valueAt(0), 1.0);
+    QVERIFY(std::abs(control->valueAt(NumberControl::kSteps / 8) / 10.0 - 1.0) < 1e-12);
+    QVERIFY(std::abs(control->valueAt(NumberControl::kSteps / 2) / 1e4 - 1.0) < 1e-12);
+    QCOMPARE(control->positionFor(1e4), NumberControl::kSteps / 2);
+    QCOMPARE(control->positionFor(1e8), NumberControl::kSteps);
+    // The spin box still takes values the slider does not reach.
+    auto* spin = control->spinBox();
+    spin->setValue(-3e9);
+    QCOMPARE(controller.world().settings().mutualGravity.G, -3e9);
+    QCOMPARE(control->slider()->value(), 0);
+}
+
+void GuiWorkbenchTest::outOfRangeIsReportedNotClamped()
+{
+    MainWindow window(QString(), nullptr);
+    QVERIFY(window.setLesson(lessonOf(plainScene())));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.parameterPanel()->setShowAll(true);
+    QSignalSpy errors(window.controller(), &SimulationController::errorOccurred);
+
+    // Typed 1.5 for a restitution in [0, 1]: refused by the world, said in the
+    // status bar, the box back at the world's value.
+    auto* spin = window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("restitutionSpin"));
+    QVERIFY(spin);
+    const double before = window.controller()->world().settings().walls.restitution;
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("1.5"));
+    QTest::keyClick(spin, Qt::Key_Return);
+    QCOMPARE(errors.count(), 1);
+    QVERIFY2(errors.first().first().toString().startsWith(QStringLiteral("world.restitution: 1.5")),
+             qPrintable(errors.first().first().toString()));
+    QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("world.restitution")));
+    QCOMPARE(window.controller()->world().settings().walls.restitution, before);
+    QCOMPARE(spin->value(), before);
+    QCOMPARE(window.parameterPanel()->undoStack()->count(), 0);
+
+    // dt = 0 ms: the interval (0, 1] s is open at 0.
+    auto* dt = window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("dtSpin"));
+    QVERIFY(dt);
+    dt->setValue(0.0);
+    QCOMPARE(errors.count(), 2);
+    QVERIFY(errors.last().first().toString().startsWith(QStringLiteral("time.dt")));
+    QCOMPARE(window.controller()->world().settings().time.dt, 1.0 / 60.0);
+    QCOMPARE(dt->value(), 1000.0 / 60.0);
+}
+
+void GuiWorkbenchTest::resetRestoresTheLessonsValues()
+{
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("gravity")));
+    const sim::WorldSettings lesson = window.lesson().scene.settings;
+    ParameterPanel* panel = window.parameterPanel();
+    panel->setShowAll(true);
+    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("gravityYSpin")), 123.0));
+    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("restitutionSpin")), 0.25));
+    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("dragGroup")), true));
+    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("ballCountSpin")), 7.0));
+    QVERIFY(!settingsDifference(window.controller()->world().settings(), lesson).isEmpty());
+
+    window.findChild<QAction*>(QStringLiteral("resetAction"))->trigger();
+    QCOMPARE(settingsDifference(window.controller()->world().settings(), lesson), QString());
+    QCOMPARE(window.controller()->spawn().count, window.lesson().scene.spawn.count);
+    QCOMPARE(window.controller()->world().time(), 0.0);
+    auto* gy = panel->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
+    QCOMPARE(gy->value(), lesson.gravity.g.y());
+    QCOMPARE(panel->undoStack()->count(), 0);
+}
+
+void GuiWorkbenchTest::lessonControlsComeFirst()
+{
+    SimulationController controller;
+    ParameterPanel panel(&controller);
+    // The lesson's rows in its order, the speed always, nothing else.
+    QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("\"no_such_control\".*ignored")));
+    panel.setLessonControls({QStringLiteral("dt"), QStringLiteral("no_such_control"), QStringLiteral("gravity")});
+    QCOMPARE(panel.lessonControls(), (QStringList{QStringLiteral("dt"), QStringLiteral("gravity")}));
+    QCOMPARE(panel.visibleSections(), (QStringList{QStringLiteral("time"), QStringLiteral("gravity")}));
+    QCOMPARE(panel.visibleRows(), (QStringList{QStringLiteral("time_scale"), QStringLiteral("dt"),
+                                               QStringLiteral("gravity_x"), QStringLiteral("gravity_y")}));
+    // Show all: the same first, then everything else.
+    panel.findChild<QCheckBox*>(QStringLiteral("showAllCheck"))->setChecked(true);
+    QVERIFY(panel.showAll());
+    const QStringList all = panel.visibleRows();
+    QCOMPARE(all.size(), panel.rowKeys().size());
+    QCOMPARE(all.mid(0, 2), (QStringList{QStringLiteral("time_scale"), QStringLiteral("integrator")}));
+    QCOMPARE(panel.visibleSections().mid(0, 2), (QStringList{QStringLiteral("time"), QStringLiteral("gravity")}));
+}
+
+void GuiWorkbenchTest::switchingLessonsUpdatesTheDocks()
+{
+    MainWindow window;
+    for (const QString& id : {QStringLiteral("gravity"), QStringLiteral("drag"), QStringLiteral("showcase")}) {
+        QVERIFY(window.openLesson(id));
+        const Lesson& lesson = window.lesson();
+        // Lessons dock: the lesson selected, its text and challenges shown.
+        LessonsDock* lessons = window.lessonsDock();
+        QCOMPARE(lessons->currentSource(), lesson.source);
+        QTreeWidgetItem* current = lessons->tree()->currentItem();
+        QVERIFY(current);
+        QVERIFY(current->text(0).contains(lesson.title));
+        const QString text = lessons->textBrowser()->toPlainText();
+        QVERIFY(text.contains(lesson.title));
+        for (const QString& challenge : lesson.challenges)
+            QVERIFY(text.contains(challenge.left(30)));
+        // Parameters: the lesson's controls, and their rows first.
+        ParameterPanel* panel = window.parameterPanel();
+        QCOMPARE(panel->lessonControls(), lesson.controls);
+        QStringList expected{QStringLiteral("time_scale")}; // always shown
+        for (const QString& control : lesson.controls)
+            for (const QString& row : ParameterPanel::rowsForControl(control))
+                if (!expected.contains(row))
+                    expected.append(row);
+        const QStringList shown = panel->visibleRows();
+        QCOMPARE(shown.size(), expected.size());
+        for (const QString& row : expected)
+            QVERIFY2(shown.contains(row), qPrintable(row));
+        // The first visible row belongs to the lesson's first control (or is the
+        // speed when that control's section is Time).
+        const QString firstRow = shown.first();
+        QVERIFY2(ParameterPanel::rowsForControl(lesson.controls.first()).contains(firstRow) ||
+                     firstRow == QStringLiteral("time_scale"),
+                 qPrintable(firstRow));
+        // The values are the lesson's.
+        auto* gy = panel->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
+        QCOMPARE(gy->value(), lesson.scene.settings.gravity.g.y());
+        QCOMPARE(window.windowTitle(), QStringLiteral("%1 — ForceLab").arg(lesson.title));
+    }
+}
+
+void GuiWorkbenchTest::shortcutsAct()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(plainScene())));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.canvas()->setFocus();
+    SimulationController* controller = window.controller();
+    controller->pause();
+
+    // [ and ]: half and double speed, within 0.05 … 4.
+    QCOMPARE(controller->timeScale(), 1.0);
+    QTest::keyClick(&window, Qt::Key_BracketLeft);
+    QCOMPARE(controller->timeScale(), 0.5);
+    QTest::keyClick(&window, Qt::Key_BracketRight);
+    QTest::keyClick(&window, Qt::Key_BracketRight);
+    QCOMPARE(controller->timeScale(), 2.0);
+    for (int k = 0; k < 4; ++k)
+        QTest::keyClick(&window, Qt::Key_BracketRight);
+    QCOMPARE(controller->timeScale(), SimulationController::kMaxTimeScale);
+    for (int k = 0; k < 10; ++k)
+        QTest::keyClick(&window, Qt::Key_BracketLeft);
+    QCOMPARE(controller->timeScale(), SimulationController::kMinTimeScale);
+
+    // Ctrl+Z / Ctrl+Shift+Z: undo and redo a parameter edit.
+    auto* gy = window.parameterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
+    window.parameterPanel()->setShowAll(true);
+    const double g0 = controller->world().settings().gravity.g.y();
+    gy->setValue(321.0);
+    QCOMPARE(controller->world().settings().gravity.g.y(), 321.0);
+    window.canvas()->setFocus();
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(controller->world().settings().gravity.g.y(), g0);
+    QCOMPARE(gy->value(), g0);
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(controller->world().settings().gravity.g.y(), 321.0);
+    // The speed changes were undo steps too: undo the last one.
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); // gravity
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); // the last "[": 0.0625 → 0.05
+    QCOMPARE(controller->timeScale(), 0.0625);
+
+    // Space plays, → steps, R resets (the lesson's own values).
+    QTest::keyClick(&window, Qt::Key_Space);
+    QVERIFY(controller->isPlaying());
+    QTest::keyClick(&window, Qt::Key_Right);
+    QVERIFY(!controller->isPlaying());
+    QVERIFY(controller->world().stepCount() >= 1);
+    gy->setValue(777.0);
+    window.canvas()->setFocus();
+    QTest::keyClick(&window, Qt::Key_R);
+    QCOMPARE(controller->world().time(), 0.0);
+    QCOMPARE(controller->world().settings().gravity.g.y(), g0);
+
+    // Every shortcut belongs to one action, shown in a menu.
+    for (const char* name : {"playAction", "stepAction", "resetAction", "slowerAction", "fasterAction", "undoAction",
+                             "redoAction", "openAction", "saveAction", "screenshotAction", "exportAction",
+                             "presentationAction", "previousLessonAction", "nextLessonAction"}) {
+        auto* action = window.findChild<QAction*>(QString::fromLatin1(name));
+        QVERIFY2(action, name);
+        QVERIFY2(!action->shortcut().isEmpty(), name);
+        QVERIFY2(!action->associatedObjects().isEmpty(), name);
+    }
+    QCOMPARE(window.findChild<QAction*>(QStringLiteral("openAction"))->shortcut(), QKeySequence(QKeySequence::Open));
+    QCOMPARE(window.findChild<QAction*>(QStringLiteral("saveAction"))->shortcut(), QKeySequence(QKeySequence::Save));
+    QCOMPARE(window.findChild<QAction*>(QStringLiteral("presentationAction"))->shortcut(), QKeySequence(Qt::Key_F11));
+    controller->pause();
+}
+
+void GuiWorkbenchTest::saveThenOpenGivesTheSameScene()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("showcase")));
+    SimulationController* controller = window.controller();
+    controller->pause();
+    // Change a few settings live and let the balls move, so the saved scene
+    // differs from the lesson's start in both settings and balls.
+    window.parameterPanel()->setShowAll(true);
+    QVERIFY(setWidget(window.parameterPanel()->findChild<QWidget*>(QStringLiteral("gravityGroup")), true));
+    QVERIFY(setWidget(window.parameterPanel()->findChild<QWidget*>(QStringLiteral("gravityYSpin")), 321.5));
+    QVERIFY(setWidget(window.parameterPanel()->findChild<QWidget*>(QStringLiteral("integratorCombo")), "rk4"));
+    for (int k = 0; k < 37; ++k)
+        controller->stepOnce();
+    const sim::WorldSettings settings = controller->world().settings();
+    const sim::BallState balls = controller->world().balls();
+    QVERIFY(balls.size() > 100);
+
+    const QString path = dir.filePath(QStringLiteral("my-scene.json"));
+    QVERIFY(window.saveLessonTo(path));
+    QVERIFY(window.openLesson(path));
+    QCOMPARE(window.lesson().source, path);
+    QCOMPARE(window.lesson().id, QStringLiteral("my-scene"));
+    QCOMPARE(window.lesson().scene.spawn.count, 0);
+    QCOMPARE(window.lesson().controls, LessonLoader::load(QStringLiteral("showcase")).lesson->controls);
+
+    const sim::World& world = controller->world();
+    QCOMPARE(settingsDifference(world.settings(), settings), QString());
+    QCOMPARE(world.balls().size(), balls.size());
+    for (int i = 0; i < balls.size(); ++i) {
+        const sim::Ball a = balls.ball(i), b = world.balls().ball(i);
+        QVERIFY2(sameBits(a.position.x(), b.position.x()) && sameBits(a.position.y(), b.position.y()) &&
+                     sameBits(a.velocity.x(), b.velocity.x()) && sameBits(a.velocity.y(), b.velocity.y()) &&
+                     sameBits(a.radius, b.radius) && sameBits(a.mass, b.mass) && a.color == b.color &&
+                     sameBits(a.home.x(), b.home.x()) && sameBits(a.home.y(), b.home.y()),
+                 qPrintable(QStringLiteral("ball %1").arg(i)));
+    }
+    // Saving the reopened scene writes the same file.
+    const QString again = dir.filePath(QStringLiteral("my-scene.json"));
+    QFile first(path);
+    QVERIFY(first.open(QIODevice::ReadOnly));
+    const QByteArray bytes = first.readAll();
+    first.close();
+    QVERIFY(window.saveLessonTo(again));
+    QFile second(again);
+    QVERIFY(second.open(QIODevice::ReadOnly));
+    QCOMPARE(second.readAll(), bytes);
+}
+
+void GuiWorkbenchTest::lessonsTreeFollowsTheCourse()
+{
+    MainWindow window;
+    LessonsDock* dock = window.lessonsDock();
+    const QStringList order = dock->order();
+    const QStringList files = LessonLoader::builtInFiles();
+    QCOMPARE(order.size(), files.size());
+
+    // The showcase first; then parts A, B, C and beyond, stages rising.
+    QTreeWidget* tree = dock->tree();
+    QVERIFY(tree->topLevelItemCount() >= 2);
+    QCOMPARE(tree->topLevelItem(0)->childCount(), 0);
+    int lastStage = -1;
+    int lastPart = 0;
+    for (const QString& source : order) {
+        const LoadResult r = LessonLoader::load(source);
+        QVERIFY2(r.ok(), qPrintable(source));
+        QVERIFY2(r.lesson->stage >= lastStage, qPrintable(source));
+        QVERIFY(LessonsDock::partOf(r.lesson->stage) >= lastPart);
+        lastStage = r.lesson->stage;
+        lastPart = LessonsDock::partOf(r.lesson->stage);
+    }
+    QCOMPARE(LessonLoader::load(order.first()).lesson->stage, 0);
+    for (int i = 1; i < tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* part = tree->topLevelItem(i);
+        const QString name = part->text(0);
+        for (int j = 0; j < part->childCount(); ++j) {
+            const int stage = LessonLoader::load(part->child(j)->data(0, Qt::UserRole).toString()).lesson->stage;
+            if (name.startsWith(QStringLiteral("Part A")))
+                QVERIFY(stage >= 1 && stage <= 9);
+            else if (name.startsWith(QStringLiteral("Part B")))
+                QVERIFY(stage >= 10 && stage <= 22);
+            else if (name.startsWith(QStringLiteral("Part C")))
+                QVERIFY(stage >= 23 && stage <= 29);
+            else
+                QVERIFY(stage >= 30);
+        }
+    }
+
+    // Next and Previous walk the same order; the ends switch the buttons off.
+    QVERIFY(window.openLesson(order.first()));
+    auto* next = window.findChild<QAction*>(QStringLiteral("nextLessonAction"));
+    auto* previous = window.findChild<QAction*>(QStringLiteral("previousLessonAction"));
+    QVERIFY(!previous->isEnabled());
+    const int walk = std::min<int>(5, int(order.size()) - 1);
+    for (int i = 1; i <= walk; ++i) {
+        next->trigger();
+        QCOMPARE(window.lesson().source, order.at(i));
+        QCOMPARE(dock->tree()->currentItem()->data(0, Qt::UserRole).toString(), order.at(i));
+    }
+    previous->trigger();
+    QCOMPARE(window.lesson().source, order.at(walk - 1));
+    QVERIFY(window.openLesson(order.last()));
+    QVERIFY(!next->isEnabled());
+    QVERIFY(previous->isEnabled());
+
+    // Clicking an entry opens it.
+    QTreeWidgetItem* item = tree->topLevelItem(0);
+    emit tree->itemActivated(item, 0);
+    QCOMPARE(window.lesson().source, order.first());
+}
+
+void GuiWorkbenchTest::inspectorShowsTheSelectedBall()
+{
+    sim::Scene scene = plainScene();
+    scene.spawn.count = 0;
+    scene.settings.gravity.enabled = true;
+    scene.settings.gravity.g = {30.0, 700.0};
+    scene.settings.drag.enabled = true;
+    scene.settings.drag.k = 0.5;
+    scene.settings.spring.enabled = true;
+    scene.settings.spring.k = 2.0;
+    scene.settings.spring.anchor = {300.0, 200.0};
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(scene)));
+    window.resize(1400, 900);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    SimulationController* controller = window.controller();
+    controller->pause();
+    controller->stepOnce();
+
+    // Click ball 1 on the canvas.
+    Canvas* canvas = window.canvas();
+    const sim::World& world = controller->world();
+    const QPointF at = canvas->worldToWidget(world.balls().position.col(1));
+    QTest::mouseClick(canvas, Qt::LeftButton, {}, at.toPoint());
+    QCOMPARE(canvas->selectedBall(), 1);
+    InspectorDock* inspector = window.inspectorDock();
+    QCOMPARE(inspector->selectedBall(), 1);
+    controller->stepOnce(); // and it follows every step
+
+    const InspectorDock::Readout& r = inspector->readout();
+    const sim::Matrix2X a = world.accelerations();
+    QCOMPARE(r.position, sim::Vec2(world.balls().position.col(1)));
+    QCOMPARE(r.velocity, sim::Vec2(world.balls().velocity.col(1)));
+    QCOMPARE(r.acceleration, sim::Vec2(a.col(1)));
+    QCOMPARE(r.mass, 3.5);
+    QCOMPARE(r.radius, 12.0);
+    // Forces per model from their closed forms: m g, -m k v, -m k_s (x - anchor).
+    QCOMPARE(int(r.forces.size()), 3);
+    const double m = 3.5;
+    const sim::Vec2 x = r.position, v = r.velocity;
+    const sim::Vec2 expected[] = {m * sim::Vec2(30.0, 700.0), -m * 0.5 * v, -m * 2.0 * (x - sim::Vec2(300.0, 200.0))};
+    const char* names[] = {"gravity", "drag", "spring"};
+    sim::Vec2 sum(0.0, 0.0);
+    for (int k = 0; k < 3; ++k) {
+        QCOMPARE(r.forces[std::size_t(k)].model, QString::fromLatin1(names[k]));
+        QVERIFY2((r.forces[std::size_t(k)].force - expected[k]).norm() < 1e-9 * (1.0 + expected[k].norm()), names[k]);
+        sum += r.forces[std::size_t(k)].force;
+    }
+    QVERIFY((sum - m * r.acceleration).norm() < 1e-9 * (1.0 + sum.norm()));
+    QCOMPARE(r.totalForce, m * r.acceleration);
+    // The labels show the same numbers.
+    auto* position = inspector->findChild<QLabel*>(QStringLiteral("inspectorPosition"));
+    QVERIFY(position->text().contains(QString::number(x.x(), 'f', 1)));
+    QVERIFY(position->text().contains(QString::number(x.y(), 'f', 1)));
+    auto* forces = inspector->findChild<QLabel*>(QStringLiteral("inspectorForces"));
+    QVERIFY(forces->text().contains(QStringLiteral("spring")));
+
+    // The trail switch: a trail behind the selected ball only.
+    auto* trail = inspector->findChild<QCheckBox*>(QStringLiteral("trailCheck"));
+    QVERIFY(!canvas->trailsEnabled());
+    trail->setChecked(true);
+    QVERIFY(canvas->trailsEnabled());
+    QCOMPARE(canvas->trailScope(), TrailRecorder::Scope::Selected);
+    trail->setChecked(false);
+    QVERIFY(!canvas->trailsEnabled());
+
+    // Clicking empty space clears the selection.
+    QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->worldToWidget(sim::Vec2(580.0, 20.0)).toPoint());
+    QCOMPARE(inspector->selectedBall(), -1);
+}
+
+QTEST_MAIN(GuiWorkbenchTest)
+#include "test_gui_workbench.moc"
