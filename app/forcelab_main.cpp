@@ -1,11 +1,14 @@
 // forcelab: the workbench. `forcelab [LESSON]` opens a lesson file or a
 // built-in lesson id; without one it opens the last lesson or the showcase.
 
+#include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/render_bench.h"
+#include "ui/simulation_controller.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QScreen>
 #include <QTimer>
 
 #include <cstdio>
@@ -31,7 +34,10 @@ int main(int argc, char* argv[])
                                    QStringLiteral("SECONDS"), QStringLiteral("3"));
     const QCommandLineOption benchRender(QStringLiteral("bench-render"),
                                          QStringLiteral("Time drawing 1k, 10k and 50k balls offscreen and quit."));
-    parser.addOptions({screenshot, after, benchRender});
+    const QCommandLineOption select(QStringLiteral("select"),
+                                    QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
+                                    QStringLiteral("N"));
+    parser.addOptions({screenshot, after, select, benchRender});
     parser.process(app);
 
     if (parser.isSet(benchRender)) {
@@ -42,7 +48,23 @@ int main(int argc, char* argv[])
 
     const QStringList lessons = parser.positionalArguments();
     forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
+    if (parser.isSet(screenshot)) {
+        // The picture shows the whole screen's worth of workbench.
+        if (const QScreen* screen = window.screen())
+            window.setGeometry(screen->availableGeometry());
+    }
     window.show();
+    if (parser.isSet(select)) {
+        bool ok = false;
+        const int ball = parser.value(select).toInt(&ok);
+        const int count = window.controller()->world().balls().size();
+        if (!ok || ball < 0 || ball >= count) {
+            std::fprintf(stderr, "forcelab: --select: \"%s\" is not a ball number from 0 to %d\n",
+                         qPrintable(parser.value(select)), count - 1);
+            return 2;
+        }
+        window.canvas()->setSelectedBall(ball);
+    }
 
     if (parser.isSet(screenshot)) {
         bool ok = false;

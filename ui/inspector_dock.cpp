@@ -17,13 +17,11 @@ namespace forcelab {
 
 namespace {
 
-QString vec(const sim::Vec2& v, const QString& unit)
+// "(x, y) unit", and "|v| = size" when `symbol` is given.
+QString vec(const sim::Vec2& v, const QString& unit, const QString& symbol = {})
 {
-    return QStringLiteral("(%1, %2) %3, size %4")
-        .arg(v.x(), 0, 'f', 1)
-        .arg(v.y(), 0, 'f', 1)
-        .arg(unit)
-        .arg(v.norm(), 0, 'f', 1);
+    const QString xy = QStringLiteral("(%1, %2) %3").arg(v.x(), 0, 'f', 1).arg(v.y(), 0, 'f', 1).arg(unit);
+    return symbol.isEmpty() ? xy : xy + QStringLiteral("   |%1| = %2").arg(symbol).arg(v.norm(), 0, 'f', 1);
 }
 
 QLabel* valueLabel(const QString& name, QWidget* parent)
@@ -199,8 +197,8 @@ void InspectorDock::refresh()
 
     m_ballLabel->setText(tr("#%1 of %2").arg(i).arg(balls.size()));
     m_positionLabel->setText(vec(r.position, QStringLiteral("px")));
-    m_velocityLabel->setText(vec(r.velocity, QStringLiteral("px/s")));
-    m_accelerationLabel->setText(vec(r.acceleration, QStringLiteral("px/s²")));
+    m_velocityLabel->setText(vec(r.velocity, QStringLiteral("px/s"), QStringLiteral("v")));
+    m_accelerationLabel->setText(vec(r.acceleration, QStringLiteral("px/s²"), QStringLiteral("a")));
     m_massLabel->setText(tr("m = %1, r = %2 px").arg(r.mass, 0, 'g', 5).arg(r.radius, 0, 'f', 2));
 
     QString html = QStringLiteral("<b>%1</b><table cellspacing='0' cellpadding='2'>").arg(tr("Forces F = m a"));

@@ -23,6 +23,8 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
+#include <QPixmap>
 #include <QRegularExpression>
 #include <QSaveFile>
 #include <QScreen>
@@ -44,6 +46,19 @@ const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kLastLessonKey = QStringLiteral("lesson/last");
 const QString kDirectoryKey = QStringLiteral("lesson/directory");
+
+// A red dot: the usual sign for recording.
+QIcon recordIcon()
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(0x80, 0x10, 0x10), 1.5));
+    p.setBrush(QColor(0xd0, 0x20, 0x20));
+    p.drawEllipse(QRectF(6, 6, 20, 20));
+    return QIcon(pixmap);
+}
 } // namespace
 
 MainWindow::MainWindow(const QString& lesson, QWidget* parent)
@@ -103,22 +118,26 @@ void MainWindow::createActions()
     m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
     m_openAction->setObjectName(QStringLiteral("openAction"));
     m_openAction->setShortcut(QKeySequence::Open);
+    m_openAction->setIconText(tr("Open"));
     m_openAction->setStatusTip(tr("Open a lesson file from disk"));
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openLessonFile);
 
     m_saveAction = new QAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save Scene as Lesson…"), this);
     m_saveAction->setObjectName(QStringLiteral("saveAction"));
     m_saveAction->setShortcut(QKeySequence::Save);
+    m_saveAction->setIconText(tr("Save"));
     m_saveAction->setStatusTip(tr("Save the balls as they are now and the live settings as a lesson file"));
     connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveLessonFile);
 
-    m_screenshotAction = new QAction(tr("Screens&hot…"), this);
+    m_screenshotAction = new QAction(style()->standardIcon(QStyle::SP_DesktopIcon), tr("Screens&hot…"), this);
+    m_screenshotAction->setIconText(tr("Picture"));
     m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
     m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_screenshotAction->setStatusTip(tr("Save a picture of the canvas as PNG"));
     connect(m_screenshotAction, &QAction::triggered, this, &MainWindow::saveScreenshot);
 
-    m_recordAction = new QAction(tr("Re&cord Trajectory"), this);
+    m_recordAction = new QAction(recordIcon(), tr("Re&cord Trajectory"), this);
+    m_recordAction->setIconText(tr("Record"));
     m_recordAction->setObjectName(QStringLiteral("recordAction"));
     m_recordAction->setCheckable(true);
     m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
@@ -137,7 +156,9 @@ void MainWindow::createActions()
     });
     connect(m_trajectory, &TrajectoryExport::recordingChanged, m_recordAction, &QAction::setChecked);
 
-    m_exportAction = new QAction(tr("&Export Trajectory…"), this);
+    m_exportAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("&Export Trajectory…"),
+                                 this);
+    m_exportAction->setIconText(tr("CSV"));
     m_exportAction->setObjectName(QStringLiteral("exportAction"));
     m_exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
@@ -287,7 +308,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_plotsDock->toggleViewAction());
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
-    resizeDocks({m_plotsDock}, {190}, Qt::Vertical);
+    resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
     resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);
 }
 
