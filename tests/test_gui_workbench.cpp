@@ -12,6 +12,7 @@
 #include "ui/number_control.h"
 #include "ui/parameter_panel.h"
 #include "ui/simulation_controller.h"
+#include "ui/trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
@@ -20,6 +21,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
@@ -248,6 +250,7 @@ private slots:
     void saveThenOpenGivesTheSameScene();
     void lessonsTreeFollowsTheCourse();
     void inspectorShowsTheSelectedBall();
+    void screenshotAndTrajectoryFiles();
 };
 
 void GuiWorkbenchTest::initTestCase()
@@ -733,6 +736,41 @@ void GuiWorkbenchTest::inspectorShowsTheSelectedBall()
     // Clicking empty space clears the selection.
     QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->worldToWidget(sim::Vec2(580.0, 20.0)).toPoint());
     QCOMPARE(inspector->selectedBall(), -1);
+}
+
+void GuiWorkbenchTest::screenshotAndTrajectoryFiles()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(plainScene())));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    SimulationController* controller = window.controller();
+    controller->pause();
+
+    // The picture is the canvas, at its size.
+    const QString png = dir.filePath(QStringLiteral("shot.png"));
+    QVERIFY(window.saveScreenshotTo(png));
+    const QImage image(png);
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), window.canvas()->size() * window.canvas()->devicePixelRatio());
+
+    // Record: the selected ball's rows, one per step, as the world has them.
+    window.canvas()->setSelectedBall(1);
+    auto* record = window.findChild<QAction*>(QStringLiteral("recordAction"));
+    record->setChecked(true);
+    for (int k = 0; k < 5; ++k)
+        controller->stepOnce();
+    record->setChecked(false);
+    const auto* exporter = window.findChild<TrajectoryExport*>();
+    QVERIFY(exporter);
+    QCOMPARE(int(exporter->rows().size()), 6); // the start and five steps
+    const TrajectoryExport::Row& last = exporter->rows().back();
+    QCOMPARE(last.ball, 1);
+    QCOMPARE(last.t, controller->world().time());
+    QCOMPARE(last.x, controller->world().balls().position(0, 1));
+    QCOMPARE(last.vy, controller->world().balls().velocity(1, 1));
 }
 
 QTEST_MAIN(GuiWorkbenchTest)
