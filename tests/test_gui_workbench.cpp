@@ -251,6 +251,7 @@ private slots:
     void lessonsTreeFollowsTheCourse();
     void inspectorShowsTheSelectedBall();
     void screenshotAndTrajectoryFiles();
+    void blowUpPausesAndExplains();
 };
 
 void GuiWorkbenchTest::initTestCase()
@@ -771,6 +772,38 @@ void GuiWorkbenchTest::screenshotAndTrajectoryFiles()
     QCOMPARE(last.t, controller->world().time());
     QCOMPARE(last.x, controller->world().balls().position(0, 1));
     QCOMPARE(last.vy, controller->world().balls().velocity(1, 1));
+}
+
+// A stiff spring at a large dt: the world refuses to step, the controller
+// pauses and the banner above the canvas says why with the fix; a safe dt
+// takes the banner away and lets it run again.
+void GuiWorkbenchTest::blowUpPausesAndExplains()
+{
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("gravity")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    SimulationController* controller = window.controller();
+    auto* banner = window.findChild<QLabel*>(QStringLiteral("haltBanner"));
+    QVERIFY(banner);
+    QVERIFY(!banner->isVisible());
+    controller->play();
+    sim::WorldSettings s = controller->world().settings();
+    s.spring = sim::SpringSettings{true, sim::Vec2(300, 200), 90000.0}; // ω = 300 rad/s
+    s.time.integrator = sim::IntegratorKind::Verlet;
+    s.time.dt = 0.02;                                                   // ω dt = 6 > 2
+    QVERIFY(controller->setSettings(s));
+    QVERIFY(banner->isVisible());
+    QVERIFY2(banner->text().contains(QStringLiteral("verlet is unstable for this spring")), qPrintable(banner->text()));
+    QVERIFY(!controller->isPlaying());
+    const std::int64_t steps = controller->world().stepCount();
+    controller->advance(0.5);
+    QCOMPARE(controller->world().stepCount(), steps); // nothing moves while halted
+    s.time.dt = 0.005;                                 // ω dt = 1.5: stable
+    QVERIFY(controller->setSettings(s));
+    QVERIFY(!banner->isVisible());
+    controller->advance(0.05);
+    QVERIFY(controller->world().stepCount() > steps);
 }
 
 QTEST_MAIN(GuiWorkbenchTest)

@@ -31,6 +31,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QVBoxLayout>
 #include <QStyle>
 #include <QTimer>
 #include <QToolBar>
@@ -67,7 +68,20 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_controller = new SimulationController(this);
     m_controller->setSuspended(true); // until the window is shown
     m_canvas = new Canvas(m_controller, this);
-    setCentralWidget(m_canvas);
+    // The banner says, above the canvas, why the simulation stopped itself.
+    m_haltBanner = new QLabel(this);
+    m_haltBanner->setObjectName(QStringLiteral("haltBanner"));
+    m_haltBanner->setWordWrap(true);
+    m_haltBanner->setStyleSheet(QStringLiteral("QLabel { background: #fde2e1; color: #7a1410; "
+                                               "border-bottom: 2px solid #c0392b; padding: 8px; }"));
+    m_haltBanner->hide();
+    auto* central = new QWidget(this);
+    auto* centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->setSpacing(0);
+    centralLayout->addWidget(m_haltBanner);
+    centralLayout->addWidget(m_canvas, 1);
+    setCentralWidget(central);
     m_trajectory = new TrajectoryExport(m_controller, this);
 
     createActions();
@@ -334,6 +348,7 @@ void MainWindow::createStatusBar()
 
     connect(m_controller, &SimulationController::errorOccurred, this, &MainWindow::showError);
     connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
+    connect(m_controller, &SimulationController::haltedChanged, this, &MainWindow::showHalted);
     connect(m_controller, &SimulationController::timeScaleChanged, this, &MainWindow::updateStatus);
 
     m_droppedTimer = new QTimer(this);
@@ -637,6 +652,12 @@ void MainWindow::setPresentationMode(bool on)
 void MainWindow::showError(const QString& message)
 {
     statusBar()->showMessage(tr("⚠ %1").arg(message), 8000);
+}
+
+void MainWindow::showHalted(const QString& reason)
+{
+    m_haltBanner->setText(tr("<b>Stopped:</b> %1").arg(reason.toHtmlEscaped()));
+    m_haltBanner->setVisible(!reason.isEmpty());
 }
 
 void MainWindow::showTimeDropped(double seconds)

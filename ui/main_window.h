@@ -83,6 +83,7 @@ private slots:
     void updatePlayAction(bool playing);
     void showError(const QString& message);
     void showTimeDropped(double seconds);
+    void showHalted(const QString& reason);
     void setPresentationMode(bool on);
     void about();
 
@@ -139,6 +140,7 @@ private:
     QLabel* m_ballsLabel = nullptr;
     QLabel* m_pairsLabel = nullptr;
     QLabel* m_droppedLabel = nullptr;
+    QLabel* m_haltBanner = nullptr; // above the canvas while the world refuses to step
     QTimer* m_statusTimer = nullptr;
     QTimer* m_droppedTimer = nullptr;
     QElapsedTimer m_statusClock;

@@ -29,6 +29,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
+    checkHalted();
     return std::nullopt;
 }
 
@@ -40,7 +41,21 @@ bool SimulationController::setSettings(const sim::WorldSettings& settings)
     }
     emit settingsChanged();
     emit stepped(); // a paused canvas shows the change (walls, markers)
+    checkHalted();
     return true;
+}
+
+// The world refuses to step while its motion would blow up. The controller
+// pauses, so the play button tells the truth, and reports the reason once.
+void SimulationController::checkHalted()
+{
+    const QString reason = m_world.halted() ? QString::fromStdString(*m_world.halted()) : QString();
+    if (reason == m_haltReason)
+        return;
+    m_haltReason = reason;
+    if (!reason.isEmpty())
+        pause();
+    emit haltedChanged(reason);
 }
 
 void SimulationController::setPointer(const sim::PointerInput& pointer)
@@ -70,10 +85,11 @@ int SimulationController::advance(double elapsedSeconds)
         m_droppedTime += dropped;
         emit timeDropped(dropped);
     }
-    for (int k = 0; k < steps; ++k)
+    for (int k = 0; k < steps && !m_world.halted(); ++k)
         m_world.step();
     if (steps > 0)
         emit stepped();
+    checkHalted();
     return steps;
 }
 
@@ -115,6 +131,7 @@ void SimulationController::stepOnce()
     m_accumulator = 0.0;
     m_world.step();
     emit stepped();
+    checkHalted();
 }
 
 bool SimulationController::respawn(const sim::SpawnSettings& spawn)

@@ -94,12 +94,17 @@ signals:
     void timeScaleChanged(double scale);
     /// A frame needed more steps than the cap: `seconds` of simulated time were skipped.
     void timeDropped(double seconds);
+    /// The world stopped itself because the motion blows up (`reason` says why
+    /// and how to fix it), or, with an empty reason, it may run again.
+    void haltedChanged(const QString& reason);
 
 private:
     void tick();
     void updateTimer();
+    void checkHalted();
 
     sim::World m_world;
+    QString m_haltReason; // the last reason reported by haltedChanged
     sim::Scene m_scene;
     sim::SpawnSettings m_spawn; // of the running world
     QTimer m_timer;
