@@ -5,29 +5,18 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include "cli_runner.h"
 
 #include <cmath>
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using forcelab::test::CliResult;
+using forcelab::test::runCli;
 
-Result runCli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(FORCELAB_CLI_PATH), args);
-    if (!p.waitForFinished(60000))
-        qFatal("forcelab-cli did not finish");
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
 
 // One ball falling freely from (100, 50) with vx = 30, no walls, exact integrator.
 const char* kFreeFall = R"({
@@ -72,10 +61,10 @@ void TestCli::initTestCase()
 // kinetic energy ½ m v², potential −m g y, momentum m v.
 void TestCli::jsonMatchesClosedForm()
 {
-    const Result r = runCli({"run", m_lesson, "--steps", "100", "--json"});
+    const CliResult r = runCli({"run", m_lesson, "--steps", "100", "--json"});
     QCOMPARE(r.exitCode, 0);
-    QVERIFY2(r.err.isEmpty(), r.err.constData());
-    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QVERIFY2(r.err.isEmpty(), qPrintable(r.err));
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     for (const char* key : {"lesson", "integrator", "dt", "steps", "time", "balls", "energy", "momentum",
                             "angular_momentum", "force_evaluations", "wall_hits", "contacts", "wall_ms"})
         QVERIFY2(o.contains(key), key);
@@ -105,9 +94,9 @@ void TestCli::jsonMatchesClosedForm()
 
 void TestCli::stepsZeroPrintsInitialState()
 {
-    const Result r = runCli({"run", m_lesson, "--steps", "0", "--json"});
+    const CliResult r = runCli({"run", m_lesson, "--steps", "0", "--json"});
     QCOMPARE(r.exitCode, 0);
-    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     QCOMPARE(o["steps"].toInt(), 0);
     QCOMPARE(o["time"].toDouble(), 0.0);
     const QJsonObject ball = o["balls"].toArray().at(0).toObject();
@@ -119,10 +108,10 @@ void TestCli::stepsZeroPrintsInitialState()
 void TestCli::optionsOverrideTheLesson()
 {
     // No gravity: the ball moves in a straight line; --time picks the step count.
-    const Result r = runCli({"run", m_lesson, "--set", "models.gravity.y=0", "--integrator", "rk4", "--dt", "0.02",
+    const CliResult r = runCli({"run", m_lesson, "--set", "models.gravity.y=0", "--integrator", "rk4", "--dt", "0.02",
                              "--time", "2", "--json"});
     QCOMPARE(r.exitCode, 0);
-    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     QCOMPARE(o["integrator"].toString(), QString("rk4"));
     QCOMPARE(o["dt"].toDouble(), 0.02);
     QCOMPARE(o["steps"].toInt(), 100);
@@ -134,12 +123,12 @@ void TestCli::optionsOverrideTheLesson()
 
 void TestCli::builtInLessonRuns()
 {
-    const Result r = runCli({"run", "gravity", "--steps", "60", "--json"});
+    const CliResult r = runCli({"run", "gravity", "--steps", "60", "--json"});
     QCOMPARE(r.exitCode, 0);
-    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     QCOMPARE(o["lesson"].toString(), QString("gravity"));
     QVERIFY(!o["balls"].toArray().isEmpty());
-    const Result text = runCli({"run", "gravity", "--steps", "10"});
+    const CliResult text = runCli({"run", "gravity", "--steps", "10"});
     QCOMPARE(text.exitCode, 0);
     QVERIFY(text.out.contains("10 steps"));
 }
@@ -148,10 +137,10 @@ void TestCli::builtInLessonRuns()
 // exits 3 with the reason on stderr.
 void TestCli::blowUpExitsThree()
 {
-    const Result r = runCli({"run", m_lesson, "--integrator", "verlet", "--set", "models.gravity.y=0", "--set",
+    const CliResult r = runCli({"run", m_lesson, "--integrator", "verlet", "--set", "models.gravity.y=0", "--set",
                              "models.spring.k=90000", "--steps", "10"});
     QCOMPARE(r.exitCode, 3);
-    const QString err = QString::fromUtf8(r.err).trimmed();
+    const QString err = r.err.trimmed();
     QVERIFY2(err.count('\n') == 0, qPrintable(err));
     QVERIFY2(err.contains("stopped after 0 steps: verlet is unstable for this spring at dt = 0.01 s"), qPrintable(err));
     QVERIFY2(err.contains("Lower dt below 0.00667 s"), qPrintable(err)); // 2 / ω
@@ -182,10 +171,10 @@ void TestCli::badInputExitsTwo()
     QFETCH(QStringList, args);
     QFETCH(QString, message);
     args.replaceInStrings("@L", m_lesson);
-    const Result r = runCli(args);
+    const CliResult r = runCli(args);
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.out.isEmpty());
-    const QString err = QString::fromUtf8(r.err).trimmed();
+    const QString err = r.err.trimmed();
     QVERIFY2(!err.isEmpty() && err.count('\n') == 0, qPrintable(err)); // exactly one line
     QVERIFY2(err.contains(message), qPrintable(err));
 }

@@ -8,9 +8,10 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include "cli_runner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,9 @@
 using namespace forcelab;
 
 namespace {
+
+using forcelab::test::CliResult;
+using forcelab::test::runCli;
 
 constexpr double kWidth = 600.0;  // px, the box of every lesson of stages 1–15
 constexpr double kHeight = 400.0; // px
@@ -852,21 +856,6 @@ void TestLessons::stage15DragDecaysExponentially()
 
 namespace {
 
-struct CliResult {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-CliResult runCli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(FORCELAB_CLI_PATH), args);
-    if (!p.waitForFinished(60000))
-        qFatal("forcelab-cli did not finish");
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
-}
 
 } // namespace
 

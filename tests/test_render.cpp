@@ -6,29 +6,18 @@
 
 #include <QFile>
 #include <QImage>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include "cli_runner.h"
 
 #include <cstdlib>
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using forcelab::test::CliResult;
+using forcelab::test::runCli;
 
-Result runCli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(FORCELAB_CLI_PATH), args);
-    if (!p.waitForFinished(60000))
-        qFatal("forcelab-cli did not finish");
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
 
 // One large ball moving right at 100 px/s, no forces: at t = 0.5 s its centre
 // is at (350, 200).
@@ -76,7 +65,7 @@ void TestRender::ballIsDrawnWhereItIs()
     f.write(kMoving);
     f.close();
     const QString png = dir.filePath("out.png");
-    const Result r = runCli({"render", lesson, "--time", "0.5", "--out", png, "--size",
+    const CliResult r = runCli({"render", lesson, "--time", "0.5", "--out", png, "--size",
                              QStringLiteral("%1x%2").arg(size.width()).arg(size.height())});
     QCOMPARE(r.exitCode, 0);
     const QImage image(png);
@@ -107,7 +96,7 @@ void TestRender::badInputExitsTwo()
 {
     QCOMPARE(runCli({"render", "gravity", "--out", "/tmp/x.png"}).exitCode, 2);                  // no --time
     QCOMPARE(runCli({"render", "gravity", "--time", "1", "--out", "/tmp/x.png", "--size", "0x5"}).exitCode, 2);
-    const Result r = runCli({"render", "no-such-lesson", "--time", "1", "--out", "/tmp/x.png"});
+    const CliResult r = runCli({"render", "no-such-lesson", "--time", "1", "--out", "/tmp/x.png"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains("no-such-lesson"));
 }

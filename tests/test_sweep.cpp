@@ -4,32 +4,21 @@
 
 #include <QFile>
 #include <QImage>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include "cli_runner.h"
 
 #include <cmath>
 #include <map>
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using forcelab::test::CliResult;
+using forcelab::test::runCli;
 
-Result runCli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(FORCELAB_CLI_PATH), args);
-    if (!p.waitForFinished(300000))
-        qFatal("forcelab-cli did not finish");
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
 
 const QStringList kColumns{"problem",        "integrator",   "dt",      "tolerance",
                            "steps",          "force_evaluations", "position_error", "energy_error",
@@ -77,7 +66,7 @@ private slots:
 
 private:
     QTemporaryDir m_dir;
-    Result m_run;
+    CliResult m_run;
     QList<QStringList> m_rows; // CSV rows without the header
     QStringList m_header;
 };
@@ -124,7 +113,7 @@ void TestSweep::csvHasColumnsAndRows()
     }
     // The table on stdout has a block per problem.
     for (const QString& p : kQuickProblems)
-        QVERIFY(m_run.out.contains((p + ": ").toUtf8()));
+        QVERIFY(m_run.out.contains(p + ": "));
 }
 
 // The spring is a linear problem with one error term, so the slopes are clean
@@ -132,7 +121,7 @@ void TestSweep::csvHasColumnsAndRows()
 // and semi-implicit Euler have a second term there: see docs/accuracy.md).
 void TestSweep::fittedOrdersMatchTheory()
 {
-    const QString table = QString::fromUtf8(m_run.out);
+    const QString table = m_run.out;
     const QList<double> theory{1.0, 1.0, 2.0, 4.0, 4.0};
     const QList<double> spring = fittedOrders(table, "spring");
     QCOMPARE(spring.size(), 5);
@@ -147,7 +136,7 @@ void TestSweep::fittedOrdersMatchTheory()
 // "Energy over long runs": growth = (max |dE/E| up to 100 orbits) / (up to 10).
 void TestSweep::symplecticEnergyStaysBounded()
 {
-    const QString table = QString::fromUtf8(m_run.out);
+    const QString table = m_run.out;
     const qsizetype start = table.indexOf("Energy over long runs");
     QVERIFY(start >= 0);
     std::map<QString, double> growth;
@@ -201,7 +190,7 @@ void TestSweep::chartIsDrawn()
 void TestSweep::oneProblemChart()
 {
     const QString png = m_dir.filePath("one.png");
-    const Result r = runCli({"sweep", "--quick", "--problem", "spring", "--png", png});
+    const CliResult r = runCli({"sweep", "--quick", "--problem", "spring", "--png", png});
     QCOMPARE(r.exitCode, 0);
     QVERIFY(r.out.contains("spring: "));
     QVERIFY(!r.out.contains("kepler-e0-10: "));
@@ -212,7 +201,7 @@ void TestSweep::oneProblemChart()
 
 void TestSweep::unknownProblemIsRefused()
 {
-    const Result r = runCli({"sweep", "--problem", "pendulum"});
+    const CliResult r = runCli({"sweep", "--problem", "pendulum"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains("\"pendulum\" is not one of kepler-e0-10"));
     QVERIFY(r.out.isEmpty());
