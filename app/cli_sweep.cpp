@@ -7,6 +7,7 @@
 
 #include "cli_commands.h"
 
+#include "sim/kepler.h"
 #include "sim/names.h"
 #include "sim/world.h"
 
@@ -67,41 +68,31 @@ Scene openScene(std::vector<Ball> balls)
     return s;
 }
 
-// Kepler's problem: the point force attracting with no clamp, μ = strength.
-// a = 100 px, period 1 s, starting at periapsis. The end is 5/16 of an orbit
-// past the whole orbits: at whole orbits some errors cancel.
+// Kepler's problem (sim/kepler.h): a = 100 px, period 1 s, starting at
+// periapsis. The end is 5/16 of an orbit past the whole orbits: at whole
+// orbits some errors cancel.
 Problem kepler(double e, int orbits)
 {
-    const double a = 100.0, n = 2.0 * kPi, mu = n * n * a * a * a;
-    const Vec2 focus(300.0, 200.0);
+    KeplerOrbit orbit;
+    orbit.e = e;
     std::ostringstream name;
     name << "kepler-e" << e << "-" << orbits;
     Problem p;
     p.name = name.str();
     p.what = "Kepler orbit, e = " + std::to_string(e).substr(0, 3) + ", " + std::to_string(orbits) + " orbits";
     p.endTime = orbits + 5.0 / 16.0;
-    p.length = a;
+    p.length = orbit.a;
     p.scene = [=] {
-        const double rp = a * (1.0 - e);
-        Scene s = openScene({makeBall(focus.x() + rp, focus.y(), 0.0, std::sqrt(mu * (1.0 + e) / rp))});
-        s.settings.point = PointForceSettings{true, PointKind::Attract, focus, mu, 0.0, ForceScale::None};
+        Scene s = orbit.scene(IntegratorKind::SemiImplicitEuler, 1.0 / 60); // integrator and dt: set by the sweep
+        s.settings.box = BoxSettings{600.0, 400.0};
         return s;
     };
     p.exact = [=](double t) {
-        // Kepler's equation E − e sin E = M by Newton's method.
-        const double M = std::remainder(n * t, 2.0 * kPi);
-        double E = M + e * std::sin(M);
-        for (int i = 0; i < 50; ++i) {
-            const double dE = (E - e * std::sin(E) - M) / (1.0 - e * std::cos(E));
-            E -= dE;
-            if (std::abs(dE) < 1e-16)
-                break;
-        }
         Matrix2X x(2, 1);
-        x.col(0) = focus + Vec2(a * (std::cos(E) - e), a * std::sqrt(1.0 - e * e) * std::sin(E));
+        x.col(0) = orbit.position(t);
         return x;
     };
-    const double energy = -0.5 * mu / a; // per unit mass: −μ / 2a
+    const double energy = orbit.energyPerMass(); // the ball's mass is 1
     p.energyError = [=](const World& w) { return std::abs((w.energy().total() - energy) / energy); };
     return p;
 }

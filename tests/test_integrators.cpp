@@ -3,6 +3,8 @@
 
 #include "sim_test_util.h"
 
+#include "sim/kepler.h"
+
 #include "sim/names.h"
 
 #include <QTest>
@@ -18,47 +20,10 @@ using forcelab::test::openScene;
 
 namespace {
 
-// A Kepler orbit around a fixed centre: the point force, attracting with the
-// inverse-square law and no clamp, is exactly the Kepler problem with
-// μ = strength. Semi-major axis 100 px, period 1 s, starting at periapsis.
-struct Kepler {
-    double a = 100.0;
-    double e = 0.5;
-    double period = 1.0;
-    Vec2 focus{300.0, 200.0};
-
-    double n() const { return 2.0 * std::numbers::pi / period; }
-    double mu() const { return n() * n() * a * a * a; }
-
-    Scene scene(IntegratorKind integrator, double dt) const
-    {
-        const double rp = a * (1.0 - e);
-        const double vp = std::sqrt(mu() * (1.0 + e) / rp);
-        Scene s = openScene({ballAt(focus.x() + rp, focus.y(), 0.0, vp)});
-        s.settings.point.enabled = true;
-        s.settings.point.kind = PointKind::Attract;
-        s.settings.point.position = focus;
-        s.settings.point.strength = mu();
-        s.settings.point.maxAccel = 0.0;
-        s.settings.time.integrator = integrator;
-        s.settings.time.dt = dt;
-        return s;
-    }
-
-    // Position at time t from Kepler's equation E − e sin E = n t (Newton's method).
-    Vec2 position(double t) const
-    {
-        const double M = std::fmod(n() * t, 2.0 * std::numbers::pi);
-        double E = M + e * std::sin(M);
-        for (int i = 0; i < 50; ++i) {
-            const double dE = (E - e * std::sin(E) - M) / (1.0 - e * std::cos(E));
-            E -= dE;
-            if (std::abs(dE) < 1e-16)
-                break;
-        }
-        return focus + Vec2(a * (std::cos(E) - e), a * std::sqrt(1.0 - e * e) * std::sin(E));
-    }
-};
+// The Kepler orbit of sim/kepler.h: a = 100 px, period 1 s, e = 0.5 unless
+// changed, starting at periapsis; its position at any time comes from
+// Kepler's equation.
+using Kepler = KeplerOrbit;
 
 // Largest relative energy error over `orbits` orbits, sampled every step.
 double maxEnergyError(World& world, std::int64_t steps, double e0)
