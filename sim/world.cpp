@@ -146,6 +146,8 @@ std::optional<std::string> World::reset(const Scene& scene)
     m_last = StepStats{};
     m_totals = StepStats{};
     m_halted = stabilityProblem(m_settings);
+    if (m_accounting)
+        startBooks();
     return std::nullopt;
 }
 
@@ -239,6 +241,9 @@ void World::step()
     if (m_halted)
         return;
     const auto started = std::chrono::steady_clock::now();
+    if (m_accounting)
+        bookEditsSinceLastStep();
+    const Books booksBefore = m_books; // a step that is undone is taken off the books too
     m_last = StepStats{};
     // Keep the state so a step that blows up can be taken back. A copy of two
     // 2×N matrices: small next to the step itself.
@@ -251,11 +256,12 @@ void World::step()
     const double h = (m_settings.time.perFrame ? kFrameSeconds : m_settings.time.dt) / substeps;
     for (int k = 0; k < substeps; ++k)
         subStep(h);
-    spawnOverTime();
+    spawnOverTime(); // a new ball's energy and momentum are booked with the edits, at the next step
     if (blewUp()) {
         // Undo the step and stop, with the likely cause and its fix.
         m_balls.position = m_savedPosition;
         m_balls.velocity = m_savedVelocity;
+        m_books = booksBefore;
         m_integrator.invalidate();
         const WorldSettings& s = m_settings;
         std::string cause;
@@ -276,15 +282,104 @@ void World::step()
     }
     ++m_stepCount;
     m_time += m_settings.time.dt;
+    if (m_accounting)
+        closeBooks();
     m_last.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     m_totals += m_last;
 }
 
 // One sub-step of length h, in stages.
+namespace {
+
+// The part of the models that has a potential (gravity, spring, homing,
+// mutual gravity, the unclamped point force): what is left of the
+// acceleration once it is taken away does work that energy() cannot see.
+WorldSettings conservativeOnly(WorldSettings s)
+{
+    s.drag.enabled = false;
+    s.wind.mode = WindMode::Off;
+    s.randomAccel.enabled = false;
+    s.pointer.enabled = false;
+    s.point.maxAccel = 0.0;
+    return s;
+}
+
+// Power of the non-conservative forces, Σ m (a − a_conservative)·v, and the
+// total external force Σ m a (mutual gravity cancels in pairs, so this is the
+// rate of change of momentum the forces cause).
+struct Rates {
+    double power = 0.0;
+    Vec2 force = Vec2::Zero();
+};
+
+Rates forceRates(const ForceModel& all, const ForceModel& conservative, const BallState& b, double t)
+{
+    Matrix2X a, c;
+    all.acceleration(b.position, b.velocity, t, a);
+    conservative.acceleration(b.position, b.velocity, t, c);
+    Rates r;
+    r.power = ((a - c).cwiseProduct(b.velocity).colwise().sum() * b.mass)(0);
+    r.force = a * b.mass;
+    return r;
+}
+
+} // namespace
+
+void World::startBooks()
+{
+    const Energy e = energy();
+    m_books = Books{};
+    m_books.startEnergy = m_books.lastEnergy = e.total();
+    m_books.startMomentum = m_books.lastMomentum = momentum();
+}
+
+void World::bookEditsSinceLastStep()
+{
+    // Whatever changed between steps (a setting, a thrown ball, a new ball, the
+    // pointer's position in the potential-free sense) was done on purpose.
+    const double e = energy().total();
+    const Vec2 p = momentum();
+    m_books.bookedEnergy += e - m_books.lastEnergy;
+    m_books.bookedMomentum += p - m_books.lastMomentum;
+}
+
+void World::closeBooks()
+{
+    m_books.lastEnergy = energy().total();
+    m_books.lastMomentum = momentum();
+}
+
+void World::setAccounting(bool on)
+{
+    if (on == m_accounting)
+        return;
+    m_accounting = on;
+    if (on)
+        startBooks();
+}
+
+double World::energyDrift() const
+{
+    return energy().total() - m_books.startEnergy - m_books.bookedEnergy;
+}
+
+Vec2 World::momentumDrift() const
+{
+    return momentum() - m_books.startMomentum - m_books.bookedMomentum;
+}
+
 void World::subStep(double h)
 {
     const WorldSettings& s = m_settings;
     const ForceModel forces(s, m_balls, m_inputs);
+    // Accounting: the forces' work and impulse by the trapezoid rule.
+    std::optional<WorldSettings> conservativeSettings;
+    Rates before;
+    if (m_accounting) {
+        conservativeSettings = conservativeOnly(s);
+        before = forceRates(ForceModel(s, m_balls, m_inputs), ForceModel(*conservativeSettings, m_balls, m_inputs),
+                            m_balls, m_time + m_subTime);
+    }
     const bool keepStart = s.walls.model == WallModel::Exact || s.walls.middle ||
                            (s.collisions.response != Response::None && s.collisions.continuous);
     if (keepStart) {
@@ -297,6 +392,16 @@ void World::subStep(double h)
     m_integrator.advance(s.time.integrator, forces, m_balls.position, m_balls.velocity, m_time + m_subTime, h,
                          s.time.tolerance, integration);
     m_subTime += h;
+    if (m_accounting) {
+        const Rates after = forceRates(ForceModel(s, m_balls, m_inputs),
+                                       ForceModel(*conservativeSettings, m_balls, m_inputs), m_balls,
+                                       m_time + m_subTime);
+        m_books.bookedEnergy += 0.5 * (before.power + after.power) * h;
+        m_books.bookedMomentum += 0.5 * (before.force + after.force) * h;
+    }
+    // The stages below change the state on purpose: book what they do.
+    const double energyBeforeStages = m_accounting ? energy().total() : 0.0;
+    const Vec2 momentumBeforeStages = m_accounting ? momentum() : Vec2::Zero();
 
     // 2. Speed limit: a crude stand-in for terminal velocity, |v| ≤ max.
     bool touched = false;
@@ -313,6 +418,10 @@ void World::subStep(double h)
     const std::int64_t hits = applyWalls(s.walls, s.box, s.time.integrator, m_balls.radius, m_startPosition,
                                          m_startVelocity, h, m_balls.position, m_balls.velocity);
 
+    // Walls and the speed limit change momentum on purpose; collisions must
+    // not, so only their energy (restitution below 1) is booked.
+    const Vec2 momentumAfterWalls = m_accounting ? momentum() : Vec2::Zero();
+
     // 4. Collisions: only when the scene asks for them.
     CollisionStats collisions;
     if (s.collisions.response != Response::None)
@@ -323,6 +432,11 @@ void World::subStep(double h)
     // acceleration stale for Verlet-type integrators.
     if (touched || hits > 0 || collisions.contacts > 0 || !forces.velocityIndependent())
         m_integrator.invalidate();
+
+    if (m_accounting) {
+        m_books.bookedEnergy += energy().total() - energyBeforeStages;
+        m_books.bookedMomentum += momentumAfterWalls - momentumBeforeStages;
+    }
 
     m_last.forceEvaluations += forces.evaluations();
     m_last.acceptedSteps += integration.accepted;

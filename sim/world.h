@@ -71,6 +71,22 @@ public:
     Vec2 momentum() const;          ///< Σ m v
     double angularMomentum() const; ///< Σ m (x × v) about the origin, z component
 
+    /// Energy and momentum accounting, for judging an integrator: with it on,
+    /// every change made on purpose is booked — the work of drag, wind, the
+    /// random acceleration, the pointer and a clamped point force (trapezoid
+    /// rule over each sub-step), what walls, the speed limit and collisions
+    /// change, and any edit between steps (settings, balls, spawning). What is
+    /// left, energyDrift(), is the integrator's own error (plus the booking's,
+    /// which is second order in dt). Off by default: it costs four extra force
+    /// evaluations and two energy sums per sub-step. Switching it on starts
+    /// the books at the current state; a reset restarts them.
+    void setAccounting(bool on);
+    bool accounting() const { return m_accounting; }
+    double startEnergy() const { return m_books.startEnergy; }   ///< total energy when the books started
+    double bookedEnergy() const { return m_books.bookedEnergy; } ///< added (+) or removed (−) on purpose since
+    double energyDrift() const;   ///< E_now − E_start − booked
+    Vec2 momentumDrift() const;   ///< p_now − p_start − impulse of every force but mutual gravity and collisions
+
     /// Acceleration of every ball in the current state (for the readout).
     Matrix2X accelerations() const;
     /// The wind acting now on a reference ball, px/s² (+ blows right).
@@ -98,6 +114,21 @@ private:
     std::int64_t m_stepCount = 0;
     StepStats m_last;
     StepStats m_totals;
+    // The books of the accounting (see setAccounting).
+    struct Books {
+        double startEnergy = 0.0;
+        double bookedEnergy = 0.0;
+        double lastEnergy = 0.0; // at the end of the last step: what an edit between steps changed
+        Vec2 startMomentum = Vec2::Zero();
+        Vec2 bookedMomentum = Vec2::Zero();
+        Vec2 lastMomentum = Vec2::Zero();
+    };
+    void startBooks();
+    void bookEditsSinceLastStep();
+    void closeBooks();
+    bool m_accounting = false;
+    Books m_books;
+
     std::optional<std::string> m_halted;
     Matrix2X m_savedPosition; // state before the step, to undo a step that blew up
     Matrix2X m_savedVelocity;
