@@ -4,6 +4,8 @@
 
 #include "cli_commands.h"
 
+#include "cli_args.h"
+
 #include "lessons/lesson_loader.h"
 #include "ui/world_painter.h"
 
@@ -27,19 +29,6 @@ struct RenderOptions {
 constexpr int kMaxSide = 8192;
 constexpr std::int64_t kMaxSteps = 100'000'000;
 
-std::optional<double> parseNumber(const std::string& text)
-{
-    try {
-        std::size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used != text.size() || !std::isfinite(v))
-            return std::nullopt;
-        return v;
-    } catch (...) {
-        return std::nullopt;
-    }
-}
-
 std::optional<RenderOptions> parseArgs(const std::vector<std::string>& args, std::ostream& err)
 {
     RenderOptions o;
@@ -52,7 +41,7 @@ std::optional<RenderOptions> parseArgs(const std::vector<std::string>& args, std
         const std::string& a = args[i];
         const std::string v = i + 1 < args.size() ? args[i + 1] : std::string();
         if (a == "--time") {
-            const auto t = parseNumber(v);
+            const auto t = parseFiniteNumber(v);
             if (!t || *t < 0)
                 return fail("--time: expects a number of seconds >= 0, got '" + v + "'");
             o.time = *t;
@@ -65,8 +54,8 @@ std::optional<RenderOptions> parseArgs(const std::vector<std::string>& args, std
             ++i;
         } else if (a == "--size") {
             const auto x = v.find('x');
-            const auto w = x == std::string::npos ? std::nullopt : parseNumber(v.substr(0, x));
-            const auto h = x == std::string::npos ? std::nullopt : parseNumber(v.substr(x + 1));
+            const auto w = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(0, x));
+            const auto h = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(x + 1));
             if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSide || *h > kMaxSide || std::floor(*w) != *w ||
                 std::floor(*h) != *h)
                 return fail("--size: expects WIDTHxHEIGHT in pixels (1 to 8192 each), got '" + v + "'");

@@ -3,6 +3,8 @@
 
 #include "cli_commands.h"
 
+#include "cli_args.h"
+
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
 #include "sim/world.h"
@@ -28,19 +30,6 @@ struct RunOptions {
 };
 
 constexpr std::int64_t kMaxSteps = 1'000'000'000;
-
-std::optional<double> parseNumber(const std::string& text)
-{
-    try {
-        std::size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used != text.size())
-            return std::nullopt;
-        return v;
-    } catch (...) {
-        return std::nullopt;
-    }
-}
 
 // Options that change a lesson value become overrides of its key path, so they
 // are checked by the same code as the lesson file.
@@ -80,7 +69,7 @@ std::optional<RunOptions> parseArgs(const std::vector<std::string>& args, std::o
             if (isName && !sim::parseIntegrator(*v))
                 return fail(std::string(flag) + ": \"" + *v + "\" is not one of " +
                             sim::joinNames(sim::integratorNames()));
-            if (!isName && (!parseNumber(*v) || !std::isfinite(*parseNumber(*v))))
+            if (!isName && !parseFiniteNumber(*v))
                 return fail(std::string(flag) + ": expects a number, got '" + *v + "'");
             o.overrides.append(Override{QString::fromLatin1(key),
                                         isName ? QString::fromStdString("\"" + *v + "\"") : QString::fromStdString(*v)});
@@ -98,13 +87,13 @@ std::optional<RunOptions> parseArgs(const std::vector<std::string>& args, std::o
             o.overrides.append(*override);
         } else if (a == "--steps") {
             const auto v = value();
-            const auto n = v ? parseNumber(*v) : std::nullopt;
+            const auto n = v ? parseFiniteNumber(*v) : std::nullopt;
             if (!n || *n < 0 || *n > kMaxSteps || std::floor(*n) != *n)
                 return fail("--steps: expects a whole number from 0 to 1000000000, got '" + v.value_or("") + "'");
             o.steps = static_cast<std::int64_t>(*n);
         } else if (a == "--time") {
             const auto v = value();
-            const auto t = v ? parseNumber(*v) : std::nullopt;
+            const auto t = v ? parseFiniteNumber(*v) : std::nullopt;
             if (!t || !std::isfinite(*t) || *t < 0)
                 return fail("--time: expects a number of seconds >= 0, got '" + v.value_or("") + "'");
             o.time = *t;
