@@ -214,7 +214,12 @@ void Ias15::advance(const ForceModel& forces, Matrix2X& x, Matrix2X& v, double t
     const double minStep = 1e-12 * std::abs(h);
     double dt = m_nextStep > 0.0 ? std::min(m_nextStep, h) : h;
     double now = t;
-    while (now < end) {
+    for (std::int64_t tries = 0; now < end; ++tries) {
+        if (tries == kMaxAdaptiveSubSteps) {
+            stats.gaveUp = true;
+            reset();
+            return;
+        }
         const bool last = now + dt >= end - 1e-12 * std::abs(h);
         const double step = last ? end - now : dt;
         // The first guess of the polynomial.

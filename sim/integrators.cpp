@@ -147,7 +147,12 @@ void Integrator::dormandPrince(const ForceModel& forces, Matrix2X& x, Matrix2X& 
     double hs = m_rk45h > 0.0 ? std::min(m_rk45h, h) : h;
     bool firstStageValid = false;
     double now = t;
-    while (now < end) {
+    for (std::int64_t tries = 0; now < end; ++tries) {
+        if (tries == kMaxAdaptiveSubSteps) {
+            stats.gaveUp = true;
+            m_rk45h = 0.0;
+            return;
+        }
         const bool last = now + hs >= end - 1e-12 * std::abs(h);
         const double step = last ? end - now : hs;
         if (!firstStageValid) {

@@ -24,9 +24,16 @@
 
 namespace forcelab::sim {
 
+/// Most sub-steps (accepted and rejected) an adaptive integrator may take for
+/// one world step. A close pass without softening can ask for sub-steps a
+/// trillion times shorter than dt; past this budget the integrator gives up
+/// instead of freezing the program, and the world stops with an explanation.
+inline constexpr std::int64_t kMaxAdaptiveSubSteps = 100'000;
+
 struct IntegratorStats {
     std::int64_t accepted = 0; ///< rk45 / ias15 sub-steps accepted
     std::int64_t rejected = 0; ///< rk45 / ias15 sub-steps rejected (error above tolerance)
+    bool gaveUp = false;       ///< the sub-step budget ran out before the end of the step
 };
 
 class Integrator {

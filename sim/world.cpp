@@ -251,13 +251,13 @@ void World::step()
     m_savedVelocity = m_balls.velocity;
     drawStepRandomness();
     m_subTime = 0.0;
+    m_gaveUp = false;
     const int substeps = m_settings.time.substeps;
     // The per-frame bug moves the balls by one frame's worth whatever dt is.
     const double h = (m_settings.time.perFrame ? kFrameSeconds : m_settings.time.dt) / substeps;
-    for (int k = 0; k < substeps; ++k)
+    for (int k = 0; k < substeps && !m_gaveUp; ++k)
         subStep(h);
-    spawnOverTime(); // a new ball's energy and momentum are booked with the edits, at the next step
-    if (blewUp()) {
+    if (m_gaveUp || blewUp()) {
         // Undo the step and stop, with the likely cause and its fix.
         m_balls.position = m_savedPosition;
         m_balls.velocity = m_savedVelocity;
@@ -271,15 +271,21 @@ void World::step()
             cause = "a ball came very close to the attracting point: set max_accel (the clamp) or lower dt";
         else if (s.drag.enabled && s.drag.law == DragLaw::Quadratic)
             cause = "quadratic drag is too strong for this dt at these speeds: lower dt or k";
+        else if (m_gaveUp)
+            cause = "the forces change too fast: raise the tolerance or lower dt";
         else
             cause = "the forces are too strong for this time step: lower dt or pick rk45";
         char when[32];
         std::snprintf(when, sizeof when, "%.4g", m_time);
-        m_halted = std::string("the simulation blew up at t = ") + when +
-                   " s (a ball was about to leave every sensible range), so it stopped one step before. " +
-                   "Likely cause: " + cause;
+        const std::string what =
+            m_gaveUp ? std::string(toString(s.time.integrator)) + " needed more than " +
+                           std::to_string(kMaxAdaptiveSubSteps) + " sub-steps for one step"
+                     : std::string("a ball was about to leave every sensible range");
+        m_halted = std::string("the simulation blew up at t = ") + when + " s (" + what +
+                   "), so it stopped one step before. Likely cause: " + cause;
         return;
     }
+    spawnOverTime(); // a new ball's energy and momentum are booked with the edits, at the next step
     ++m_stepCount;
     m_time += m_settings.time.dt;
     if (m_accounting)
@@ -391,6 +397,12 @@ void World::subStep(double h)
     IntegratorStats integration;
     m_integrator.advance(s.time.integrator, forces, m_balls.position, m_balls.velocity, m_time + m_subTime, h,
                          s.time.tolerance, integration);
+    if (integration.gaveUp) { // the step will be undone: stop here
+        m_gaveUp = true;
+        m_integrator.invalidate();
+        m_last.forceEvaluations += forces.evaluations();
+        return;
+    }
     m_subTime += h;
     if (m_accounting) {
         const Rates after = forceRates(ForceModel(s, m_balls, m_inputs),

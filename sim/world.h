@@ -111,6 +111,7 @@ private:
     std::mt19937_64 m_spawnRng; // spawning over time
     double m_time = 0.0;    // s, at the start of the current step
     double m_subTime = 0.0; // s, time into the current step covered by its sub-steps
+    bool m_gaveUp = false;  // an adaptive integrator ran out of sub-steps in this step
     std::int64_t m_stepCount = 0;
     StepStats m_last;
     StepStats m_totals;

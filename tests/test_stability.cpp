@@ -43,6 +43,8 @@ private slots:
     void newSettingsClearTheHalt();
     void runawayIsUndoneAndExplained();
     void closePassWithoutSofteningStaysFinite();
+    void adaptiveIntegratorsGiveUpInTime_data();
+    void adaptiveIntegratorsGiveUpInTime();
 };
 
 // One step of semi-implicit Euler on x'' = −ω² x is [[1 − ω²h², h], [−ω²h, 1]]:
@@ -172,6 +174,34 @@ void TestStability::closePassWithoutSofteningStaysFinite()
     }
     if (w.halted())
         QVERIFY2(QString::fromStdString(*w.halted()).contains("add softening"), w.halted()->c_str());
+}
+
+void TestStability::adaptiveIntegratorsGiveUpInTime_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::newRow("rk45") << int(IntegratorKind::Rk45);
+    QTest::newRow("ias15") << int(IntegratorKind::Ias15);
+}
+
+// Three heavy bodies falling together with no softening, at a tight
+// tolerance: near the collision an adaptive integrator asks for ever shorter
+// sub-steps. It stops after its budget instead of freezing the program, the
+// step is undone, and the world says why.
+void TestStability::adaptiveIntegratorsGiveUpInTime()
+{
+    QFETCH(int, integrator);
+    Scene s = openScene({ballAt(100, 200, 0, 0, 1, 1e6), ballAt(200, 200, 0, 0, 1, 1e6), ballAt(150, 280, 0, 0, 1, 1e6)});
+    s.settings.mutualGravity = MutualGravitySettings{true, 1e9, 0.0};
+    s.settings.time.integrator = static_cast<IntegratorKind>(integrator);
+    s.settings.time.tolerance = 1e-12;
+    World w;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 600 && !w.halted(); ++k)
+        w.step();
+    QVERIFY(w.halted());
+    QVERIFY(finiteState(w));
+    QVERIFY2(QString::fromStdString(*w.halted()).contains("add softening"), w.halted()->c_str());
+    QVERIFY(w.lastStep().acceptedSteps + w.lastStep().rejectedSteps <= kMaxAdaptiveSubSteps);
 }
 
 QTEST_APPLESS_MAIN(TestStability)
