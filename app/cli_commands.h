@@ -9,6 +9,9 @@
 
 namespace forcelab::cli {
 
+/// forcelab-cli soak [--steps N] [--balls N]: a long run that checks for drift, NaN and memory growth.
+int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
 /// forcelab-cli run LESSON [options]: runs a lesson headless.
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 

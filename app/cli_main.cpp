@@ -28,7 +28,9 @@ void usage(std::ostream& out)
            "  sweep [--problem NAME] [--quick] [--csv FILE] [--png FILE]\n"
            "      error against cost of every integrator on problems with known answers\n"
            "  render LESSON --time T --out FILE.png [--size WxH]\n"
-           "      draw a lesson at simulated time T as the workbench's canvas shows it\n";
+           "      draw a lesson at simulated time T as the workbench's canvas shows it\n"
+           "  soak [--steps N] [--balls N]\n"
+           "      a long run of a box with collisions: energy, NaN and memory over 10^6 steps\n";
 }
 
 } // namespace
@@ -60,6 +62,9 @@ int main(int argc, char** argv)
         return forcelab::cli::sweepCommand(args, std::cout, std::cerr);
     if (command == "render")
         return forcelab::cli::renderCommand(args, std::cout, std::cerr);
-    std::cerr << "forcelab-cli: unknown command '" << command << "' (try: run, validate, bench, sweep, render)\n";
+    if (command == "soak")
+        return forcelab::cli::soakCommand(args, std::cout, std::cerr);
+    std::cerr << "forcelab-cli: unknown command '" << command
+              << "' (try: run, validate, bench, sweep, render, soak)\n";
     return 2;
 }
