@@ -40,6 +40,7 @@ private slots:
     void optionsOverrideTheLesson();
     void builtInLessonRuns();
     void blowUpExitsThree();
+    void shortSoakKeepsEnergy();
     void badInputExitsTwo_data();
     void badInputExitsTwo();
 
@@ -144,6 +145,20 @@ void TestCli::blowUpExitsThree()
     QVERIFY2(err.count('\n') == 0, qPrintable(err));
     QVERIFY2(err.contains("stopped after 0 steps: verlet is unstable for this spring at dt = 0.01 s"), qPrintable(err));
     QVERIFY2(err.contains("Lower dt below 0.00667 s"), qPrintable(err)); // 2 / ω
+}
+
+// A short soak: 200 balls, 3000 steps, collisions with e = 1 and exact walls.
+// It reports its largest energy change, which must stay at rounding level.
+void TestCli::shortSoakKeepsEnergy()
+{
+    const CliResult r = runCli({"soak", "--steps", "3000", "--balls", "200"});
+    QCOMPARE(r.exitCode, 0);
+    const QString key = QStringLiteral("largest relative energy change (sampled every 1000 steps): ");
+    const qsizetype at = r.out.indexOf(key);
+    QVERIFY2(at >= 0, qPrintable(r.out));
+    const double change = r.out.mid(at + key.size()).section('\n', 0, 0).toDouble();
+    QVERIFY2(change < 1e-12, qPrintable(QString::number(change)));
+    QVERIFY(r.out.contains("no NaN"));
 }
 
 void TestCli::badInputExitsTwo_data()
