@@ -64,6 +64,7 @@ struct Options {
     bool main = true;
     bool peers = true;
     bool bandwidth = true;
+    bool profile = false;
 };
 
 std::optional<std::vector<int>> parseSizes(const std::string& text)
@@ -243,6 +244,73 @@ void printTargets(const std::vector<Row>& rows, const Options& o, std::ostream& 
     }
 }
 
+// Where one step's time goes, stage by stage, for sweep and grid at the
+// largest size: the collision stage's own timers (CollisionSystem::profile)
+// and the rest of World::step (forces, integration, walls, the state copy).
+void runProfile(const Options& o, std::ostream& out)
+{
+    const int n = o.sizes.back();
+    const int steps = std::max(o.runs, 5);
+    World warm(boxScene(n, 3.0, 5.0, 100.0, 0.9, Detection::Grid, 7));
+    for (int k = 0; k < 60; ++k)
+        warm.step();
+    out << "\nProfile at N = " << n << ": mean ms per step over " << steps
+        << " steps from the warm state (thread CPU time for the whole step).\n\n";
+    struct Stage {
+        const char* name;
+        double CollisionProfile::*field;
+    };
+    const Stage stages[] = {{"load balls, boxes", &CollisionProfile::load},
+                            {"broad phase: sort / cells", &CollisionProfile::broadSort},
+                            {"pairs + narrow phase", &CollisionProfile::pairs},
+                            {"contact sort (a, b)", &CollisionProfile::contactSort},
+                            {"solver: rows, flags", &CollisionProfile::build},
+                            {"solver: wall scan", &CollisionProfile::wallScan},
+                            {"solver: velocity passes", &CollisionProfile::velocity},
+                            {"solver: restitution", &CollisionProfile::restitution},
+                            {"solver: position update", &CollisionProfile::position},
+                            {"positional correction", &CollisionProfile::correction}};
+    std::vector<CollisionProfile> profiles;
+    std::vector<double> stepMs;
+    const Detection dets[] = {Detection::Sweep, Detection::Grid};
+    for (Detection d : dets) {
+        World w = warm;
+        WorldSettings ws = w.settings();
+        ws.collisions.detection = d;
+        w.setSettings(ws);
+        w.step(); // first step with this detector: sorts from scratch
+        w.collisionSystem().resetProfile();
+        w.collisionSystem().setProfiling(true);
+        const double c0 = threadCpuMilliseconds();
+        for (int k = 0; k < steps; ++k)
+            w.step();
+        stepMs.push_back((threadCpuMilliseconds() - c0) / steps);
+        profiles.push_back(w.collisionSystem().profile());
+    }
+    out << std::left << std::setw(28) << "stage" << std::right << std::setw(10) << "sweep" << std::setw(10) << "grid"
+        << "\n"
+        << std::fixed << std::setprecision(3);
+    for (const Stage& s : stages) {
+        out << std::left << std::setw(28) << s.name << std::right;
+        for (const CollisionProfile& p : profiles)
+            out << std::setw(10) << p.*s.field * 1e3 / steps;
+        out << "\n";
+    }
+    out << std::left << std::setw(28) << "collision stage, total" << std::right;
+    for (const CollisionProfile& p : profiles)
+        out << std::setw(10) << p.total() * 1e3 / steps;
+    out << "\n" << std::left << std::setw(28) << "rest of World::step" << std::right;
+    for (std::size_t k = 0; k < profiles.size(); ++k)
+        out << std::setw(10) << stepMs[k] - profiles[k].total() * 1e3 / steps;
+    out << "\n" << std::left << std::setw(28) << "whole step (cpu)" << std::right;
+    for (double ms : stepMs)
+        out << std::setw(10) << ms;
+    out << "\n" << std::left << std::setw(28) << "velocity passes per step" << std::right << std::setprecision(1);
+    for (const CollisionProfile& p : profiles)
+        out << std::setw(10) << static_cast<double>(p.passes) / steps;
+    out << "\n" << std::flush;
+}
+
 // The peer scene of the issue: equal circles (r = 5 px) filling 30% of a
 // square box on a jittered grid, gravity, restitution 0.9, 600 steps at 60 Hz.
 std::vector<Row> runPeerTable(const Options& o, std::ostream& out)
@@ -408,6 +476,8 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
                 return 2;
             }
             o.bruteLimit = (*n)[0];
+        } else if (a == "--profile") {
+            o.profile = true;
         } else if (a == "--no-peers") {
             o.peers = false;
         } else if (a == "--peers-only") {
@@ -416,7 +486,7 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         } else {
             err << "forcelab-cli bench: unknown option '" << a
                 << "' (options: --quick, --csv FILE, --runs K, --sizes N,N,..., --peer-sizes N,N,..., --brute-limit N, --no-peers, "
-                   "--peers-only)\n";
+                   "--peers-only, --profile)\n";
             return 2;
         }
     }
@@ -433,6 +503,8 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         rows = runMainTable(o, out);
         printTargets(rows, o, out);
     }
+    if (o.profile && o.main)
+        runProfile(o, out);
     if (o.bandwidth)
         runBandwidth(rows, o, out);
     if (o.peers) {

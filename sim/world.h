@@ -94,6 +94,8 @@ public:
     /// The comparison wind (settings().wind.compare), px/s²; it acts on nothing.
     double compareWind() const;
     const std::vector<Contact>& contacts() const { return m_collisions.contacts(); }
+    /// The collision stage itself, for its per-stage profile (bench --profile) and tuning.
+    CollisionSystem& collisionSystem() { return m_collisions; }
 
 private:
     void subStep(double h);

@@ -85,7 +85,8 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
 
 } // namespace
 
-void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats)
+void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats,
+                                   StageClock& clock)
 {
     out.clear();
     const int n = m_input.size();
@@ -93,18 +94,21 @@ void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Con
         switch (method) {
         case Detection::Brute:
             bruteForcePairs(n, test, out, stats);
+            clock.lap(m_profile.pairs);
             return; // already in (a, b) order
         case Detection::Halved:
             halvedPairs(n, test, out, stats);
+            clock.lap(m_profile.pairs);
             return; // already in (a, b) order
         case Detection::Sweep:
-            m_sweep.findPairs(m_input, test, out, stats);
+            m_sweep.findPairs(m_input, test, out, stats, clock, m_profile);
             break;
         case Detection::Grid:
-            m_grid.findPairs(m_input, test, out, stats);
+            m_grid.findPairs(m_input, test, out, stats, clock, m_profile);
             break;
         }
         m_sorter.sort(out, n);
+        clock.lap(m_profile.contactSort);
     };
     if (swept) {
         run(SweptTest{BallArrays{m_input.x.data(), m_input.y.data(), m_input.r.data(), m_input.x0.data(),
@@ -118,8 +122,10 @@ void CollisionSystem::findContacts(Detection method, bool swept, std::vector<Con
 CollisionStats CollisionSystem::detect(const BallState& balls, Detection method, std::vector<Contact>& out)
 {
     CollisionStats stats;
+    StageClock clock(m_profiling);
     m_input.loadStatic(balls);
-    findContacts(method, false, out, stats);
+    clock.lap(m_profile.load);
+    findContacts(method, false, out, stats, clock);
     return stats;
 }
 
@@ -127,11 +133,13 @@ CollisionStats CollisionSystem::detectMoving(const BallState& balls, const Matri
                                              Detection method, std::vector<Contact>& out)
 {
     CollisionStats stats;
+    StageClock clock(m_profiling);
     if (startPositions.cols() != balls.size())
         m_input.loadStatic(balls);
     else
         m_input.loadSwept(balls, startPositions);
-    findContacts(method, startPositions.cols() == balls.size(), out, stats);
+    clock.lap(m_profile.load);
+    findContacts(method, startPositions.cols() == balls.size(), out, stats, clock);
     return stats;
 }
 
@@ -141,6 +149,9 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
 {
     CollisionStats stats;
     m_lastPasses = 0;
+    StageClock clock(m_profiling);
+    if (m_profiling)
+        ++m_profile.calls;
     const int n = balls.size();
     balls.colliding.assign(static_cast<std::size_t>(n), 0);
     if (settings.response == Response::None) {
@@ -152,12 +163,14 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_input.loadSwept(balls, startPositions);
     else
         m_input.loadStatic(balls);
-    findContacts(settings.detection, continuous, m_contacts, stats);
+    clock.lap(m_profile.load);
+    findContacts(settings.detection, continuous, m_contacts, stats, clock);
 
     for (const Contact& c : m_contacts) {
         balls.colliding[static_cast<std::size_t>(c.a)] = 1;
         balls.colliding[static_cast<std::size_t>(c.b)] = 1;
     }
+    clock.lap(m_profile.build);
     if (settings.response == Response::Flag) {
         m_warmCount = -1;
         return stats;
@@ -165,12 +178,15 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     const double g = gravity.norm();
     const double restingSpeed = m_solver.restingFactor * g * dt;
     if (settings.response == Response::Impulse2D && !continuous && restingSpeed > 0.0 && std::isfinite(restingSpeed)) {
-        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g);
+        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g, clock);
+        if (m_profiling)
+            m_profile.passes += m_lastPasses;
         return stats;
     }
     m_warmCount = -1; // no resting solve: nothing to warm-start from next time
     if (!m_contacts.empty())
         resolve(balls, continuous ? &startPositions : nullptr, settings, box, walls, dt);
+    clock.lap(m_profile.correction);
     return stats;
 }
 
@@ -178,7 +194,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
 // accumulated, warm-started impulses over the ball–ball and ball–wall
 // contacts, then positional correction with slop.
 void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls,
-                                   double h, double restingSpeed, double gravity)
+                                   double h, double restingSpeed, double gravity, StageClock& clock)
 {
     double* x = balls.position.data();
     double* v = balls.velocity.data();
@@ -217,6 +233,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         m_spareRows.push_back({c.a, c.b, nrm.x(), nrm.y(), wa, wb, 1.0 / (wa + wb), vn0, warm});
     }
     m_pairRows.swap(m_spareRows);
+    clock.lap(m_profile.build);
 
     // Ball–wall rows, in ball order: a ball on an enabled wall, or nearer to it
     // than the slop plus the distance gravity moves a ball from rest in one
@@ -253,6 +270,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         }
     }
     m_wallRows.swap(m_spareWalls);
+    clock.lap(m_profile.wallScan);
 
     m_velocityBefore = balls.velocity;
 
@@ -307,6 +325,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             break;
     }
     m_lastPasses = made;
+    clock.lap(m_profile.velocity);
 
     // Restitution: a pair that hit faster than the resting speed separates at
     // e times the speed it hit with; slower ones stay at rest (threshold).
@@ -335,6 +354,8 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         row.impulse = total;
     }
 
+    clock.lap(m_profile.restitution);
+
     // The integrator moved the balls with their velocities before the
     // contacts acted; move them as if the contact impulses had acted at the
     // start of the sub-step (what a solver that runs between the velocity and
@@ -350,6 +371,8 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         x[2 * i] = q.x();
         x[2 * i + 1] = q.y();
     }
+
+    clock.lap(m_profile.position);
 
     // Positional correction with slop, positions only.
     const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
@@ -378,6 +401,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             x[2 * b + 1] = pb.y();
         }
     }
+    clock.lap(m_profile.correction);
 }
 
 void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings,

@@ -12,6 +12,7 @@
 #include "../ball_state.h"
 #include "../world_settings.h"
 #include "broad_phase_input.h"
+#include "collision_profile.h"
 #include "contact.h"
 #include "contact_solver.h"
 #include "contact_sort.h"
@@ -63,16 +64,22 @@ public:
     /// The touching pairs found by the last step(), sorted by (a, b).
     const std::vector<Contact>& contacts() const { return m_contacts; }
 
+    /// Per-stage timing (bench --profile): off by default, then no clock is read.
+    void setProfiling(bool on) { m_profiling = on; }
+    const CollisionProfile& profile() const { return m_profile; }
+    void resetProfile() { m_profile = CollisionProfile{}; }
+
     /// The broad phases, for counters and tuning (bench, tests).
     const SweepAndPrune& sweepAndPrune() const { return m_sweep; }
     UniformGrid& grid() { return m_grid; }
 
 private:
-    void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats);
+    void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats,
+                      StageClock& clock);
     void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
                  const WallSettings& walls, double dt);
     void solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls, double h,
-                      double restingSpeed, double gravity);
+                      double restingSpeed, double gravity, StageClock& clock);
 
     // One ball–ball contact of the resting solver: the pair, the line of
     // impact at detection, inverse masses, the effective mass 1/(wa + wb),
@@ -96,6 +103,8 @@ private:
     int m_warmCount = -1;
     ContactSolverSettings m_solver;
     int m_lastPasses = 0;
+    bool m_profiling = false;
+    CollisionProfile m_profile;
 
     std::vector<Contact> m_contacts;
     // Scratch kept between steps: no allocation once sizes settle, and the

@@ -137,7 +137,7 @@ void SweepAndPrune::sortByRows()
 
 template <class Test>
 void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
-                              CollisionStats& stats)
+                              CollisionStats& stats, StageClock& clock, CollisionProfile& profile)
 {
     refreshKeys(in);
     const std::size_t n = m_keys.size();
@@ -175,6 +175,7 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vecto
             m_y0[k] = in.y0[i];
         }
     }
+    clock.lap(profile.broadSort);
     // The narrow phase on the sorted copies (it is symmetric, so the order of
     // the two balls in a call does not matter).
     const Test sorted{BallArrays{m_x.data(), m_y.data(), m_r.data(), m_x0.data(), m_y0.data()}};
@@ -223,11 +224,12 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vecto
         begin = end;
     }
     stats.pairsTested += tested;
+    clock.lap(profile.pairs);
 }
 
 template void SweepAndPrune::findPairs<OverlapTest>(const BroadPhaseInput&, const OverlapTest&,
-                                                    std::vector<Contact>&, CollisionStats&);
+                                                    std::vector<Contact>&, CollisionStats&, StageClock&, CollisionProfile&);
 template void SweepAndPrune::findPairs<SweptTest>(const BroadPhaseInput&, const SweptTest&,
-                                                  std::vector<Contact>&, CollisionStats&);
+                                                  std::vector<Contact>&, CollisionStats&, StageClock&, CollisionProfile&);
 
 } // namespace forcelab::sim

@@ -17,6 +17,7 @@
 // row) it falls back to a counting sort by row and a sort inside each row.
 
 #include "broad_phase_input.h"
+#include "collision_profile.h"
 #include "contact.h"
 
 #include <cstdint>
@@ -27,8 +28,10 @@ namespace forcelab::sim {
 class SweepAndPrune {
 public:
     /// Appends every touching pair (a < b), in no particular order.
+    /// `clock` laps into `profile` (when given) after the sort and after the sweep.
     template <class Test>
-    void findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out, CollisionStats& stats);
+    void findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out, CollisionStats& stats,
+                   StageClock& clock, CollisionProfile& profile);
 
     /// Element moves of the last re-sort's insertion sort (a measure of how sorted it was).
     std::int64_t lastShifts() const { return m_lastShifts; }

@@ -59,7 +59,7 @@ bool UniformGrid::placeBalls(const BroadPhaseInput& in, double cell, double minX
 
 template <class Test>
 void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
-                            CollisionStats& stats)
+                            CollisionStats& stats, StageClock& clock, CollisionProfile& profile)
 {
     m_entries = 0;
     if (in.active.size() < 2)
@@ -156,6 +156,7 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
         }
     };
 
+    clock.lap(profile.broadSort);
     // Pairs in each cell. Both boxes cover the cell, so the overlap's lower
     // corner is in this cell exactly when this is the first column of one of
     // the two balls and the first row of one of them.
@@ -180,11 +181,12 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
         begin = end;
     }
     stats.pairsTested += tested;
+    clock.lap(profile.pairs);
 }
 
 template void UniformGrid::findPairs<OverlapTest>(const BroadPhaseInput&, const OverlapTest&, std::vector<Contact>&,
-                                                  CollisionStats&);
+                                                  CollisionStats&, StageClock&, CollisionProfile&);
 template void UniformGrid::findPairs<SweptTest>(const BroadPhaseInput&, const SweptTest&, std::vector<Contact>&,
-                                                CollisionStats&);
+                                                CollisionStats&, StageClock&, CollisionProfile&);
 
 } // namespace forcelab::sim

@@ -15,6 +15,7 @@
 // cells that land in the same slot are told apart by their coordinates.
 
 #include "broad_phase_input.h"
+#include "collision_profile.h"
 #include "contact.h"
 
 #include <cstdint>
@@ -25,8 +26,10 @@ namespace forcelab::sim {
 class UniformGrid {
 public:
     /// Appends every touching pair (a < b), in no particular order.
+    /// `clock` laps into `profile` after the balls are placed in cells and after the pairs.
     template <class Test>
-    void findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out, CollisionStats& stats);
+    void findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out, CollisionStats& stats,
+                   StageClock& clock, CollisionProfile& profile);
 
     /// Cell side as a multiple of the mean ball box size (default 1).
     void setCellScale(double scale) { m_cellScale = scale; }
