@@ -18,4 +18,20 @@ std::optional<double> parseFiniteNumber(const std::string& text)
     }
 }
 
+std::optional<Lesson> loadLessonWorld(const QString& pathOrId, const QList<Override>& overrides, sim::World& world,
+                                      std::ostream& err)
+{
+    LoadResult loaded = LessonLoader::load(pathOrId, overrides);
+    if (!loaded.ok()) {
+        for (const QString& e : loaded.errors)
+            err << e.toStdString() << "\n";
+        return std::nullopt;
+    }
+    if (auto error = world.reset(loaded.lesson->scene)) {
+        err << loaded.lesson->source.toStdString() << ": " << *error << "\n";
+        return std::nullopt;
+    }
+    return std::move(loaded.lesson);
+}
+
 } // namespace forcelab::cli

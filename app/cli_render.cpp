@@ -86,18 +86,11 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     const auto options = parseArgs(args, err);
     if (!options)
         return 2;
-    const LoadResult loaded = LessonLoader::load(options->lesson);
-    if (!loaded.ok()) {
-        for (const QString& e : loaded.errors)
-            err << e.toStdString() << "\n";
-        return 2;
-    }
-    const Lesson& lesson = *loaded.lesson;
     sim::World world;
-    if (auto error = world.reset(lesson.scene)) {
-        err << lesson.source.toStdString() << ": " << *error << "\n";
+    const std::optional<Lesson> loaded = loadLessonWorld(options->lesson, {}, world, err);
+    if (!loaded)
         return 2;
-    }
+    const Lesson& lesson = *loaded;
     // The whole number of steps closest to T, as `run --time` takes.
     const double dt = world.settings().time.dt;
     const auto steps = static_cast<std::int64_t>(std::llround(options->time / dt));

@@ -153,18 +153,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     const auto options = parseArgs(args, err);
     if (!options)
         return 2;
-    const LoadResult loaded = LessonLoader::load(options->lesson, options->overrides);
-    if (!loaded.ok()) {
-        for (const QString& e : loaded.errors)
-            err << e.toStdString() << "\n";
-        return 2;
-    }
-    const Lesson& lesson = *loaded.lesson;
     sim::World world;
-    if (auto error = world.reset(lesson.scene)) {
-        err << lesson.source.toStdString() << ": " << *error << "\n";
+    const std::optional<Lesson> loaded = loadLessonWorld(options->lesson, options->overrides, world, err);
+    if (!loaded)
         return 2;
-    }
+    const Lesson& lesson = *loaded;
     const double dt = world.settings().time.dt;
     // --time T runs the whole number of steps closest to T (dt need not divide T).
     const std::int64_t steps = options->steps ? *options->steps
