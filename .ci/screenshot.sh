@@ -14,6 +14,10 @@ lesson=${3:-}
 seconds=${4:-3}
 ball=${5:-17}
 [ "$ball" = none ] && ball=
+if ! command -v xvfb-run >/dev/null 2>&1; then
+    echo "screenshot.sh: xvfb-run is missing; install it with: apt-get install xvfb" >&2
+    exit 2
+fi
 config=$(mktemp -d)
 trap 'rm -rf "$config"' EXIT
 XDG_CONFIG_HOME="$config" xvfb-run -a -s "-screen 0 1400x900x24" \
