@@ -9,6 +9,7 @@
 
 #include "sim/kepler.h"
 #include "sim/names.h"
+#include "sim/work_precision.h"
 #include "sim/world.h"
 
 #include <QImage>
@@ -330,42 +331,21 @@ struct Fit {
 
 Fit fittedOrder(const std::vector<Row>& rows, const Problem& p, IntegratorKind kind)
 {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int n = 0;
+    std::vector<double> dts, errors;
     for (const Row& r : rows) {
         if (r.problem != p.name || r.integrator != kind || r.tolerance > 0.0 || r.blewUp)
             continue;
         const double rel = r.positionError / p.length;
         if (!(rel > 1e-10 && rel < 1e-2))
             continue;
-        const double x = std::log(r.dt), y = std::log(r.positionError);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-        ++n;
+        dts.push_back(r.dt);
+        errors.push_back(r.positionError);
     }
     Fit f;
-    f.points = n;
-    if (n >= 3)
-        f.order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    f.points = int(dts.size());
+    if (f.points >= 3)
+        f.order = sim::fittedOrder(dts, errors); // the workbench's convergence button fits the same way
     return f;
-}
-
-double theoreticalOrder(IntegratorKind k)
-{
-    switch (k) {
-    case IntegratorKind::Euler:
-    case IntegratorKind::SemiImplicitEuler:
-        return 1.0;
-    case IntegratorKind::Verlet:
-        return 2.0;
-    case IntegratorKind::Rk4:
-    case IntegratorKind::Yoshida4:
-        return 4.0;
-    default:
-        return std::nan("");
-    }
 }
 
 // ---------------------------------------------------------------------------
