@@ -22,6 +22,10 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::settingsChanged, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::sceneChanged, this, &Canvas::onSceneChanged);
+    connect(m_controller, &SimulationController::ghostChanged, this, [this] {
+        m_options.ghost = m_controller->ghost();
+        update();
+    });
 }
 
 void Canvas::setOverlays(const Overlays& overlays)

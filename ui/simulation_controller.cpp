@@ -1,5 +1,7 @@
 #include "simulation_controller.h"
 
+#include "sim/work_precision.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,6 +28,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
     m_accumulator = 0.0;
     m_droppedTime = 0.0;
     m_clock.restart();
+    restartGhost();
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
@@ -38,6 +41,12 @@ bool SimulationController::setSettings(const sim::WorldSettings& settings)
     if (auto error = m_world.setSettings(settings)) {
         emit errorOccurred(QString::fromStdString(*error));
         return false;
+    }
+    if (m_ghost && m_ghost->setSettings(ghostSettings(settings))) {
+        // The ghost cannot take them (e.g. exact with a changing force): it goes.
+        m_ghost.reset();
+        m_ghostMode = GhostMode::Off;
+        emit ghostChanged();
     }
     emit settingsChanged();
     emit stepped(); // a paused canvas shows the change (walls, markers)
@@ -61,6 +70,8 @@ void SimulationController::checkHalted()
 void SimulationController::setPointer(const sim::PointerInput& pointer)
 {
     m_world.setPointer(pointer);
+    if (m_ghost)
+        m_ghost->setPointer(pointer);
 }
 
 void SimulationController::setMaxStepsPerFrame(int steps)
@@ -87,6 +98,7 @@ int SimulationController::advance(double elapsedSeconds)
     }
     for (int k = 0; k < steps && !m_world.halted(); ++k)
         m_world.step();
+    stepGhost();
     if (steps > 0)
         emit stepped();
     checkHalted();
@@ -130,6 +142,7 @@ void SimulationController::stepOnce()
     pause();
     m_accumulator = 0.0;
     m_world.step();
+    stepGhost();
     emit stepped();
     checkHalted();
 }
@@ -151,6 +164,7 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
     m_spawn = spawn;
     m_accumulator = 0.0;
     m_clock.restart();
+    restartGhost();
     emit sceneChanged();
     emit stepped();
     return true;
@@ -166,6 +180,7 @@ void SimulationController::reset()
     m_accumulator = 0.0;
     m_droppedTime = 0.0;
     m_clock.restart();
+    restartGhost();
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
@@ -203,6 +218,66 @@ void SimulationController::updateTimer()
     } else if (!run && m_timer.isActive()) {
         m_timer.stop();
     }
+}
+
+void SimulationController::setGhost(GhostMode mode, sim::IntegratorKind integrator, int divider)
+{
+    m_ghostMode = mode;
+    m_ghostIntegrator = integrator;
+    m_ghostDivider = std::max(1, divider);
+    restartGhost();
+}
+
+sim::WorldSettings SimulationController::ghostSettings(const sim::WorldSettings& live) const
+{
+    sim::WorldSettings s = live;
+    if (m_ghostMode == GhostMode::Compare) {
+        s.time.integrator = m_ghostIntegrator;
+        s.time.dt = live.time.dt / m_ghostDivider;
+    }
+    return s;
+}
+
+// The ghost starts from the live world's state now: the same balls (the twin's
+// nudged), the same settings but its own integrator, its own clock at 0.
+void SimulationController::restartGhost()
+{
+    m_ghost.reset();
+    if (m_ghostMode != GhostMode::Off) {
+        sim::Scene scene;
+        scene.settings = ghostSettings(m_world.settings());
+        auto ghost = std::make_unique<sim::World>();
+        if (auto error = ghost->reset(scene)) {
+            emit errorOccurred(tr("ghost: %1").arg(QString::fromStdString(*error)));
+            m_ghostMode = GhostMode::Off;
+        } else {
+            sim::BallState& balls = ghost->mutableBalls();
+            balls = m_world.balls();
+            if (m_ghostMode == GhostMode::Twin)
+                balls.position.row(0).array() += kTwinOffset;
+            ghost->setPointer(m_world.pointer());
+            m_ghost = std::move(ghost);
+            m_ghostOffset = m_world.time();
+        }
+    }
+    emit ghostChanged();
+}
+
+// Steps the ghost until it has reached the live world's time (within half of
+// its step: with a step of dt / divider it lands on it exactly).
+void SimulationController::stepGhost()
+{
+    if (!m_ghost)
+        return;
+    const double target = m_world.time() - m_ghostOffset;
+    const double h = m_ghost->settings().time.dt;
+    while (!m_ghost->halted() && m_ghost->time() < target - 0.5 * h)
+        m_ghost->step();
+}
+
+double SimulationController::ghostSeparation() const
+{
+    return m_ghost ? sim::largestSeparation(m_world, *m_ghost) : 0.0;
 }
 
 } // namespace forcelab

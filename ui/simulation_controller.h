@@ -15,6 +15,7 @@
 #include <QString>
 #include <QTimer>
 
+#include <memory>
 #include <optional>
 
 namespace forcelab {
@@ -72,6 +73,27 @@ public:
     /// Simulated time dropped by the cap since the scene started, s.
     double droppedTime() const { return m_droppedTime; }
 
+    /// A second world run beside the live one, for comparison. Compare: the
+    /// same balls and settings with another integrator and a step of
+    /// dt / divider (default: the reference integrator at the same dt). Twin:
+    /// the same integrator and dt, every ball moved 1e-10 px to the right, to
+    /// show how fast a tiny difference grows. The ghost starts from the live
+    /// world's state when switched on, restarts with every reset or new
+    /// scene, takes the live world's settings edits and pointer, and is
+    /// stepped to the same simulated time after every step of the live world.
+    enum class GhostMode { Off, Compare, Twin };
+    void setGhost(GhostMode mode, sim::IntegratorKind integrator = sim::IntegratorKind::Ias15, int divider = 1);
+    GhostMode ghostMode() const { return m_ghostMode; }
+    sim::IntegratorKind ghostIntegrator() const { return m_ghostIntegrator; }
+    int ghostDivider() const { return m_ghostDivider; }
+    /// The ghost world, or null when off.
+    const sim::World* ghost() const { return m_ghost.get(); }
+    /// Largest distance between a live ball and its ghost, px (inf when the
+    /// two hold different balls, 0 when off).
+    double ghostSeparation() const;
+    /// How far the twin's balls are moved at its start, px.
+    static constexpr double kTwinOffset = 1e-10;
+
 public slots:
     void play();
     void pause();
@@ -97,11 +119,16 @@ signals:
     /// The world stopped itself because the motion blows up (`reason` says why
     /// and how to fix it), or, with an empty reason, it may run again.
     void haltedChanged(const QString& reason);
+    /// The ghost was switched, restarted or refused its settings.
+    void ghostChanged();
 
 private:
     void tick();
     void updateTimer();
     void checkHalted();
+    void restartGhost();
+    void stepGhost();
+    sim::WorldSettings ghostSettings(const sim::WorldSettings& live) const;
 
     sim::World m_world;
     QString m_haltReason; // the last reason reported by haltedChanged
@@ -115,6 +142,12 @@ private:
     int m_maxStepsPerFrame = 8;
     bool m_playing = false;
     bool m_suspended = false;
+
+    GhostMode m_ghostMode = GhostMode::Off;
+    sim::IntegratorKind m_ghostIntegrator = sim::IntegratorKind::Ias15;
+    int m_ghostDivider = 1;
+    std::unique_ptr<sim::World> m_ghost;
+    double m_ghostOffset = 0.0; // s, live time when the ghost started (its own time starts at 0)
 };
 
 } // namespace forcelab

@@ -34,6 +34,7 @@ Overlays Overlays::fromNames(const QStringList& names)
     o.broadphase = names.contains(QStringLiteral("broadphase"));
     o.histogram = names.contains(QStringLiteral("histogram"));
     o.totals = names.contains(QStringLiteral("totals"));
+    // ghost stays on: it draws only while a ghost world runs.
     return o;
 }
 
@@ -60,6 +61,8 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     PaintOptions shown = options;
     shown.overlays.colliding = options.overlays.colliding || world.settings().collisions.response == sim::Response::Flag;
     paintBalls(p, area, v, world, shown, dpr);
+    if (options.overlays.ghost && options.ghost)
+        paintGhost(p, v, *options.ghost, options);
 
     std::optional<sim::Matrix2X> accelerations;
     if ((options.overlays.acceleration || options.overlays.readout) && !world.balls().empty())
@@ -75,6 +78,28 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
         paintTotals(p, v, world, options);
     if (options.overlays.readout)
         paintReadout(p, area, v, world, options, a);
+    p.restore();
+}
+
+// The ghost: a thin dashed outline per ball, over the live balls, so where the
+// two runs agree the outline sits on the ball's edge and where they part it
+// drifts away.
+void WorldPainter::paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost,
+                              const PaintOptions& options)
+{
+    const sim::BallState& balls = ghost.balls();
+    if (balls.size() > kMaxGhostBalls)
+        return;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    QPen pen(QColor::fromRgba(canvas_colors::kGhost), 1.5 * options.lineScale, Qt::DashLine);
+    p.setPen(pen);
+    p.setBrush(Qt::NoBrush);
+    for (int i = 0; i < balls.size(); ++i) {
+        const QPointF c = view.toWidget(sim::Vec2(balls.position.col(i)));
+        const double r = std::max(2.0, view.toWidget(balls.radius(i)));
+        p.drawEllipse(c, r, r);
+    }
     p.restore();
 }
 

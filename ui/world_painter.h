@@ -30,6 +30,7 @@ struct Overlays {
     bool broadphase = false;   ///< [broadphase] the grid cells or the sweep's x-intervals of the collision detection
     bool histogram = false;    ///< [histogram] not drawn on the canvas: the plots dock shows the speed histogram
     bool totals = false;       ///< [totals] total energy and momentum in the box's top-right corner
+    bool ghost = true;         ///< [ghost] faint outlines of the ghost world's balls, when one runs (the Accuracy dock starts it)
 
     /// From a lesson's overlay names; unknown names are ignored (the loader has
     /// checked them). grid and markers are on in every lesson (they hide
@@ -61,6 +62,7 @@ struct PaintOptions {
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
+    const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
 };
 
 /// The canvas palette (light, high contrast: readable on a projector).
@@ -78,6 +80,7 @@ inline constexpr QRgb kVane = 0xff1c5d99;
 inline constexpr QRgb kImpactLine = 0xffd9480f;
 inline constexpr QRgb kTangent = 0xff6c757d;
 inline constexpr QRgb kBroadPhase = 0xff4263eb;
+inline constexpr QRgb kGhost = 0xa0202020;      ///< the ghost's outlines (translucent)
 } // namespace canvas_colors
 
 class WorldPainter {
@@ -102,6 +105,8 @@ public:
     /// Centre and radius (widget px) of wind vane `index` (0: the acting wind, 1: the compared one).
     static QPointF vaneCentre(const ViewTransform& view, int index, double lineScale);
     static double vaneRadius(double lineScale) { return 26.0 * lineScale; }
+    /// Above this many balls, the ghost is not drawn (outlines of every ball would hide the balls).
+    static constexpr int kMaxGhostBalls = 5000;
     /// The lines of the totals panel: kinetic, potential and total energy, momentum.
     static QStringList totalsText(const sim::World& world);
 
@@ -115,6 +120,7 @@ private:
     void paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
+    void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
     void paintTotals(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
