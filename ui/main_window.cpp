@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "accuracy_dock.h"
 #include "canvas.h"
 #include "parameter_commands.h"
 #include "inspector_dock.h"
@@ -230,6 +231,9 @@ void MainWindow::createMenus()
     lessons->addAction(m_previousAction);
     lessons->addAction(m_nextAction);
 
+    m_accuracyMenu = menuBar()->addMenu(tr("&Accuracy"));
+    m_accuracyMenu->setObjectName(QStringLiteral("accuracyMenu"));
+
     // Also filled by createToolBars and createDocks with their toggle actions.
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
@@ -300,6 +304,17 @@ void MainWindow::createDocks()
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     m_plotsDock = new PlotsDock(m_controller, this);
     addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
+    // Beside the plots, closed at first: while shown it keeps the energy books,
+    // which cost force evaluations.
+    m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_accuracyDock);
+    tabifyDockWidget(m_plotsDock, m_accuracyDock);
+    m_plotsDock->raise();
+    m_accuracyDock->hide();
+    m_accuracyMenu->addAction(m_accuracyDock->tradeOffAction());
+    m_accuracyMenu->addAction(m_accuracyDock->convergenceAction());
+    m_accuracyMenu->addSeparator();
+    m_accuracyMenu->addAction(m_accuracyDock->toggleViewAction());
 
     m_undoAction = m_parameters->undoStack()->createUndoAction(this, tr("&Undo"));
     m_undoAction->setObjectName(QStringLiteral("undoAction"));
@@ -321,6 +336,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_parametersDock->toggleViewAction());
     m_viewMenu->addAction(m_plotsDock->toggleViewAction());
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
+    m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
     resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
     resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);

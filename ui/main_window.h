@@ -22,6 +22,7 @@ class QToolBar;
 
 namespace forcelab {
 
+class AccuracyDock;
 class Canvas;
 class InspectorDock;
 class LessonsDock;
@@ -61,6 +62,7 @@ public:
     LessonsDock* lessonsDock() const { return m_lessonsDock; }
     InspectorDock* inspectorDock() const { return m_inspectorDock; }
     PlotsDock* plotsDock() const { return m_plotsDock; }
+    AccuracyDock* accuracyDock() const { return m_accuracyDock; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -109,6 +111,7 @@ private:
     InspectorDock* m_inspectorDock = nullptr;
     QDockWidget* m_parametersDock = nullptr;
     PlotsDock* m_plotsDock = nullptr;
+    AccuracyDock* m_accuracyDock = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
 
@@ -130,6 +133,7 @@ private:
     QAction* m_presentationAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_accuracyMenu = nullptr; // filled by createDocks with the Accuracy dock's actions
     QToolBar* m_simulationToolBar = nullptr;
     QToolBar* m_fileToolBar = nullptr;
 

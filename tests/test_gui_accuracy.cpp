@@ -1,0 +1,319 @@
+// The Accuracy dock and the ghost, driven as a student would: the drift
+// numbers are the world's own books, the ghost runs the same scene beside the
+// live one (by default with the reference integrator) and restarts with it,
+// the sensitivity twin shows chaos in the three-body lesson and none on a
+// spring or an orbit, and the trade-off and convergence studies run in the
+// background, can be cancelled, and report what theory predicts.
+
+#include "ui/accuracy_dock.h"
+#include "ui/canvas.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+
+#include "sim/world.h"
+
+#include <QAbstractSeries>
+#include <QAction>
+#include <QChart>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+#include <QToolButton>
+#include <QXYSeries>
+
+#include <cmath>
+
+using namespace forcelab;
+
+namespace {
+
+// A ball on a spring with linear drag: energy leaves on purpose, so the books
+// have something to book.
+sim::Scene springScene(sim::IntegratorKind integrator, double dt, bool drag)
+{
+    sim::Scene s;
+    s.settings.box = {600.0, 400.0};
+    s.settings.walls = sim::WallSettings{false, false, false, false, sim::WallModel::Clamp, 1.0};
+    s.settings.spring = sim::SpringSettings{true, sim::Vec2(300, 200), 4.0};
+    if (drag)
+        s.settings.drag = sim::DragSettings{true, sim::DragLaw::Linear, 0.5};
+    s.settings.time.integrator = integrator;
+    s.settings.time.dt = dt;
+    sim::Ball b;
+    b.position = {400.0, 200.0};
+    b.velocity = {0.0, 120.0};
+    b.radius = 10.0;
+    b.mass = 1.0;
+    s.balls = {b};
+    return s;
+}
+
+Lesson lessonOf(const sim::Scene& scene)
+{
+    Lesson lesson;
+    lesson.id = QStringLiteral("test-scene");
+    lesson.title = QStringLiteral("Test scene");
+    lesson.scene = scene;
+    return lesson;
+}
+
+double numberIn(const QWidget* root, const char* name)
+{
+    auto* label = root->findChild<QLabel*>(QString::fromLatin1(name));
+    if (!label)
+        return std::nan("");
+    bool ok = false;
+    const double v = label->text().toDouble(&ok);
+    return ok ? v : std::nan("");
+}
+
+// Runs the paused controller for `seconds` of simulated time in one frame.
+void runFor(SimulationController* c, double seconds)
+{
+    c->pause();
+    c->setMaxStepsPerFrame(1'000'000);
+    c->advance(seconds);
+}
+
+bool close(double shown, double actual)
+{
+    // The dock shows three significant digits.
+    return std::abs(shown - actual) <= 6e-3 * std::abs(actual) + 1e-300;
+}
+
+} // namespace
+
+class GuiAccuracyTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void dockIsInTheMenus();
+    void driftNumbersAreTheWorlds();
+    void ghostFollowsTheScene();
+    void twinShowsChaosInThreeBodies();
+    void twinStaysCloseOnSpringAndOrbit_data();
+    void twinStaysCloseOnSpringAndOrbit();
+    void tradeOffRunsToTheEnd();
+    void tradeOffCanBeCancelled();
+    void convergenceReportsTheOrder_data();
+    void convergenceReportsTheOrder();
+};
+
+void GuiAccuracyTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("ForceLabTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_gui_accuracy"));
+    QSettings().clear();
+}
+
+void GuiAccuracyTest::dockIsInTheMenus()
+{
+    MainWindow window;
+    AccuracyDock* dock = window.findChild<AccuracyDock*>(QStringLiteral("accuracyDock"));
+    QVERIFY(dock);
+    QCOMPARE(window.accuracyDock(), dock);
+    bool inView = false, tradeOff = false;
+    for (QAction* menu : window.menuBar()->actions())
+        for (QAction* a : menu->menu()->actions()) {
+            inView |= a == dock->toggleViewAction();
+            tradeOff |= a == dock->tradeOffAction();
+        }
+    QVERIFY(inView);
+    QVERIFY(tradeOff);
+}
+
+void GuiAccuracyTest::driftNumbersAreTheWorlds()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(springScene(sim::IntegratorKind::SemiImplicitEuler, 1.0 / 60, true))));
+    window.show();
+    AccuracyDock* dock = window.accuracyDock();
+    SimulationController* c = window.controller();
+    QVERIFY(!c->world().accounting()); // closed: no books, no extra cost
+    dock->toggleViewAction()->trigger(); // View > Accuracy
+    QTRY_VERIFY(c->world().accounting());
+    runFor(c, 3.0);
+    const sim::World& w = c->world();
+    QVERIFY(w.bookedEnergy() < 0.0); // drag took energy out
+    const double e0 = std::abs(w.startEnergy());
+    QVERIFY2(close(numberIn(dock, "energyDrift"), w.energyDrift() / e0),
+             qPrintable(QStringLiteral("%1 vs %2").arg(numberIn(dock, "energyDrift")).arg(w.energyDrift() / e0)));
+    QVERIFY(close(numberIn(dock, "bookedEnergy"), w.bookedEnergy() / e0));
+    QVERIFY(close(numberIn(dock, "momentumDrift"), w.momentumDrift().norm()));
+    // The booking takes the drag's work out: what is left is far smaller.
+    QVERIFY(std::abs(w.energyDrift()) < 0.1 * std::abs(w.bookedEnergy()));
+    // One evaluation per step for semi-implicit Euler plus the books' own.
+    QVERIFY(numberIn(dock, "evaluationsPerSecond") >= 60.0);
+
+    dock->toggleViewAction()->trigger();
+    QTRY_VERIFY(!c->world().accounting());
+}
+
+void GuiAccuracyTest::ghostFollowsTheScene()
+{
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("two-bodies-in-orbit")));
+    window.show();
+    AccuracyDock* dock = window.accuracyDock();
+    SimulationController* c = window.controller();
+    auto* mode = dock->findChild<QComboBox*>(QStringLiteral("ghostMode"));
+    auto* integrator = dock->findChild<QComboBox*>(QStringLiteral("ghostIntegrator"));
+    QVERIFY(mode && integrator);
+    QCOMPARE(integrator->currentText(), QStringLiteral("ias15")); // the reference by default
+    QVERIFY(!c->ghost());
+    const QImage without = window.canvas()->renderImage();
+
+    mode->setCurrentIndex(int(SimulationController::GhostMode::Compare));
+    QVERIFY(c->ghost());
+    QCOMPARE(c->ghost()->settings().time.integrator, sim::IntegratorKind::Ias15);
+    QCOMPARE(window.canvas()->paintOptions().ghost, c->ghost());
+    QCOMPARE(c->ghostSeparation(), 0.0);
+    runFor(c, 2.0);
+    QCOMPARE(c->ghost()->time(), c->world().time());
+    const double apart = c->ghostSeparation();
+    QVERIFY(apart > 0.0);      // semi-implicit Euler is not ias15
+    QVERIFY(apart < 50.0);     // but it is the same orbit
+    QCOMPARE(numberIn(dock, "separation"), std::stod(QString::number(apart, 'e', 2).toStdString()));
+    QVERIFY(dock->separationChart()->series().size() == 1);
+    // Drawn: the outlines change the picture; switched off, they do not.
+    QVERIFY(window.canvas()->renderImage() != without);
+
+    // A step of dt/4 lands on the same times.
+    const double t0 = c->world().time();
+    dock->findChild<QComboBox*>(QStringLiteral("ghostDivider"))->setCurrentIndex(2);
+    QCOMPARE(c->ghost()->settings().time.dt, c->world().settings().time.dt / 4);
+    runFor(c, 0.5);
+    QVERIFY(std::abs(c->ghost()->time() - (c->world().time() - t0)) < 1e-9);
+
+    // Reset: the ghost restarts with the scene.
+    c->reset();
+    QVERIFY(c->ghost());
+    QCOMPARE(c->ghost()->time(), 0.0);
+    QCOMPARE(c->ghostSeparation(), 0.0);
+    mode->setCurrentIndex(0);
+    QVERIFY(!c->ghost());
+}
+
+void GuiAccuracyTest::twinShowsChaosInThreeBodies()
+{
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("three-bodies")));
+    SimulationController* c = window.controller();
+    window.accuracyDock()->findChild<QComboBox*>(QStringLiteral("ghostMode"))
+        ->setCurrentIndex(int(SimulationController::GhostMode::Twin));
+    QVERIFY(c->ghost());
+    QCOMPARE(c->ghost()->settings().time.integrator, c->world().settings().time.integrator);
+    const double start = c->ghostSeparation();
+    QVERIFY(start > 0.0 && start < 1e-9);
+    runFor(c, 10.0);
+    QVERIFY(std::abs(c->world().time() - 10.0) < 1e-9);
+    const double end = c->ghostSeparation();
+    qInfo("three bodies: twin separation %.3g px at 0 s, %.3g px at 10 s", start, end);
+    QVERIFY(end > 1e6 * start); // a tenth of a nanometre becomes visible
+}
+
+void GuiAccuracyTest::twinStaysCloseOnSpringAndOrbit_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::newRow("spring") << QStringLiteral("elastic-band");
+    QTest::newRow("orbit") << QStringLiteral("two-bodies-in-orbit");
+}
+
+void GuiAccuracyTest::twinStaysCloseOnSpringAndOrbit()
+{
+    QFETCH(QString, lesson);
+    MainWindow window;
+    QVERIFY(window.openLesson(lesson));
+    SimulationController* c = window.controller();
+    c->setGhost(SimulationController::GhostMode::Twin);
+    runFor(c, 10.0);
+    const double end = c->ghostSeparation();
+    qInfo("%s: twin separation %.3g px at 10 s", qPrintable(lesson), end);
+    QVERIFY(end < 1e-6);
+}
+
+void GuiAccuracyTest::tradeOffRunsToTheEnd()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(springScene(sim::IntegratorKind::SemiImplicitEuler, 1.0 / 64, false))));
+    window.controller()->pause();
+    AccuracyDock* dock = window.accuracyDock();
+    dock->setStudyDuration(0.5);
+    dock->tradeOffAction()->trigger();
+    QVERIFY(dock->isMeasuring());
+    QVERIFY(!dock->tradeOffAction()->isEnabled());
+    dock->studyFuture().waitForFinished();
+    QTRY_VERIFY(dock->tradeOffAction()->isEnabled());
+    const sim::WorkPrecisionResult& r = dock->lastStudy();
+    QVERIFY(!r.error && !r.cancelled);
+    QCOMPARE(r.runs.size(), AccuracyDock::tradeOffIntegrators().size() * 4);
+    const QList<QAbstractSeries*> series = dock->tradeOffChart()->series();
+    QCOMPARE(series.size(), qsizetype(AccuracyDock::tradeOffIntegrators().size()));
+    for (QAbstractSeries* s : series)
+        QCOMPARE(static_cast<QXYSeries*>(s)->count(), 4);
+    QCOMPARE(series[3]->name(), QStringLiteral("rk4"));
+    // rk4's smallest step beats Euler's smallest step by orders of magnitude.
+    QVERIFY(static_cast<QXYSeries*>(series[3])->at(3).y() < 1e-3 * static_cast<QXYSeries*>(series[0])->at(3).y());
+    QCOMPARE(dock->findChild<QProgressBar*>(QStringLiteral("studyProgress"))->value(), 1 + 5 * 4);
+}
+
+void GuiAccuracyTest::tradeOffCanBeCancelled()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(springScene(sim::IntegratorKind::SemiImplicitEuler, 1.0 / 64, false))));
+    window.controller()->pause();
+    AccuracyDock* dock = window.accuracyDock();
+    dock->setStudyDuration(2000.0); // minutes of work: only a cancel ends it soon
+    dock->tradeOffAction()->trigger();
+    auto* cancel = dock->findChild<QPushButton*>(QStringLiteral("cancelStudy"));
+    QVERIFY(cancel->isEnabled());
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QVERIFY(dock->studyFuture().isStarted());
+    dock->studyFuture().waitForFinished();
+    QTRY_VERIFY(dock->tradeOffAction()->isEnabled());
+    QVERIFY(dock->lastStudy().cancelled);
+    QVERIFY(dock->lastStudy().runs.size() < AccuracyDock::tradeOffIntegrators().size() * 4);
+    QVERIFY(!cancel->isEnabled());
+    QVERIFY(dock->findChild<QLabel*>(QStringLiteral("studyStatus"))->text().contains(QStringLiteral("Cancelled")));
+}
+
+void GuiAccuracyTest::convergenceReportsTheOrder_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<double>("dt");
+    QTest::addColumn<double>("order");
+    QTest::newRow("semi-implicit-euler") << int(sim::IntegratorKind::SemiImplicitEuler) << 1.0 / 512 << 1.0;
+    QTest::newRow("verlet") << int(sim::IntegratorKind::Verlet) << 1.0 / 64 << 2.0;
+    QTest::newRow("rk4") << int(sim::IntegratorKind::Rk4) << 1.0 / 16 << 4.0;
+}
+
+void GuiAccuracyTest::convergenceReportsTheOrder()
+{
+    QFETCH(int, kind);
+    QFETCH(double, dt);
+    QFETCH(double, order);
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(springScene(static_cast<sim::IntegratorKind>(kind), dt, false))));
+    window.controller()->pause();
+    AccuracyDock* dock = window.accuracyDock();
+    dock->setStudyDuration(2.0);
+    auto* button = dock->findChild<QToolButton*>(QStringLiteral("convergenceButton"));
+    QVERIFY(button);
+    QTest::mouseClick(button, Qt::LeftButton);
+    QVERIFY(dock->isMeasuring());
+    dock->studyFuture().waitForFinished();
+    QTRY_VERIFY(dock->convergenceAction()->isEnabled());
+    QVERIFY2(std::abs(dock->lastOrder() - order) < 0.15, qPrintable(QString::number(dock->lastOrder())));
+    const QString status = dock->findChild<QLabel*>(QStringLiteral("studyStatus"))->text();
+    QVERIFY2(status.contains(QStringLiteral("fitted order %1").arg(dock->lastOrder(), 0, 'f', 2)), qPrintable(status));
+}
+
+QTEST_MAIN(GuiAccuracyTest)
+#include "test_gui_accuracy.moc"
