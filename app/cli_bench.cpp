@@ -65,6 +65,7 @@ struct Options {
     bool peers = true;
     bool bandwidth = true;
     bool profile = false;
+    double speculative = -1.0; // < 0: the solver's default
 };
 
 std::optional<std::vector<int>> parseSizes(const std::string& text)
@@ -278,6 +279,11 @@ void runProfile(const Options& o, std::ostream& out)
         WorldSettings ws = w.settings();
         ws.collisions.detection = d;
         w.setSettings(ws);
+        if (o.speculative >= 0.0) {
+            ContactSolverSettings cs = w.collisionSystem().solverSettings();
+            cs.speculative = o.speculative;
+            w.collisionSystem().setSolverSettings(cs);
+        }
         w.step(); // first step with this detector: sorts from scratch
         w.collisionSystem().resetProfile();
         w.collisionSystem().setProfiling(true);
@@ -308,6 +314,12 @@ void runProfile(const Options& o, std::ostream& out)
     out << "\n" << std::left << std::setw(28) << "velocity passes per step" << std::right << std::setprecision(1);
     for (const CollisionProfile& p : profiles)
         out << std::setw(10) << static_cast<double>(p.passes) / steps;
+    out << "\n" << std::left << std::setw(28) << "solver rows per step" << std::right << std::setprecision(0);
+    for (const CollisionProfile& p : profiles)
+        out << std::setw(10) << static_cast<double>(p.rows) / steps;
+    out << "\n" << std::left << std::setw(28) << "row updates per step" << std::right;
+    for (const CollisionProfile& p : profiles)
+        out << std::setw(10) << static_cast<double>(p.solves) / steps;
     out << "\n" << std::flush;
 }
 
@@ -478,6 +490,16 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
             o.bruteLimit = (*n)[0];
         } else if (a == "--profile") {
             o.profile = true;
+        } else if (a == "--speculative") {
+            const auto v = value("--speculative");
+            if (!v)
+                return 2;
+            char* end = nullptr;
+            o.speculative = std::strtod(v->c_str(), &end);
+            if (v->empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 1.0)) {
+                err << "forcelab-cli bench: --speculative: expected a number in [0, 1], got '" << *v << "'\n";
+                return 2;
+            }
         } else if (a == "--no-peers") {
             o.peers = false;
         } else if (a == "--peers-only") {
@@ -486,7 +508,7 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         } else {
             err << "forcelab-cli bench: unknown option '" << a
                 << "' (options: --quick, --csv FILE, --runs K, --sizes N,N,..., --peer-sizes N,N,..., --brute-limit N, --no-peers, "
-                   "--peers-only, --profile)\n";
+                   "--peers-only, --profile, --speculative S)\n";
             return 2;
         }
     }

@@ -238,22 +238,27 @@ void TestCollisionWorld::columnStandsUnderGravity()
     const double top = b.position.row(1).minCoeff() - r, bottom = b.position.row(1).maxCoeff() + r;
     const double columnHeight = bottom - top;
     qInfo("column height %.4f px (20 diameters = 400), deepest overlap %.3g r", columnHeight, worstOverlap);
-    // Known gaps (see docs/performance.md, "Piles"): contacts are only pairs
-    // that already overlap, so a column starting at touching distance falls
-    // onto itself one ball per sub-step and the first impacts overlap deeply;
-    // with exact walls the floor ball is often not on the floor when solved.
+    // Known gaps (see docs/performance.md, "Piles"). Speculative contacts hold
+    // a column that stands at touching distance, and with 4 sub-steps no pair
+    // overlaps by more than 1% of a radius. With 1 sub-step the first impacts
+    // of the 1 px drops are still too hard for one pass of contacts per
+    // sub-step, and with exact walls the floor ball bounces on the floor every
+    // sub-step (the exact model reverses even the speed gravity gave it in
+    // that sub-step), which the column above cannot follow.
     if (wallModel == int(WallModel::Exact))
-        QEXPECT_FAIL("", "exact walls: the floor contact is missed, the column sinks (~314 px)", Continue);
+        QEXPECT_FAIL("", "exact walls, 1 sub-step: the floor ball bounces every sub-step, the column sinks (~290 px)",
+                     Continue);
     QVERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, qPrintable(QString::number(columnHeight)));
-    QEXPECT_FAIL("", "no speculative contacts yet: deepest overlap 3% r (4 sub-steps) to 100% r (1 sub-step)", Continue);
+    if (substeps == 1)
+        QEXPECT_FAIL("", "1 sub-step: the first hard impacts overlap by 25% r (clamp) to 165% r (exact)", Continue);
     QVERIFY2(worstOverlap <= 0.01, qPrintable(QString::number(worstOverlap)));
     // Still one column: no ball moved sideways, and they are still in order.
     QVERIFY((b.position.row(0).array() == 100.0).all());
     bool ordered = true;
     for (int i = 0; i + 1 < 20; ++i)
         ordered = ordered && b.position(1, i + 1) < b.position(1, i);
-    if (substeps == 1)
-        QEXPECT_FAIL("", "1 sub-step: the first hard impacts push some balls through each other", Continue);
+    if (substeps == 1 && wallModel == int(WallModel::Clamp))
+        QEXPECT_FAIL("", "clamp walls, 1 sub-step: the first hard impacts push two balls through each other", Continue);
     QVERIFY(ordered);
     QVERIFY(allInside(w));
 }
@@ -317,7 +322,8 @@ void TestCollisionWorld::pileSettlesUnderGravity()
           ke / pe0, potential(w) / pe0, perBall, overlap);
     QVERIFY2(ke <= 1e-3 * pe0, qPrintable(QString::number(ke / pe0)));
     QVERIFY2(perBall <= 4.0 && perBall >= 1.5, qPrintable(QString::number(perBall)));
-    QEXPECT_FAIL("", "no speculative contacts yet: a few pairs that met hard stay deeply overlapped (~1.9 r)", Continue);
+    QEXPECT_FAIL("", "a few pairs that met hard (faster than a speculative contact can see) stay deeply overlapped (~1.2 r)",
+                 Continue);
     QVERIFY2(overlap <= 0.02, qPrintable(QString::number(overlap)));
     QVERIFY(allInside(w));
 }

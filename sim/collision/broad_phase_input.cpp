@@ -21,23 +21,61 @@ void BroadPhaseInput::copyBalls(const BallState& balls)
     }
 }
 
-void BroadPhaseInput::loadStatic(const BallState& balls)
+void BroadPhaseInput::loadStatic(const BallState& balls, const double* grow)
 {
-    copyBalls(balls);
+    // One pass: copy, box, finiteness, the active list and the extremes; a
+    // second one pads the boxes (the pad depends on the largest coordinate).
+    const int n = balls.size();
+    const auto count = static_cast<std::size_t>(n);
+    x.resize(count);
+    y.resize(count);
+    r.resize(count);
+    loX.resize(count);
+    hiX.resize(count);
+    loY.resize(count);
+    hiY.resize(count);
     x0.clear();
     y0.clear();
-    const std::size_t n = x.size();
-    loX.resize(n);
-    hiX.resize(n);
-    loY.resize(n);
-    hiY.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        loX[i] = x[i] - r[i];
-        hiX[i] = x[i] + r[i];
-        loY[i] = y[i] - r[i];
-        hiY[i] = y[i] + r[i];
+    active.resize(count);
+    const double* p = balls.position.data(); // column-major 2×N: x0 y0 x1 y1 ...
+    const double* rad = balls.radius.data();
+    double maxAbs = 0.0, maxR = 0.0, maxW = 0.0, maxH = 0.0, sumSize = 0.0;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double px = p[2 * i], py = p[2 * i + 1], ri = grow ? rad[i] + grow[i] : rad[i];
+        const double lx = px - ri, hx = px + ri, ly = py - ri, hy = py + ri;
+        // Finite box and r >= 0 (a finite box means finite x, y and r);
+        // v − v is 0 for a finite v and NaN otherwise.
+        const bool ok = ((lx - lx) + (hx - hx) + (ly - ly) + (hy - hy)) == 0.0 && ri >= 0.0;
+        x[i] = ok ? px : std::numeric_limits<double>::quiet_NaN();
+        y[i] = py;
+        r[i] = ri;
+        loX[i] = lx;
+        hiX[i] = hx;
+        loY[i] = ly;
+        hiY[i] = hy;
+        active[kept] = static_cast<int>(i);
+        kept += ok ? 1 : 0;
+        if (ok) {
+            maxAbs = std::max(maxAbs, std::max(std::max(std::abs(lx), std::abs(hx)), std::max(std::abs(ly), std::abs(hy))));
+            maxR = std::max(maxR, ri);
+            maxW = std::max(maxW, hx - lx);
+            maxH = std::max(maxH, hy - ly);
+            sumSize += std::max(hx - lx, hy - ly);
+        }
     }
-    finishBounds();
+    active.resize(kept);
+    pad = 1e-12 * (maxAbs + 2.0 * maxR) + std::numeric_limits<double>::min();
+    for (std::size_t i = 0; i < count; ++i) {
+        loX[i] -= pad;
+        hiX[i] += pad;
+        loY[i] -= pad;
+        hiY[i] += pad;
+    }
+    // Sizes of the padded boxes, up to rounding (they only tune the cells and rows).
+    maxWidth = maxW + 2.0 * pad;
+    maxHeight = maxH + 2.0 * pad;
+    meanSize = kept == 0 ? 0.0 : sumSize / static_cast<double>(kept) + 2.0 * pad;
 }
 
 void BroadPhaseInput::loadSwept(const BallState& balls, const Matrix2X& start)

@@ -28,8 +28,10 @@ struct BroadPhaseInput {
 
     int size() const { return static_cast<int>(x.size()); }
 
-    /// Boxes around the circles at their current positions.
-    void loadStatic(const BallState& balls);
+    /// Boxes around the circles at their current positions. With `grow` (one
+    /// value >= 0 per ball), ball i takes part with radius r_i + grow[i]: the
+    /// pairs found are then every pair within grow[a] + grow[b] of touching.
+    void loadStatic(const BallState& balls, const double* grow = nullptr);
     /// Boxes around the path of each circle from `start` to its current position.
     void loadSwept(const BallState& balls, const Matrix2X& start);
 

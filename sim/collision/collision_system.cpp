@@ -25,6 +25,31 @@ struct WallCheck {
     }
 };
 
+// Calls f on every row, in four interleaved runs: rows k, k + q, k + 2q,
+// k + 3q, then k + 1, ... (q = a quarter). Rows next to each other in (a, b)
+// order share a ball, so each waits for the one before it; rows a quarter
+// apart rarely do, and the processor works on four of them at once. The
+// order is fixed by the row count alone, so a run stays repeatable.
+template <class F>
+void forEachInterleaved(std::size_t m, F&& f)
+{
+    const std::size_t q = (m + 3) / 4;
+    std::size_t k = 0;
+    for (; k + 3 * q < m; ++k) {
+        f(k);
+        f(k + q);
+        f(k + 2 * q);
+        f(k + 3 * q);
+    }
+    for (; k < q; ++k) {
+        f(k);
+        if (k + q < m)
+            f(k + q);
+        if (k + 2 * q < m)
+            f(k + 2 * q);
+    }
+}
+
 // The pass over all contacts for one response model (a template, so the
 // model's few lines are inlined into the loop). Same maths as the general
 // path in resolve(): normal from the detection-time positions, response,
@@ -159,12 +184,46 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         return stats;
     }
     const bool continuous = settings.continuous && startPositions.cols() == n;
-    if (continuous)
-        m_input.loadSwept(balls, startPositions);
-    else
-        m_input.loadStatic(balls);
-    clock.lap(m_profile.load);
-    findContacts(settings.detection, continuous, m_contacts, stats, clock);
+    const double g = gravity.norm();
+    const double restingSpeed = m_solver.restingFactor * g * dt;
+    const bool resting = settings.response == Response::Impulse2D && !continuous && restingSpeed > 0.0 &&
+                         std::isfinite(restingSpeed);
+    if (resting && m_solver.speculative > 0.0) {
+        // Speculative contacts: every ball grown by the distance one sub-step
+        // can bring it closer, |v|·h + |g|·h², at most `speculative` of its
+        // radius. The grown pairs include every overlapping pair (a sum of
+        // larger numbers is never smaller in floating point), and all four
+        // detectors find the same grown pairs in the same order.
+        const double* v = balls.velocity.data();
+        const double* radius = balls.radius.data();
+        const double fall = g * dt * dt;
+        const double cap = m_solver.speculative;
+        m_grow.resize(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            const double reach = std::sqrt(v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1]) * dt + fall;
+            const double most = cap * radius[i];
+            m_grow[static_cast<std::size_t>(i)] = reach < most ? reach : most; // NaN speed: the cap
+        }
+        m_input.loadStatic(balls, m_grow.data());
+        clock.lap(m_profile.load);
+        findContacts(settings.detection, false, m_speculative, stats, clock);
+        // Back to the pairs that overlap now: what contacts() and the counters report.
+        const double* x = balls.position.data();
+        m_contacts.clear();
+        for (const Contact& c : m_speculative) {
+            const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
+            if (circlesOverlap(x[2 * a], x[2 * a + 1], radius[a], x[2 * b], x[2 * b + 1], radius[b]))
+                m_contacts.push_back(c);
+        }
+        stats.contacts = static_cast<std::int64_t>(m_contacts.size());
+    } else {
+        if (continuous)
+            m_input.loadSwept(balls, startPositions);
+        else
+            m_input.loadStatic(balls);
+        clock.lap(m_profile.load);
+        findContacts(settings.detection, continuous, m_contacts, stats, clock);
+    }
 
     for (const Contact& c : m_contacts) {
         balls.colliding[static_cast<std::size_t>(c.a)] = 1;
@@ -175,10 +234,9 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_warmCount = -1;
         return stats;
     }
-    const double g = gravity.norm();
-    const double restingSpeed = m_solver.restingFactor * g * dt;
-    if (settings.response == Response::Impulse2D && !continuous && restingSpeed > 0.0 && std::isfinite(restingSpeed)) {
-        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g, clock);
+    if (resting) {
+        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g,
+                     m_solver.speculative > 0.0 ? m_speculative : m_contacts, clock);
         if (m_profiling)
             m_profile.passes += m_lastPasses;
         return stats;
@@ -194,7 +252,8 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
 // accumulated, warm-started impulses over the ball–ball and ball–wall
 // contacts, then positional correction with slop.
 void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls,
-                                   double h, double restingSpeed, double gravity, StageClock& clock)
+                                   double h, double restingSpeed, double gravity,
+                                   const std::vector<Contact>& pairs, StageClock& clock)
 {
     double* x = balls.position.data();
     double* v = balls.velocity.data();
@@ -204,40 +263,62 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     const int n = balls.size();
     if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
         m_pairRows.clear();
+        m_impulse.clear();
         m_wallRows.clear();
         m_warmCount = n;
     }
 
     // Ball–ball rows, in contact order ((a, b), like last sub-step's rows, so
-    // the impulses of pairs still touching are found by a merge). The line of
-    // impact comes from the positions at detection.
+    // the impulses of pairs still in contact are found by a merge). The line
+    // of impact comes from the positions at detection. A pair may close the
+    // gap it had at the start of the sub-step, gap_end − v_n·h, and no more:
+    // its normal speed may not drop below −allowed (0 for pairs that overlap).
     m_spareRows.clear();
-    m_spareRows.reserve(m_contacts.size());
+    m_spareImpulse.clear();
+    m_vn0.clear();
+    m_spareRows.reserve(pairs.size());
+    m_spareImpulse.reserve(pairs.size());
+    m_vn0.reserve(pairs.size());
     std::size_t old = 0;
-    for (const Contact& c : m_contacts) {
+    const double inverseH = 1.0 / h;
+    for (const Contact& c : pairs) {
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
         const double s = radius[a] + radius[b];
-        const Vec2 d(x[2 * b] - x[2 * a], x[2 * b + 1] - x[2 * a + 1]);
-        const double len = d.norm();
-        const Vec2 nrm = (len > 1e-12 * s && std::isfinite(len)) ? Vec2(d / len) : lineOfImpact(d, s, c.a, c.b);
+        const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+        const double len = std::sqrt(dx * dx + dy * dy);
+        Vec2 nrm;
+        if (len > 1e-12 * s && std::isfinite(len))
+            nrm = Vec2(dx / len, dy / len);
+        else
+            nrm = lineOfImpact(Vec2(dx, dy), s, c.a, c.b);
         const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
+        const double gapStart = (len - s) - vn0 * h;
+        const double allowed = gapStart > 0.0 ? gapStart * inverseH : 0.0;
         while (old < m_pairRows.size() &&
                (m_pairRows[old].a < c.a || (m_pairRows[old].a == c.a && m_pairRows[old].b < c.b)))
             ++old;
         const double warm = (old < m_pairRows.size() && m_pairRows[old].a == c.a && m_pairRows[old].b == c.b)
-                                ? m_pairRows[old].impulse
+                                ? m_impulse[old]
                                 : 0.0;
-        m_spareRows.push_back({c.a, c.b, nrm.x(), nrm.y(), wa, wb, 1.0 / (wa + wb), vn0, warm});
+        m_spareRows.push_back({c.a, c.b, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)),
+                               static_cast<float>(allowed)});
+        m_spareImpulse.push_back(warm);
+        m_vn0.push_back(vn0);
     }
     m_pairRows.swap(m_spareRows);
+    m_impulse.swap(m_spareImpulse);
+    const std::size_t rowCount = m_pairRows.size();
+    double* impulse = m_impulse.data();
     clock.lap(m_profile.build);
 
     // Ball–wall rows, in ball order: a ball on an enabled wall, or nearer to it
     // than the slop plus the distance gravity moves a ball from rest in one
-    // sub-step (so it is caught before it hits, not after).
+    // sub-step (so it is caught before it hits, not after), plus what it moved
+    // away from the wall in this sub-step (a ball that just bounced off a wall
+    // can be pushed back into it by the balls above).
     m_spareWalls.clear();
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
@@ -252,19 +333,24 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             const double w = inverseMass[i];
             m_spareWalls.push_back({key, i, k, side, std::max(gap, 0.0) / h, w, side * v[2 * i + k], warm});
         };
+        // Nothing near a wall gets a row: a quick test on the largest margin first.
         for (int i = 0; i < n; ++i) {
             const double r = radius[i], w = inverseMass[i];
+            const double px = x[2 * i], py = x[2 * i + 1], vx = v[2 * i], vy = v[2 * i + 1];
+            const double far = cs.slop * r + reach + (std::abs(vx) + std::abs(vy)) * h;
+            if (px - r >= far && size[0] - r - px >= far && py - r >= far && size[1] - r - py >= far)
+                continue;
             if (!(w > 0.0) || !std::isfinite(w))
                 continue;
-            const double margin = cs.slop * r + reach;
             for (int k = 0; k < 2; ++k) {
                 if (!(2.0 * r <= size[k]))
                     continue; // wider than the box: the wall stage keeps it in the middle
-                const double p = x[2 * i + k];
+                const double p = x[2 * i + k], vk = v[2 * i + k];
+                const double margin = cs.slop * r + reach;
                 const double gapLow = p - r, gapHigh = size[k] - r - p;
-                if (on[k][0] && gapLow < margin)
+                if (on[k][0] && gapLow < margin + std::max(vk, 0.0) * h)
                     add(i, k, -1.0, gapLow);
-                if (on[k][1] && gapHigh < margin)
+                if (on[k][1] && gapHigh < margin + std::max(-vk, 0.0) * h)
                     add(i, k, 1.0, gapHigh);
             }
         }
@@ -276,10 +362,11 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
 
     auto applyPair = [&](const PairRow& row, double j) {
         const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-        v[2 * a] -= row.wa * j * row.nx;
-        v[2 * a + 1] -= row.wa * j * row.ny;
-        v[2 * b] += row.wb * j * row.nx;
-        v[2 * b + 1] += row.wb * j * row.ny;
+        const double ja = inverseMass[a] * j, jb = inverseMass[b] * j;
+        v[2 * a] -= ja * row.nx;
+        v[2 * a + 1] -= ja * row.ny;
+        v[2 * b] += jb * row.nx;
+        v[2 * b + 1] += jb * row.ny;
     };
     auto normalSpeed = [&](const PairRow& row) {
         const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
@@ -290,51 +377,82 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     };
 
     // Warm start: last sub-step's impulse of every contact that is still there.
-    for (const PairRow& row : m_pairRows)
-        if (row.impulse > 0.0)
-            applyPair(row, row.impulse);
+    for (std::size_t k = 0; k < rowCount; ++k)
+        if (impulse[k] > 0.0)
+            applyPair(m_pairRows[k], impulse[k]);
     for (const WallRow& row : m_wallRows)
         if (row.impulse > 0.0)
             wallSpeed(row) -= row.side * row.w * row.impulse;
 
     // Relax passes: each contact's total impulse (never negative: balls push,
-    // they do not pull) is adjusted until it no longer approaches.
+    // they do not pull) is adjusted until it no longer approaches faster than
+    // it may. After the first pass a contact is solved again only if one of
+    // its balls changed speed by more than the tolerance since it was last
+    // solved (pass stamps per ball); the others would get no impulse worth
+    // having. The passes stop when no ball changed by more than that.
     const double tolerance = cs.relaxTolerance * restingSpeed;
     const int passes = std::max(1, cs.velocityPasses);
+    m_changed.assign(static_cast<std::size_t>(n), -1);
+    int* changed = m_changed.data();
     int made = 0;
+    std::int64_t solves = 0;
     for (int pass = 0; pass < passes; ++pass) {
-        double worst = 0.0; // largest velocity change of this pass
-        for (PairRow& row : m_pairRows) {
-            const double total = std::max(row.impulse - normalSpeed(row) * row.mass, 0.0);
-            const double j = total - row.impulse;
-            row.impulse = total;
+        bool moved = false;
+        const int since = pass - 1;
+        forEachInterleaved(rowCount, [&](std::size_t k) {
+            const PairRow& row = m_pairRows[k];
+            if (pass > 0 && changed[row.a] < since && changed[row.b] < since)
+                return;
+            ++solves;
+            const double total = std::max(impulse[k] - (normalSpeed(row) + row.allowed) * row.mass, 0.0);
+            const double j = total - impulse[k];
+            impulse[k] = total;
             applyPair(row, j);
-            worst = std::max(worst, std::abs(j) * (row.wa + row.wb));
-        }
+            const double dj = std::abs(j);
+            if (dj * inverseMass[row.a] > tolerance) {
+                changed[row.a] = pass;
+                moved = true;
+            }
+            if (dj * inverseMass[row.b] > tolerance) {
+                changed[row.b] = pass;
+                moved = true;
+            }
+        });
         for (WallRow& row : m_wallRows) {
+            if (pass > 0 && changed[row.ball] < since)
+                continue;
             double& vk = wallSpeed(row);
             const double into = row.side * vk;
             const double total = std::max(row.impulse + (into - row.allowed) / row.w, 0.0);
             const double j = total - row.impulse;
             row.impulse = total;
             vk -= row.side * row.w * j;
-            worst = std::max(worst, std::abs(j) * row.w);
+            if (std::abs(j) * row.w > tolerance) {
+                changed[row.ball] = pass;
+                moved = true;
+            }
         }
         ++made;
-        if (worst <= tolerance)
+        if (!moved)
             break;
     }
     m_lastPasses = made;
+    if (m_profiling) {
+        m_profile.rows += static_cast<std::int64_t>(m_pairRows.size());
+        m_profile.solves += solves;
+    }
     clock.lap(m_profile.velocity);
 
     // Restitution: a pair that hit faster than the resting speed separates at
     // e times the speed it hit with; slower ones stay at rest (threshold).
-    for (PairRow& row : m_pairRows) {
-        if (!(-row.vn0 > restingSpeed) || !(row.impulse > 0.0))
+    for (std::size_t k = 0; k < rowCount; ++k) {
+        const double vn0 = m_vn0[k];
+        if (!(-vn0 > restingSpeed) || !(impulse[k] > 0.0))
             continue;
-        const double total = std::max(row.impulse + (-e * row.vn0 - normalSpeed(row)) * row.mass, 0.0);
-        applyPair(row, total - row.impulse);
-        row.impulse = total;
+        const PairRow& row = m_pairRows[k];
+        const double total = std::max(impulse[k] + (-e * vn0 - normalSpeed(row)) * row.mass, 0.0);
+        applyPair(row, total - impulse[k]);
+        impulse[k] = total;
     }
     const double ew = walls.restitution;
     for (WallRow& row : m_wallRows) {
@@ -353,7 +471,6 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         vk -= row.side * row.w * (total - row.impulse);
         row.impulse = total;
     }
-
     clock.lap(m_profile.restitution);
 
     // The integrator moved the balls with their velocities before the
@@ -371,35 +488,42 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         x[2 * i] = q.x();
         x[2 * i + 1] = q.y();
     }
-
     clock.lap(m_profile.position);
 
-    // Positional correction with slop, positions only.
+    // Positional correction with slop, positions only. Most rows are resting
+    // within the slop or speculative (not touching): a squared-distance test
+    // skips them without a square root.
     const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
     for (int pass = 0; pass < std::max(1, cs.positionPasses); ++pass) {
-        for (const PairRow& row : m_pairRows) {
+        forEachInterleaved(rowCount, [&](std::size_t k) {
+            const PairRow& row = m_pairRows[k];
             const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
             const double ra = radius[a], rb = radius[b];
-            Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
-            const double depth = ra + rb - (pb - pa).norm();
             const double allowed = cs.slop * std::min(ra, rb);
+            const double reachAllowed = ra + rb - allowed; // centres closer than this get a push
+            const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+            if (!(dx * dx + dy * dy < reachAllowed * reachAllowed) || !(reachAllowed > 0.0))
+                return;
+            Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
+            const double depth = ra + rb - std::sqrt(dx * dx + dy * dy);
             if (!(depth > allowed))
-                continue;
+                return;
             const double push = cs.correction * (depth - allowed);
             const Vec2 nrm(row.nx, row.ny);
-            const double moveA = push * (row.wa * row.mass);
+            const double wa = inverseMass[a], wb = inverseMass[b];
+            const double moveA = push * (wa / (wa + wb));
             const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
             if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
                 pa = qa;
                 pb = qb;
             } else {
-                pushApart(pa, pb, ra, rb, nrm, row.wa, row.wb, push, box, walls); // stops at the walls
+                pushApart(pa, pb, ra, rb, nrm, wa, wb, push, box, walls); // stops at the walls
             }
             x[2 * a] = pa.x();
             x[2 * a + 1] = pa.y();
             x[2 * b] = pb.x();
             x[2 * b + 1] = pb.y();
-        }
+        });
     }
     clock.lap(m_profile.correction);
 }

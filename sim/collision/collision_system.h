@@ -79,15 +79,19 @@ private:
     void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
                  const WallSettings& walls, double dt);
     void solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls, double h,
-                      double restingSpeed, double gravity, StageClock& clock);
+                      double restingSpeed, double gravity, const std::vector<Contact>& pairs, StageClock& clock);
 
     // One ball–ball contact of the resting solver: the pair, the line of
-    // impact at detection, inverse masses, the effective mass 1/(wa + wb),
-    // the normal speed before the solve and the total impulse so far (kept for
-    // the next sub-step's warm start).
+    // impact at detection, the effective mass 1/(wa + wb) and the approach
+    // speed it may keep (closes its gap in one sub-step; 0 when it overlaps).
+    // 32 bytes, read-only in the passes: the passes stream these rows many
+    // times per sub-step, so their size sets the memory traffic. The total
+    // impulse so far (kept for the next sub-step's warm start) and the normal
+    // speed before the solve are arrays beside them.
     struct PairRow {
         int a, b;
-        double nx, ny, wa, wb, mass, vn0, impulse;
+        double nx, ny;
+        float mass, allowed;
     };
     // One ball on a wall: key 4·ball + 2·axis + (far side), axis 0 (x) or 1
     // (y), side +1 (the wall at the box's far edge) or −1 (at 0), the speed
@@ -98,8 +102,12 @@ private:
         double side, allowed, w, into0, impulse;
     };
     std::vector<PairRow> m_pairRows, m_spareRows;
+    std::vector<double> m_impulse, m_spareImpulse, m_vn0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     Matrix2X m_velocityBefore;
+    std::vector<int> m_changed;          // per ball: last velocity pass that changed it (−1: none)
+    std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts
+    std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)
     int m_warmCount = -1;
     ContactSolverSettings m_solver;
     int m_lastPasses = 0;

@@ -29,7 +29,15 @@
 //    infinite mass: the passes stop it from moving into the wall faster than
 //    it can close the gap in one sub-step. This is how the floor holds the
 //    pile up; the wall stage itself is unchanged.
-// 4. Positional correction with slop. Overlap up to slop · (smaller radius)
+// 4. Speculative contacts. A pair that does not touch yet but is closer than
+//    one sub-step of motion can close (each ball's radius grown by
+//    |v|·h + |g|·h², at most `speculative` of its radius) is a contact too,
+//    one that may close its gap but no more: its normal speed may not drop
+//    below −gap/h, where gap is the gap at the start of the sub-step. A ball
+//    landing on a pile then stops on it instead of sinking into it, and a
+//    column standing at touching distance holds. contacts() and the counters
+//    still report only pairs that overlap.
+// 5. Positional correction with slop. Overlap up to slop · (smaller radius)
 //    is allowed, and only `correction` of the overlap beyond it is removed per
 //    sub-step. A resting pair then sits still at a tiny overlap instead of
 //    being pushed apart and falling back every sub-step (jitter). Positions
@@ -44,6 +52,7 @@ struct ContactSolverSettings {
     double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
     double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
     int positionPasses = 2;       ///< 1, passes of positional correction per sub-step
+    double speculative = 0.1;     ///< 1, most a ball's radius grows by to find speculative contacts (0: none)
 };
 
 } // namespace forcelab::sim

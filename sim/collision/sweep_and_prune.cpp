@@ -52,17 +52,29 @@ void SweepAndPrune::refreshKeys(const BroadPhaseInput& in)
         for (std::size_t k = 0; k < count; ++k)
             m_keys[k].index = in.active[k];
     }
+    std::int64_t moved = sameSet ? 0 : static_cast<std::int64_t>(count);
     for (Key& k : m_keys) {
         const auto i = static_cast<std::size_t>(k.index);
         k.lo = in.loX[i];
-        k.row = rowOf(in.loY[i], inverse);
+        const std::int32_t row = rowOf(in.loY[i], inverse);
+        moved += row != k.row ? 1 : 0;
+        k.row = row;
     }
+    m_rowChanges = moved;
 }
 
 void SweepAndPrune::sortKeys()
 {
-    // Insertion sort on last step's order, with a budget of moves.
     const std::size_t n = m_keys.size();
+    // Many balls changed row (falling balls do, a row is one ball tall): an
+    // insertion sort would run out of its budget anyway, start over at once.
+    if (m_rowChanges * 16 > static_cast<std::int64_t>(n)) {
+        m_lastShifts = 0;
+        m_lastFullSort = true;
+        sortByRows();
+        return;
+    }
+    // Insertion sort on last step's order, with a budget of moves.
     const std::int64_t budget = 4 * static_cast<std::int64_t>(n) + 64;
     std::int64_t shifts = 0;
     m_lastFullSort = false;
@@ -87,50 +99,55 @@ void SweepAndPrune::sortKeys()
 
 void SweepAndPrune::sortByRows()
 {
+    // A counting sort by cell (row, column), columns as wide as a row is tall,
+    // then an insertion sort inside each cell by left edge. A cell holds a few
+    // balls at most, and the column grows with the left edge, so the result is
+    // the (row, left edge) order in O(N).
     const std::size_t n = m_keys.size();
-    std::int32_t lo = m_keys[0].row, hi = m_keys[0].row;
+    std::int32_t rowLo = m_keys[0].row, rowHi = m_keys[0].row;
+    double lo = m_keys[0].lo, hi = m_keys[0].lo;
     for (const Key& k : m_keys) {
-        lo = std::min(lo, k.row);
-        hi = std::max(hi, k.row);
+        rowLo = std::min(rowLo, k.row);
+        rowHi = std::max(rowHi, k.row);
+        lo = std::min(lo, k.lo);
+        hi = std::max(hi, k.lo);
     }
-    const std::int64_t rows = static_cast<std::int64_t>(hi) - lo + 1;
-    if (rows > 2 * static_cast<std::int64_t>(n) + 1024) { // scattered far apart: plain sort
+    const double rows = static_cast<double>(rowHi) - rowLo + 1.0;
+    const double width = m_rowHeight > 0.0 ? m_rowHeight : 1.0;
+    const double columns = std::floor((hi - lo) / width) + 1.0;
+    if (!(rows * columns <= 4.0 * static_cast<double>(n) + 1024.0)) { // scattered far apart: plain sort
         std::sort(m_keys.begin(), m_keys.end(), before);
         return;
     }
-    // Stable counting sort by row keeps last step's order inside each row.
-    m_rowCount.assign(static_cast<std::size_t>(rows) + 1, 0);
-    for (const Key& k : m_keys)
-        ++m_rowCount[static_cast<std::size_t>(k.row - lo) + 1];
-    for (std::size_t r = 1; r < m_rowCount.size(); ++r)
-        m_rowCount[r] += m_rowCount[r - 1];
+    const auto cols = static_cast<std::int64_t>(columns);
+    const double inverse = 1.0 / width;
+    m_cell.resize(n);
+    m_rowCount.assign(static_cast<std::size_t>(rows * columns) + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto column = std::min(static_cast<std::int64_t>((m_keys[k].lo - lo) * inverse), cols - 1);
+        const auto cell = static_cast<std::int32_t>((m_keys[k].row - rowLo) * cols + column);
+        m_cell[k] = cell;
+        ++m_rowCount[static_cast<std::size_t>(cell) + 1];
+    }
+    for (std::size_t c = 1; c < m_rowCount.size(); ++c)
+        m_rowCount[c] += m_rowCount[c - 1];
     m_spare.resize(n);
-    for (const Key& k : m_keys)
-        m_spare[static_cast<std::size_t>(m_rowCount[static_cast<std::size_t>(k.row - lo)]++)] = k;
+    for (std::size_t k = 0; k < n; ++k)
+        m_spare[static_cast<std::size_t>(m_rowCount[static_cast<std::size_t>(m_cell[k])]++)] = m_keys[k];
     m_keys.swap(m_spare);
-    // Each row: insertion sort if nearly sorted, otherwise a full sort.
+    // Inside each cell (m_rowCount[c] is now the end of cell c): by left edge.
     std::size_t begin = 0;
-    while (begin < n) {
-        std::size_t end = begin + 1;
-        while (end < n && m_keys[end].row == m_keys[begin].row)
-            ++end;
-        const std::int64_t rowBudget = 8 * static_cast<std::int64_t>(end - begin) + 16;
-        std::int64_t shifts = 0;
-        bool sorted = true;
-        for (std::size_t i = begin + 1; i < end && sorted; ++i) {
+    for (std::size_t c = 0; c + 1 < m_rowCount.size(); ++c) {
+        const auto end = static_cast<std::size_t>(m_rowCount[c]);
+        for (std::size_t i = begin + 1; i < end; ++i) {
             const Key k = m_keys[i];
             std::size_t j = i;
             while (j > begin && k.lo < m_keys[j - 1].lo) {
                 m_keys[j] = m_keys[j - 1];
                 --j;
-                ++shifts;
             }
             m_keys[j] = k;
-            sorted = shifts <= rowBudget;
         }
-        if (!sorted)
-            std::sort(m_keys.begin() + static_cast<std::ptrdiff_t>(begin),
-                      m_keys.begin() + static_cast<std::ptrdiff_t>(end), before);
         begin = end;
     }
 }

@@ -14,7 +14,8 @@
 // The order is kept from step to step. Balls move little in one step, so the
 // previous order is nearly sorted and insertion sort fixes it in about linear
 // time. When too much has changed (first step, a reset, many balls changing
-// row) it falls back to a counting sort by row and a sort inside each row.
+// row) it falls back to a counting sort by cell (row and column) and an
+// insertion sort inside each cell.
 
 #include "broad_phase_input.h"
 #include "collision_profile.h"
@@ -55,6 +56,8 @@ private:
     std::vector<Key> m_keys; // the order kept between steps
     std::vector<Key> m_spare;
     std::vector<int> m_rowCount;
+    std::vector<std::int32_t> m_cell;
+    std::int64_t m_rowChanges = 0; // keys whose row changed in the last refresh
     // The sorted balls, structure of arrays, for the sweep itself.
     std::vector<double> m_lo, m_hi, m_loY, m_hiY;
     std::vector<double> m_x, m_y, m_r, m_x0, m_y0;
