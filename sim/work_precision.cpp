@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 namespace forcelab::sim {
 namespace {
@@ -112,15 +114,33 @@ WorkPrecisionResult measureWorkPrecision(const Scene& scene, const WorkPrecision
     if (progress)
         progress(++done, total);
     const double referenceEnergy = reference.energy().total();
+    // Errors of the energy are relative to the reference's; an energy of
+    // (nearly) 0 is measured against the kinetic energy's scale instead.
+    const double energyScale = std::max(std::abs(referenceEnergy), std::max(reference.energy().kinetic, 1e-300));
 
-    for (IntegratorKind kind : settings.integrators) {
-        for (double dt : settings.dts) {
+    // The runs are independent: with more than one thread each takes the next
+    // run not yet started. They only read the scene and the reference.
+    struct Job {
+        IntegratorKind kind;
+        double dt;
+    };
+    std::vector<Job> jobs;
+    for (IntegratorKind kind : settings.integrators)
+        for (double dt : settings.dts)
+            jobs.push_back({kind, dt});
+    std::vector<PrecisionRun> runs(jobs.size());
+    std::vector<char> finished(jobs.size(), 0);
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stopped{false};
+    std::mutex progressMutex;
+    auto work = [&] {
+        for (std::size_t j = next++; j < jobs.size(); j = next++) {
             World world;
-            PrecisionRun run;
-            const double tolerance = scene.settings.time.tolerance;
-            if (!runOne(scene, kind, dt, tolerance, *wholeSteps(settings.duration, dt), cancel, world, run)) {
-                result.cancelled = true;
-                return result;
+            PrecisionRun& run = runs[j];
+            if (!runOne(scene, jobs[j].kind, jobs[j].dt, scene.settings.time.tolerance,
+                        *wholeSteps(settings.duration, jobs[j].dt), cancel, world, run)) {
+                stopped = true;
+                return;
             }
             if (run.refused.empty()) {
                 if (run.blewUp) {
@@ -128,19 +148,27 @@ WorkPrecisionResult measureWorkPrecision(const Scene& scene, const WorkPrecision
                     run.energyError = kInf;
                 } else {
                     run.positionError = largestSeparation(world, reference);
-                    const double e = world.energy().total();
-                    // Relative to the reference's energy; an energy of (nearly) 0
-                    // is measured against the kinetic energy's scale instead.
-                    const double scale = std::max(std::abs(referenceEnergy),
-                                                  std::max(reference.energy().kinetic, 1e-300));
-                    run.energyError = std::abs(e - referenceEnergy) / scale;
+                    run.energyError = std::abs(world.energy().total() - referenceEnergy) / energyScale;
                 }
             }
-            result.runs.push_back(std::move(run));
-            if (progress)
+            finished[j] = 1;
+            if (progress) {
+                const std::lock_guard lock(progressMutex);
                 progress(++done, total);
+            }
         }
-    }
+    };
+    const int threads = std::clamp(settings.threads, 1, static_cast<int>(std::max<std::size_t>(jobs.size(), 1)));
+    std::vector<std::thread> helpers;
+    for (int t = 1; t < threads; ++t)
+        helpers.emplace_back(work);
+    work();
+    for (std::thread& t : helpers)
+        t.join();
+    for (std::size_t j = 0; j < jobs.size(); ++j)
+        if (finished[j])
+            result.runs.push_back(std::move(runs[j]));
+    result.cancelled = stopped;
     return result;
 }
 

@@ -38,6 +38,7 @@ struct WorkPrecisionSettings {
     double duration = 1.0;                  ///< s of simulated time; a whole number of every dt
     std::vector<IntegratorKind> integrators;
     std::vector<double> dts;                ///< s, every integrator runs at each
+    int threads = 1;                        ///< runs at once after the reference (each run is one thread's work)
     double referenceTolerance = 1e-11;      ///< 1, ias15's tolerance for the reference run (much tighter runs into rounding)
 };
 
@@ -49,7 +50,8 @@ struct WorkPrecisionResult {
 };
 
 /// Called after each finished run with (runs done, runs in all) — the
-/// reference counts as one. May be called from a worker thread.
+/// reference counts as one. May be called from a worker thread (one call at a
+/// time).
 using ProgressCallback = std::function<void(int done, int total)>;
 
 /// Runs the study. `cancel` (may be null) is polled every step; when it turns

@@ -120,6 +120,20 @@ void TestWorkPrecision::errorsAndCostsAreFilledIn()
     // At the same cost rk4 is far more accurate than Euler.
     QVERIFY(r.runs[2].positionError < 1e-3 * r.runs[1].positionError);
     QVERIFY(r.runs[0].energyError > r.runs[2].energyError);
+
+    // On two threads: the same runs, in the same order, with the same numbers.
+    settings.threads = 2;
+    std::atomic<int> parallelCalls{0};
+    const WorkPrecisionResult p =
+        measureWorkPrecision(springScene(), settings, [&](int, int) { ++parallelCalls; });
+    QCOMPARE(parallelCalls.load(), 5);
+    QCOMPARE(p.runs.size(), r.runs.size());
+    for (std::size_t i = 0; i < r.runs.size(); ++i) {
+        QVERIFY(p.runs[i].integrator == r.runs[i].integrator);
+        QCOMPARE(p.runs[i].dt, r.runs[i].dt);
+        QCOMPARE(p.runs[i].positionError, r.runs[i].positionError);
+        QCOMPARE(p.runs[i].forceEvaluations, r.runs[i].forceEvaluations);
+    }
 }
 
 void TestWorkPrecision::cancelStopsEarly()
@@ -147,6 +161,15 @@ void TestWorkPrecision::cancelStopsEarly()
     QVERIFY(none.cancelled);
     QVERIFY(none.runs.empty());
     QCOMPARE(none.reference.forceEvaluations, std::int64_t(0));
+
+    // On two threads both workers stop.
+    cancel = false;
+    settings.threads = 2;
+    settings.duration = 500.0;
+    const WorkPrecisionResult both = measureWorkPrecision(
+        springScene(), settings, [&](int done, int) { if (done == 1) cancel = true; }, &cancel);
+    QVERIFY(both.cancelled);
+    QVERIFY(both.runs.empty());
 }
 
 void TestWorkPrecision::durationMustBeWholeSteps()

@@ -19,6 +19,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTabWidget>
+#include <QThread>
 #include <QToolButton>
 #include <QValueAxis>
 #include <QVBoxLayout>
@@ -352,6 +353,7 @@ void AccuracyDock::startStudy(Study kind)
     sim::WorkPrecisionSettings settings;
     settings.duration = std::max(1.0, std::ceil(m_studyDuration / h)) * h;
     settings.dts = {h, h / 2, h / 4, h / 8};
+    settings.threads = std::max(1, QThread::idealThreadCount()); // the lesson's own steps are cheap beside these
     m_study = kind;
     m_convergenceIntegrator = scene.settings.time.integrator;
     settings.integrators = kind == Study::TradeOff ? tradeOffIntegrators()
