@@ -240,6 +240,11 @@ void AccuracyDock::createDriftGroup(QWidget* page)
     form->addRow(QString(), restart);
 }
 
+bool AccuracyDock::isGhostDrawn() const
+{
+    return m_ghostShown->isChecked();
+}
+
 void AccuracyDock::restartDrift()
 {
     sim::World& world = m_controller->mutableWorld();

@@ -66,6 +66,8 @@ public:
     const sim::WorkPrecisionResult& lastStudy() const { return m_lastStudy; }
     /// The fitted order of the last convergence check (NaN before one).
     double lastOrder() const { return m_lastOrder; }
+    /// The "draw the ghost" switch (the canvas's ghost overlay).
+    bool isGhostDrawn() const;
     QChart* tradeOffChart() const { return m_tradeOffChart; }
     QChart* separationChart() const { return m_separationChart; }
 

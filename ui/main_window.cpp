@@ -443,7 +443,9 @@ bool MainWindow::setLesson(const Lesson& lesson)
     if (m_controller->setScene(lesson.scene))
         return false; // the controller has signalled the error
     m_lesson = lesson;
-    m_canvas->setOverlays(Overlays::fromNames(lesson.overlays));
+    Overlays overlays = Overlays::fromNames(lesson.overlays);
+    overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
+    m_canvas->setOverlays(overlays);
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
     m_inspectorDock->setSelectedBall(-1);
