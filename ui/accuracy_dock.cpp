@@ -33,8 +33,8 @@ namespace forcelab {
 namespace {
 
 constexpr int kMaxSeparationPoints = 2000;
-// The log axis cannot show 0: separations below this are drawn on the floor.
-constexpr double kSeparationFloor = 1e-14;
+// The separation axis before the first point, px.
+constexpr double kSeparationFloor = 1e-12;
 
 QString sci(double v)
 {
@@ -49,6 +49,35 @@ QString nameOf(sim::IntegratorKind k)
 {
     const std::string_view n = sim::toString(k);
     return QString::fromLatin1(n.data(), static_cast<qsizetype>(n.size()));
+}
+
+// A log axis over whole decades around [lo, hi], with at most about five
+// labels (a tick every k decades), so they fit a dock's height.
+void setDecades(QLogValueAxis* axis, double lo, double hi)
+{
+    int from = int(std::floor(std::log10(lo)));
+    int to = std::max(int(std::ceil(std::log10(hi))), from + 1);
+    const int k = std::max(1, (to - from + 4) / 5);
+    from = int(std::floor(double(from) / k)) * k;
+    to = int(std::ceil(double(to) / k)) * k;
+    axis->setBase(std::pow(10.0, k));
+    axis->setRange(std::pow(10.0, from), std::pow(10.0, to));
+}
+
+// Charts in a dock are small: thin margins, small labels, no minor ticks.
+void compact(QChart* chart)
+{
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    chart->setBackgroundRoundness(0);
+    QFont font = chart->font();
+    font.setPointSizeF(std::max(6.0, font.pointSizeF() * 0.85));
+    for (QAbstractAxis* axis : chart->axes()) {
+        axis->setLabelsFont(font);
+        axis->setTitleFont(font);
+        if (auto* log = qobject_cast<QLogValueAxis*>(axis))
+            log->setMinorTickCount(0);
+    }
+    chart->legend()->setFont(font);
 }
 
 QLabel* numberLabel(const QString& objectName)
@@ -114,19 +143,21 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     ghostLayout->addLayout(ghostForm);
     m_separationChart = new QChart;
     m_separationChart->legend()->hide();
-    m_separationChart->setTitle(tr("Largest distance between a ball and its ghost"));
     m_separationSeries = new QLineSeries;
     m_separationChart->addSeries(m_separationSeries);
     m_separationTime = new QValueAxis;
     m_separationTime->setTitleText(tr("t, s"));
+    m_separationTime->setTickCount(5);
+    m_separationTime->setLabelFormat(QStringLiteral("%.3g"));
     m_separationAxis = new QLogValueAxis;
-    m_separationAxis->setTitleText(tr("px (log)"));
+    m_separationAxis->setTitleText(tr("px"));
     m_separationAxis->setLabelFormat(QStringLiteral("%.0e"));
     m_separationAxis->setRange(kSeparationFloor, 1e3);
     m_separationChart->addAxis(m_separationTime, Qt::AlignBottom);
     m_separationChart->addAxis(m_separationAxis, Qt::AlignLeft);
     m_separationSeries->attachAxis(m_separationTime);
     m_separationSeries->attachAxis(m_separationAxis);
+    compact(m_separationChart);
     auto* separationView = new QChartView(m_separationChart);
     separationView->setRenderHint(QPainter::Antialiasing);
     separationView->setMinimumHeight(160);
@@ -171,7 +202,7 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     m_studyStatus->setWordWrap(true);
     studyLayout->addWidget(m_studyStatus);
     m_tradeOffChart = new QChart;
-    m_tradeOffChart->setTitle(tr("Error against cost (log-log): lower left is better"));
+    m_tradeOffChart->setToolTip(tr("Error against cost, both on log scales: lower left is better"));
     m_tradeOffChart->legend()->setAlignment(Qt::AlignRight);
     m_tradeOffView = new QChartView(m_tradeOffChart);
     m_tradeOffView->setRenderHint(QPainter::Antialiasing);
@@ -278,9 +309,6 @@ void AccuracyDock::updateNumbers()
 void AccuracyDock::applyGhost()
 {
     const auto mode = static_cast<SimulationController::GhostMode>(m_ghostMode->currentIndex());
-    const bool compare = mode == SimulationController::GhostMode::Compare;
-    m_ghostIntegrator->setEnabled(compare);
-    m_ghostDivider->setEnabled(compare);
     m_controller->setGhost(mode, static_cast<sim::IntegratorKind>(m_ghostIntegrator->currentIndex()),
                            m_ghostDivider->currentData().toInt());
 }
@@ -290,8 +318,17 @@ void AccuracyDock::onGhostChanged()
 {
     m_separationSeries->clear();
     const bool on = m_controller->ghost() != nullptr;
-    const QSignalBlocker block(m_ghostMode);
-    m_ghostMode->setCurrentIndex(static_cast<int>(m_controller->ghostMode()));
+    {
+        // Show what the controller runs (it may have been set from elsewhere).
+        const QSignalBlocker b1(m_ghostMode), b2(m_ghostIntegrator), b3(m_ghostDivider);
+        m_ghostMode->setCurrentIndex(static_cast<int>(m_controller->ghostMode()));
+        m_ghostIntegrator->setCurrentIndex(static_cast<int>(m_controller->ghostIntegrator()));
+        m_ghostDivider->setCurrentIndex(std::max(0, m_ghostDivider->findData(m_controller->ghostDivider())));
+        // The twin always runs the live integrator and step.
+        const bool twin = m_controller->ghostMode() == SimulationController::GhostMode::Twin;
+        m_ghostIntegrator->setEnabled(!twin);
+        m_ghostDivider->setEnabled(!twin);
+    }
     m_separation->setText(on ? sci(m_controller->ghostSeparation()) : QStringLiteral("—"));
     m_separationTime->setRange(m_controller->world().time(), m_controller->world().time() + 1.0);
     recordSeparation();
@@ -303,14 +340,14 @@ void AccuracyDock::recordSeparation()
         return;
     const double d = m_controller->ghostSeparation();
     m_separation->setText(sci(d));
-    if (!std::isfinite(d))
-        return;
+    if (!(std::isfinite(d) && d > 0.0))
+        return; // nothing to draw on a log axis (a ghost starts where the balls are)
     const double t = m_controller->world().time();
     if (m_separationSeries->count() > 0 && m_separationSeries->at(m_separationSeries->count() - 1).x() >= t)
         return;
     if (m_separationSeries->count() >= kMaxSeparationPoints)
         m_separationSeries->removePoints(0, m_separationSeries->count() / 2);
-    m_separationSeries->append(t, std::max(d, kSeparationFloor));
+    m_separationSeries->append(t, d);
     const double t0 = m_separationSeries->at(0).x();
     m_separationTime->setRange(t0, std::max(t, t0 + 1.0));
     // The y range: whole decades around what has been seen.
@@ -319,8 +356,7 @@ void AccuracyDock::recordSeparation()
         lo = std::min(lo, p.y());
         hi = std::max(hi, p.y());
     }
-    m_separationAxis->setRange(std::pow(10.0, std::floor(std::log10(lo))),
-                               std::pow(10.0, std::max(std::ceil(std::log10(hi)), std::floor(std::log10(lo)) + 1)));
+    setDecades(m_separationAxis, lo, hi);
 }
 
 // The scene as it runs now: the lesson's balls and spawn with the live settings.
@@ -442,7 +478,7 @@ void AccuracyDock::showTradeOff(const sim::WorkPrecisionResult& r)
     x->setTitleText(tr("cost: force evaluations"));
     x->setLabelFormat(QStringLiteral("%.0e"));
     auto* y = new QLogValueAxis;
-    y->setTitleText(tr("position error, px"));
+    y->setTitleText(tr("error, px"));
     y->setLabelFormat(QStringLiteral("%.0e"));
     m_tradeOffChart->addAxis(x, Qt::AlignBottom);
     m_tradeOffChart->addAxis(y, Qt::AlignLeft);
@@ -472,11 +508,10 @@ void AccuracyDock::showTradeOff(const sim::WorkPrecisionResult& r)
         series->attachAxis(y);
     }
     if (xhi > 0) {
-        x->setRange(std::pow(10.0, std::floor(std::log10(xlo))),
-                    std::pow(10.0, std::max(std::ceil(std::log10(xhi)), std::floor(std::log10(xlo)) + 1)));
-        y->setRange(std::pow(10.0, std::floor(std::log10(ylo))),
-                    std::pow(10.0, std::max(std::ceil(std::log10(yhi)), std::floor(std::log10(ylo)) + 1)));
+        setDecades(x, xlo, xhi);
+        setDecades(y, ylo, yhi);
     }
+    compact(m_tradeOffChart);
 }
 
 } // namespace forcelab
