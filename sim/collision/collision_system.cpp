@@ -207,15 +207,14 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_input.loadStatic(balls, m_grow.data());
         clock.lap(m_profile.load);
         findContacts(settings.detection, false, m_speculative, stats, clock);
-        // Back to the pairs that overlap now: what contacts() and the counters report.
-        const double* x = balls.position.data();
-        m_contacts.clear();
-        for (const Contact& c : m_speculative) {
-            const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
-            if (circlesOverlap(x[2 * a], x[2 * a + 1], radius[a], x[2 * b], x[2 * b + 1], radius[b]))
-                m_contacts.push_back(c);
-        }
+        // The solver puts the pairs that overlap now back into m_contacts
+        // (what contacts(), the flags and the counters report) as it builds
+        // its rows.
+        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g, m_speculative, clock);
         stats.contacts = static_cast<std::int64_t>(m_contacts.size());
+        if (m_profiling)
+            m_profile.passes += m_lastPasses;
+        return stats;
     } else {
         if (continuous)
             m_input.loadSwept(balls, startPositions);
@@ -235,8 +234,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         return stats;
     }
     if (resting) {
-        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g,
-                     m_solver.speculative > 0.0 ? m_speculative : m_contacts, clock);
+        solveResting(balls, settings.restitution, box, walls, dt, restingSpeed, g, m_contacts, clock);
         if (m_profiling)
             m_profile.passes += m_lastPasses;
         return stats;
@@ -281,13 +279,22 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     m_vn0.reserve(pairs.size());
     std::size_t old = 0;
     const double inverseH = 1.0 / h;
+    const bool speculative = &pairs != &m_contacts;
+    if (speculative)
+        m_contacts.clear();
+    unsigned char* colliding = balls.colliding.data();
     for (const Contact& c : pairs) {
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
+        const double s = radius[a] + radius[b];
+        const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+        if (speculative && dx * dx + dy * dy < s * s) { // circlesOverlap, to the bit
+            m_contacts.push_back(c);
+            colliding[a] = 1;
+            colliding[b] = 1;
+        }
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
-        const double s = radius[a] + radius[b];
-        const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
         const double len = std::sqrt(dx * dx + dy * dy);
         Vec2 nrm;
         if (len > 1e-12 * s && std::isfinite(len))
