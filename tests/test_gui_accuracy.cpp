@@ -273,6 +273,9 @@ void GuiAccuracyTest::tradeOffRunsToTheEnd()
     // rk4's smallest step beats Euler's smallest step by orders of magnitude.
     QVERIFY(static_cast<QXYSeries*>(series[3])->at(3).y() < 1e-3 * static_cast<QXYSeries*>(series[0])->at(3).y());
     QCOMPARE(dock->findChild<QProgressBar*>(QStringLiteral("studyProgress"))->value(), 1 + 5 * 4);
+    // The status names each line's slope; on a spring Verlet's is 2.
+    const QString status = dock->findChild<QLabel*>(QStringLiteral("studyStatus"))->text();
+    QVERIFY2(status.contains(QStringLiteral("verlet 2.0")), qPrintable(status));
 }
 
 void GuiAccuracyTest::tradeOffCanBeCancelled()

@@ -265,6 +265,11 @@ void AccuracyDock::createDriftGroup(QWidget* page)
     form->addRow(tr("Momentum drift |Δp|:"), m_momentumDrift);
     form->addRow(tr("Force evaluations per simulated s:"), m_evaluationsPerSecond);
     form->addRow(tr("Step cost:"), m_stepCost);
+    auto* explain = new QLabel(tr("Energy added or taken away on purpose (drag, wind, walls, collisions, your "
+                                  "pointer, edits) is booked apart. What is left should be zero: it is the "
+                                  "integrator's own error."));
+    explain->setWordWrap(true);
+    form->addRow(explain);
     auto* restart = new QPushButton(tr("Start Counting Again"));
     restart->setObjectName(QStringLiteral("restartDrift"));
     connect(restart, &QPushButton::clicked, this, &AccuracyDock::restartDrift);
@@ -441,8 +446,24 @@ void AccuracyDock::studyFinished()
     m_progress->setValue(m_progress->maximum());
     if (m_study == Study::TradeOff) {
         showTradeOff(r);
+        // The slope of each line is its order: fitted the same way as the
+        // convergence check, over the integrator's four steps.
+        QStringList orders;
+        for (sim::IntegratorKind kind : tradeOffIntegrators()) {
+            std::vector<double> dts, errors;
+            for (const sim::PrecisionRun& run : r.runs)
+                if (run.integrator == kind && run.refused.empty() && !run.blewUp) {
+                    dts.push_back(run.dt);
+                    errors.push_back(run.positionError);
+                }
+            const double p = sim::fittedOrder(dts, errors);
+            if (!std::isnan(p))
+                orders << QStringLiteral("%1 %2").arg(nameOf(kind)).arg(p, 0, 'f', 1);
+        }
         m_studyStatus->setText(tr("Done: %1 runs against ias15 at dt/8. Each dot is one run; a steeper line is a "
-                                  "higher order.").arg(r.runs.size()));
+                                  "higher order. Fitted orders: %2.")
+                                   .arg(r.runs.size())
+                                   .arg(orders.join(QStringLiteral(", "))));
         return;
     }
     std::vector<double> dts, errors;
