@@ -152,6 +152,12 @@ void GuiAccuracyTest::driftNumbersAreTheWorlds()
     // One evaluation per step for semi-implicit Euler plus the books' own.
     QVERIFY(numberIn(dock, "evaluationsPerSecond") >= 60.0);
 
+    // A reset restarts the books, and they stay on while the dock is open.
+    c->reset();
+    QVERIFY(c->world().accounting());
+    QCOMPARE(c->world().bookedEnergy(), 0.0);
+    QCOMPARE(c->world().startEnergy(), c->world().energy().total());
+
     dock->toggleViewAction()->trigger();
     QTRY_VERIFY(!c->world().accounting());
 }
