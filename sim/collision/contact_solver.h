@@ -22,8 +22,9 @@
 //    every pair approaching faster than v_rest with restitution e, as before;
 //    the later "relax" passes only stop pairs that still approach (target
 //    normal speed 0), so a push travels down a pile a few balls per pass.
-//    The passes stop early once no pair approaches faster than
-//    relaxTolerance · v_rest.
+//    After the first pass a contact is solved again only if one of its
+//    balls changed speed by more than relaxTolerance · v_rest since; the
+//    passes stop early once no ball did.
 // 3. The walls take part. A ball on an enabled wall (or so close that one
 //    sub-step of gravity would bring it there) is a contact with a partner of
 //    infinite mass: the passes stop it from moving into the wall faster than
