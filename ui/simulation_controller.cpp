@@ -24,15 +24,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
         return message;
     }
     m_scene = scene;
-    m_spawn = scene.spawn;
-    m_accumulator = 0.0;
-    m_droppedTime = 0.0;
-    m_clock.restart();
-    restartGhost();
-    emit sceneChanged();
-    emit settingsChanged();
-    emit stepped();
-    checkHalted();
+    startedScene();
     return std::nullopt;
 }
 
@@ -176,6 +168,14 @@ void SimulationController::reset()
         emit errorOccurred(QString::fromStdString(*error));
         return;
     }
+    startedScene();
+}
+
+// The world has just been started on m_scene (a new scene or a reset): the
+// frame clock, the ghost and the views start over, and a scene that is
+// unstable from its first step is reported at once.
+void SimulationController::startedScene()
+{
     m_spawn = m_scene.spawn;
     m_accumulator = 0.0;
     m_droppedTime = 0.0;
@@ -184,6 +184,7 @@ void SimulationController::reset()
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
+    checkHalted();
 }
 
 void SimulationController::setTimeScale(double scale)

@@ -127,6 +127,7 @@ private:
     void updateTimer();
     void checkHalted();
     void restartGhost();
+    void startedScene();
     void stepGhost();
     sim::WorldSettings ghostSettings(const sim::WorldSettings& live) const;
 
