@@ -14,6 +14,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QImage>
@@ -21,6 +22,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTest>
 #include <QTimer>
 
@@ -100,6 +102,7 @@ private slots:
     void frameLoopTakesWholeStepsAndCapsThem();
     void shortcutsPlayStepAndReset();
     void opensShowcaseAndRemembersLastLesson();
+    void damagedSettingsAreNamedAndReplaced();
 };
 
 void GuiTest::initTestCase()
@@ -497,6 +500,46 @@ void GuiTest::opensShowcaseAndRemembersLastLesson()
     // The next start opens the last lesson.
     MainWindow again;
     QCOMPARE(again.lesson().source, gravitySource);
+}
+
+// Saved settings are an input path like any other: a damaged settings file
+// (hand-edited, another version) must not stop the start. Each value that does
+// not fit is replaced by the default and named, with the file, in one line of
+// the status bar.
+void GuiTest::damagedSettingsAreNamedAndReplaced()
+{
+    QSettings().clear();
+    {
+        QSettings s;
+        s.setValue(QStringLiteral("mainWindow/geometry"), QStringLiteral("not a geometry"));
+        s.setValue(QStringLiteral("mainWindow/state"), QByteArray("\x00\x01garbage", 9));
+        s.setValue(QStringLiteral("lesson/last"), QStringLiteral("/nonexistent/last-lesson.json"));
+        s.setValue(QStringLiteral("lesson/directory"), QStringLiteral("/nonexistent/folder"));
+    }
+    const QString file = QSettings().fileName();
+    const QStringList builtIn = LessonLoader::builtInFiles();
+    QVERIFY(!builtIn.isEmpty());
+    {
+        MainWindow window;
+        // It still starts, on the first lesson, running.
+        QCOMPARE(window.lesson().source, builtIn.first());
+        QVERIFY(window.controller()->isPlaying());
+        QVERIFY(window.width() > 0 && window.height() > 0);
+        const QString message = window.statusBar()->currentMessage();
+        QVERIFY2(!message.contains(QLatin1Char('\n')), qPrintable(message));
+        for (const QString& part : {QStringLiteral("mainWindow/geometry"), QStringLiteral("mainWindow/state"),
+                                    QStringLiteral("lesson/last"), QStringLiteral("last-lesson.json"),
+                                    QStringLiteral("lesson/directory"), QStringLiteral("/nonexistent/folder"),
+                                    QDir::toNativeSeparators(file)})
+            QVERIFY2(message.contains(part), qPrintable(QStringLiteral("'%1' not in: %2").arg(part, message)));
+        window.close(); // writes good settings over the damaged ones
+    }
+    // Settings this version wrote load without a word.
+    MainWindow again;
+    QCOMPARE(again.lesson().source, builtIn.first());
+    QVERIFY2(!again.statusBar()->currentMessage().contains(QDir::toNativeSeparators(file)),
+             qPrintable(again.statusBar()->currentMessage()));
+    QSettings().clear();
 }
 
 QTEST_MAIN(GuiTest)

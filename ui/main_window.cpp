@@ -92,6 +92,8 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     createStatusBar();
     readSettings();
     openInitialLesson(lesson);
+    if (!m_settingsProblems.isEmpty())
+        showError(m_settingsProblems.join(QStringLiteral(" · ")));
     m_canvas->setFocus();
 }
 
@@ -383,15 +385,30 @@ void MainWindow::createStatusBar()
 
 void MainWindow::readSettings()
 {
+    // The settings file can be damaged, hand-edited or written by another
+    // version. A value that does not fit is replaced by the default, and the
+    // status bar names the file and the key (shown once the lesson is open).
     const QSettings settings;
-    const QByteArray geometry = settings.value(kGeometryKey).toByteArray();
-    if (geometry.isEmpty() || !restoreGeometry(geometry)) {
+    const QString file = QDir::toNativeSeparators(settings.fileName());
+    auto refuse = [&](const QString& key, const QString& what) {
+        m_settingsProblems << tr("%1: %2: %3").arg(file, key, what);
+    };
+    const QVariant geometry = settings.value(kGeometryKey);
+    if (geometry.isNull() || !restoreGeometry(geometry.toByteArray())) {
+        if (!geometry.isNull())
+            refuse(kGeometryKey, tr("not a saved window geometry; using the default size"));
         const QRect available = screen() ? screen()->availableGeometry() : QRect(0, 0, 1400, 900);
         resize(std::min(1400, available.width() * 9 / 10), std::min(900, available.height() * 9 / 10));
     }
-    restoreState(settings.value(kStateKey).toByteArray());
+    const QVariant state = settings.value(kStateKey);
+    if (!state.isNull() && !restoreState(state.toByteArray()))
+        refuse(kStateKey, tr("not a saved layout of the docks; using the default layout"));
     m_lastLesson = settings.value(kLastLessonKey).toString();
-    m_lastDirectory = settings.value(kDirectoryKey).toString();
+    const QString directory = settings.value(kDirectoryKey).toString();
+    if (!directory.isEmpty() && !QFileInfo(directory).isDir())
+        refuse(kDirectoryKey, tr("%1 is not a folder; using the home folder").arg(directory));
+    else
+        m_lastDirectory = directory;
 }
 
 void MainWindow::writeSettings() const
@@ -408,11 +425,16 @@ void MainWindow::openInitialLesson(const QString& requested)
 {
     if (!requested.isEmpty() && openLesson(requested))
         return;
-    // The last lesson quietly: a file that has gone away is no reason for a dialog.
+    // The last lesson without a dialog: a file that has gone away is no
+    // reason to stop the start, but the status bar says what happened.
     if (requested.isEmpty() && !m_lastLesson.isEmpty()) {
         LoadResult last = LessonLoader::load(m_lastLesson);
         if (last.ok() && setLesson(*last.lesson))
             return;
+        if (!last.ok())
+            m_settingsProblems << tr("%1: %2: %3; opened the first lesson instead")
+                                      .arg(QDir::toNativeSeparators(QSettings().fileName()), kLastLessonKey,
+                                           last.errors.value(0));
     }
     // The first built-in lesson (the showcase). A built-in lesson that does
     // not load is a bug of the build: say so in the status bar, not a dialog.

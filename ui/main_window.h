@@ -151,6 +151,7 @@ private:
     qint64 m_lastFrames = 0;
     std::optional<QFont> m_normalFont; // before presentation mode
     QString m_lastLesson;    // from the settings
+    QStringList m_settingsProblems; // values in the settings file that were refused, for the status bar
     QString m_lastDirectory; // of Open / Save lesson, screenshots and exports
 };
 
