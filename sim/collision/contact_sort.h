@@ -1,7 +1,8 @@
 #pragma once
 // Puts contacts in ascending (a, b) order, the one order every detector must
-// report. A counting sort by a (O(N + contacts)), then a short sort of each
-// ball's partners by b: much faster than a comparison sort of all pairs.
+// report. Two stable counting sorts (LSD radix): first by b, then by a. Each
+// is one pass over the contacts (O(N + contacts)) with no comparisons, which
+// beats sorting each ball's partners by b after a counting sort by a.
 
 #include "contact.h"
 
@@ -15,7 +16,8 @@ public:
     void sort(std::vector<Contact>& contacts, int n);
 
 private:
-    std::vector<int> m_start;
+    std::vector<int> m_startA; // where each ball's run by a starts
+    std::vector<int> m_startB; // where each ball's run by b starts
     std::vector<Contact> m_spare;
 };
 
