@@ -37,28 +37,31 @@ void SweepAndPrune::refreshKeys(const BroadPhaseInput& in)
     m_rowHeight = rowHeightFor(in.maxHeight);
     const double inverse = m_rowHeight > 0.0 ? 1.0 / m_rowHeight : 0.0;
     const std::size_t count = in.active.size();
+    // Keys are a permutation of distinct indices: if each is still an active
+    // ball and the counts agree, the set is the same. The check and the
+    // refresh share one pass over the keys.
     bool sameSet = m_keys.size() == count;
+    std::int64_t moved = 0;
     if (sameSet) {
-        // Keys are a permutation of distinct indices: if each is still an
-        // active ball and the counts agree, the set is the same.
-        for (const Key& k : m_keys)
-            if (k.index >= in.size() || std::isnan(in.x[static_cast<std::size_t>(k.index)])) {
+        for (Key& k : m_keys) {
+            const auto i = static_cast<std::size_t>(k.index);
+            if (k.index >= in.size() || std::isnan(in.x[i])) {
                 sameSet = false;
                 break;
             }
+            k.lo = in.loX[i];
+            const std::int32_t row = rowOf(in.loY[i], inverse);
+            moved += row != k.row ? 1 : 0;
+            k.row = row;
+        }
     }
     if (!sameSet) {
         m_keys.resize(count);
-        for (std::size_t k = 0; k < count; ++k)
-            m_keys[k].index = in.active[k];
-    }
-    std::int64_t moved = sameSet ? 0 : static_cast<std::int64_t>(count);
-    for (Key& k : m_keys) {
-        const auto i = static_cast<std::size_t>(k.index);
-        k.lo = in.loX[i];
-        const std::int32_t row = rowOf(in.loY[i], inverse);
-        moved += row != k.row ? 1 : 0;
-        k.row = row;
+        for (std::size_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(in.active[k]);
+            m_keys[k] = Key{in.loX[i], rowOf(in.loY[i], inverse), in.active[k]};
+        }
+        moved = static_cast<std::int64_t>(count);
     }
     m_rowChanges = moved;
 }
@@ -153,7 +156,7 @@ void SweepAndPrune::sortByRows()
 }
 
 template <class Test>
-void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
+void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test& test, std::vector<Contact>& out,
                               CollisionStats& stats, StageClock& clock, CollisionProfile& profile)
 {
     refreshKeys(in);
@@ -162,67 +165,45 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vecto
         return;
     sortKeys();
 
-    // The sorted balls as arrays, so the sweep reads memory in order.
-    m_lo.resize(n);
-    m_hi.resize(n);
-    m_loY.resize(n);
-    m_hiY.resize(n);
-    m_index.resize(n);
-    m_row.resize(n);
-    m_x.resize(n);
-    m_y.resize(n);
-    m_r.resize(n);
-    if constexpr (Test::kSwept) {
-        m_x0.resize(n);
-        m_y0.resize(n);
-    }
+    // The sorted balls as one record each, so the sweep reads memory in order.
+    m_slots.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
-        const auto i = static_cast<std::size_t>(m_keys[k].index);
-        m_lo[k] = m_keys[k].lo;
-        m_row[k] = m_keys[k].row;
-        m_index[k] = m_keys[k].index;
-        m_hi[k] = in.hiX[i];
-        m_loY[k] = in.loY[i];
-        m_hiY[k] = in.hiY[i];
-        m_x[k] = in.x[i];
-        m_y[k] = in.y[i];
-        m_r[k] = in.r[i];
-        if constexpr (Test::kSwept) {
-            m_x0[k] = in.x0[i];
-            m_y0[k] = in.y0[i];
-        }
+        const Key key = m_keys[k];
+        const auto i = static_cast<std::size_t>(key.index);
+        m_slots[k] = Slot{key.lo, in.hiX[i], in.loY[i], in.hiY[i], in.x[i], in.y[i], in.r[i], key.index, key.row};
     }
     clock.lap(profile.broadSort);
-    // The narrow phase on the sorted copies (it is symmetric, so the order of
-    // the two balls in a call does not matter).
-    const Test sorted{BallArrays{m_x.data(), m_y.data(), m_r.data(), m_x0.data(), m_y0.data()}};
+    const Slot* slot = m_slots.data();
 
     std::int64_t tested = 0;
     // Sorted positions p, q overlap in x; check y, then the narrow phase.
     // The static test is cheap, so it runs without branches: the y test and
     // the distance test are combined, and every pair is written to the
     // output, which moves on only when the pair touches (whether two balls
-    // touch is as good as random to the branch predictor).
+    // touch is as good as random to the branch predictor). The narrow phase
+    // is symmetric, so the order of the two balls in a call does not matter.
     std::size_t count = out.size();
     if (out.size() < count + n)
         out.resize(count + n);
     auto consider = [&](std::size_t p, std::size_t q) {
+        const Slot& sp = slot[p];
+        const Slot& sq = slot[q];
         if constexpr (Test::kSwept) {
-            if (m_loY[q] > m_hiY[p] || m_loY[p] > m_hiY[q])
+            if (sq.loY > sp.hiY || sp.loY > sq.hiY)
                 return;
             ++tested;
-            if (sorted(p, q)) {
+            if (test(static_cast<std::size_t>(sp.index), static_cast<std::size_t>(sq.index))) {
                 if (count == out.size())
                     out.resize(2 * count);
-                out[count++] = {std::min(m_index[p], m_index[q]), std::max(m_index[p], m_index[q])};
+                out[count++] = {std::min(sp.index, sq.index), std::max(sp.index, sq.index)};
             }
         } else {
-            const bool inY = !(m_loY[q] > m_hiY[p]) & !(m_loY[p] > m_hiY[q]);
+            const bool inY = !(sq.loY > sp.hiY) & !(sp.loY > sq.hiY);
             tested += inY ? 1 : 0;
-            const bool hit = inY & sorted(p, q);
+            const bool hit = inY & circlesOverlap(sp.x, sp.y, sp.r, sq.x, sq.y, sq.r);
             if (count == out.size())
                 out.resize(2 * count);
-            out[count] = {std::min(m_index[p], m_index[q]), std::max(m_index[p], m_index[q])};
+            out[count] = {std::min(sp.index, sq.index), std::max(sp.index, sq.index)};
             count += hit ? 1 : 0;
         }
     };
@@ -230,30 +211,30 @@ void SweepAndPrune::findPairs(const BroadPhaseInput& in, const Test&, std::vecto
     std::size_t begin = 0;
     while (begin < n) {
         std::size_t end = begin + 1;
-        while (end < n && m_row[end] == m_row[begin])
+        while (end < n && slot[end].row == slot[begin].row)
             ++end;
         // Inside the row: the open list of ball p is every later ball whose
         // left edge is not past p's right edge.
         for (std::size_t p = begin; p < end; ++p) {
-            const double hi = m_hi[p];
-            for (std::size_t q = p + 1; q < end && m_lo[q] <= hi; ++q)
+            const double hi = slot[p].hi;
+            for (std::size_t q = p + 1; q < end && slot[q].lo <= hi; ++q)
                 consider(p, q);
         }
         // Against the row below: merge the two sorted rows by left edge; each
         // ball scans the other row from the merge point while it overlaps.
         std::size_t end2 = end;
-        while (end2 < n && m_row[end2] == m_row[begin] + 1)
+        while (end2 < n && slot[end2].row == slot[begin].row + 1)
             ++end2;
         std::size_t p = begin, q = end;
         while (p < end && q < end2) {
-            if (m_lo[p] <= m_lo[q]) {
-                const double hi = m_hi[p];
-                for (std::size_t j = q; j < end2 && m_lo[j] <= hi; ++j)
+            if (slot[p].lo <= slot[q].lo) {
+                const double hi = slot[p].hi;
+                for (std::size_t j = q; j < end2 && slot[j].lo <= hi; ++j)
                     consider(p, j);
                 ++p;
             } else {
-                const double hi = m_hi[q];
-                for (std::size_t j = p; j < end && m_lo[j] <= hi; ++j)
+                const double hi = slot[q].hi;
+                for (std::size_t j = p; j < end && slot[j].lo <= hi; ++j)
                     consider(j, q);
                 ++q;
             }

@@ -58,11 +58,20 @@ private:
     std::vector<int> m_rowCount;
     std::vector<std::int32_t> m_cell;
     std::int64_t m_rowChanges = 0; // keys whose row changed in the last refresh
-    // The sorted balls, structure of arrays, for the sweep itself.
-    std::vector<double> m_lo, m_hi, m_loY, m_hiY;
-    std::vector<double> m_x, m_y, m_r, m_x0, m_y0;
-    std::vector<int> m_index;
-    std::vector<std::int32_t> m_row;
+    // One sorted ball, everything the sweep's inner loop reads about it in one
+    // cache line: the box, the circle, the ball's index and row. (The
+    // continuous test, which also needs the start of the step, reads the
+    // input arrays by ball index instead: it runs only on pairs whose boxes
+    // overlap in y.)
+    struct alignas(64) Slot {
+        double lo, hi, loY, hiY; // box
+        double x, y, r;          // circle
+        std::int32_t index;      // ball
+        std::int32_t row;        // row of the box's top edge
+    };
+    static_assert(sizeof(Slot) == 64);
+    // The sorted balls, in sweep order, for the sweep itself.
+    std::vector<Slot> m_slots;
     double m_rowHeight = 0.0;
     std::int64_t m_lastShifts = 0;
     bool m_lastFullSort = false;
