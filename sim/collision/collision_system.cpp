@@ -267,9 +267,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     const ContactSolverSettings& cs = m_solver;
     const int n = balls.size();
     if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
-        m_pairRows.clear();
-        m_rowBalls.clear();
-        m_impulse.clear();
+        m_rowCount = 0;
         m_wallRows.clear();
         m_warmCount = n;
     }
@@ -306,21 +304,30 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // of impact comes from the positions at detection. A pair may close the
     // gap it had at the start of the sub-step, gap_end − v_n·h, and no more:
     // its normal speed may not drop below −allowed (0 for pairs that overlap).
-    m_spareRows.clear();
-    m_spareBalls.clear();
-    m_spareImpulse.clear();
-    m_vn0.clear();
-    m_spareRows.reserve(pairs.size());
-    m_spareBalls.reserve(pairs.size());
-    m_spareImpulse.reserve(pairs.size());
-    m_vn0.reserve(pairs.size());
-    std::size_t old = 0;
+    //
+    // The rows are written by index into arrays that only grow.
+    const std::size_t m = pairs.size();
+    if (m_spareRows.size() < m) {
+        m_spareRows.resize(m);
+        m_spareBalls.resize(m);
+        m_spareImpulse.resize(m);
+        m_vn0.resize(m);
+    }
+    std::size_t old = 0, count = 0;
+    const std::size_t oldCount = m_rowCount;
+    const Contact* oldBalls = m_rowBalls.data();
+    const double* oldImpulse = m_impulse.data();
+    PairRow* newRows = m_spareRows.data();
+    Contact* newBalls = m_spareBalls.data();
+    double* newImpulse = m_spareImpulse.data();
+    double* vn0s = m_vn0.data();
     const double inverseH = 1.0 / h;
     const bool speculative = &pairs != &m_contacts;
     if (speculative)
         m_contacts.clear();
     unsigned char* colliding = balls.colliding.data();
-    for (const Contact& c : pairs) {
+    for (std::size_t p = 0; p < m; ++p) {
+        const Contact c = pairs[p];
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
@@ -341,23 +348,22 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
         const double gapStart = (len - s) - vn0 * h;
         const double allowed = gapStart > 0.0 ? gapStart * inverseH : 0.0;
-        while (old < m_rowBalls.size() &&
-               (m_rowBalls[old].a < c.a || (m_rowBalls[old].a == c.a && m_rowBalls[old].b < c.b)))
+        while (old < oldCount && (oldBalls[old].a < c.a || (oldBalls[old].a == c.a && oldBalls[old].b < c.b)))
             ++old;
-        const double warm = (old < m_rowBalls.size() && m_rowBalls[old].a == c.a && m_rowBalls[old].b == c.b)
-                                ? m_impulse[old]
-                                : 0.0;
+        const double warm =
+            (old < oldCount && oldBalls[old].a == c.a && oldBalls[old].b == c.b) ? oldImpulse[old] : 0.0;
         const int ba = bodyFor(a), bb = bodyFor(b);
-        m_spareRows.push_back({ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)),
-                               static_cast<float>(allowed)});
-        m_spareBalls.push_back(c);
-        m_spareImpulse.push_back(warm);
-        m_vn0.push_back(vn0);
+        newRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
+        newBalls[count] = c;
+        newImpulse[count] = warm;
+        vn0s[count] = vn0;
+        ++count;
     }
     m_pairRows.swap(m_spareRows);
     m_rowBalls.swap(m_spareBalls);
     m_impulse.swap(m_spareImpulse);
-    const std::size_t rowCount = m_pairRows.size();
+    m_rowCount = count;
+    const std::size_t rowCount = count;
     const PairRow* rows = m_pairRows.data();
     double* impulse = m_impulse.data();
     clock.lap(m_profile.build);

@@ -119,9 +119,12 @@ private:
     struct BodyPosition {
         double x, y, r, w;
     };
+    // The row arrays only grow (rows are written by index, no push_back);
+    // the first m_rowCount hold this sub-step's rows.
     std::vector<PairRow> m_pairRows, m_spareRows;
     std::vector<Contact> m_rowBalls, m_spareBalls;
     std::vector<double> m_impulse, m_spareImpulse, m_vn0;
+    std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;
     std::vector<BodyPosition> m_bodyPositions;
