@@ -305,7 +305,9 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // gap it had at the start of the sub-step, gap_end − v_n·h, and no more:
     // its normal speed may not drop below −allowed (0 for pairs that overlap).
     //
-    // The rows are written by index into arrays that only grow.
+    // The rows are written by index into arrays that only grow, and the pairs
+    // that overlap now are copied to m_contacts without a branch: each is
+    // written, and the count moves on by the result of the test.
     const std::size_t m = pairs.size();
     if (m_spareRows.size() < m) {
         m_spareRows.resize(m);
@@ -313,7 +315,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         m_spareImpulse.resize(m);
         m_vn0.resize(m);
     }
-    std::size_t old = 0, count = 0;
+    std::size_t old = 0, count = 0, touching = 0;
     const std::size_t oldCount = m_rowCount;
     const Contact* oldBalls = m_rowBalls.data();
     const double* oldImpulse = m_impulse.data();
@@ -323,18 +325,21 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     double* vn0s = m_vn0.data();
     const double inverseH = 1.0 / h;
     const bool speculative = &pairs != &m_contacts;
-    if (speculative)
-        m_contacts.clear();
+    if (speculative && m_contacts.size() < m)
+        m_contacts.resize(m);
+    Contact* touchingOut = m_contacts.data();
     unsigned char* colliding = balls.colliding.data();
     for (std::size_t p = 0; p < m; ++p) {
         const Contact c = pairs[p];
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
-        if (speculative && dx * dx + dy * dy < s * s) { // circlesOverlap, to the bit
-            m_contacts.push_back(c);
-            colliding[a] = 1;
-            colliding[b] = 1;
+        if (speculative) {
+            const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
+            touchingOut[touching] = c;
+            touching += overlap;
+            colliding[a] |= static_cast<unsigned char>(overlap);
+            colliding[b] |= static_cast<unsigned char>(overlap);
         }
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
@@ -359,6 +364,8 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         vn0s[count] = vn0;
         ++count;
     }
+    if (speculative)
+        m_contacts.resize(touching);
     m_pairRows.swap(m_spareRows);
     m_rowBalls.swap(m_spareBalls);
     m_impulse.swap(m_spareImpulse);
