@@ -249,6 +249,13 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
 // The resting-contact solver (contact_solver.h): sequential impulses with
 // accumulated, warm-started impulses over the ball–ball and ball–wall
 // contacts, then positional correction with slop.
+//
+// The balls that take part are gathered into bodies (velocity, inverse mass,
+// pass stamp: one 32-byte record each) in the order the rows first name them,
+// and the rows refer to bodies. Every operation on a velocity is the one the
+// solver made on the ball's column before, in the same order, so the results
+// are the same to the bit; only the memory the passes touch is smaller and
+// closer together.
 void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls,
                                    double h, double restingSpeed, double gravity,
                                    const std::vector<Contact>& pairs, StageClock& clock)
@@ -260,37 +267,79 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     const ContactSolverSettings& cs = m_solver;
     const int n = balls.size();
     if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
-        m_pairRows.clear();
-        m_impulse.clear();
+        m_rowCount = 0;
         m_wallRows.clear();
         m_warmCount = n;
     }
+    if (m_bodyOf.size() != static_cast<std::size_t>(n))
+        m_bodyOf.assign(static_cast<std::size_t>(n), -1);
+    if (m_bodies.size() < static_cast<std::size_t>(n)) {
+        m_bodies.resize(static_cast<std::size_t>(n));
+        m_bodyPositions.resize(static_cast<std::size_t>(n));
+        m_bodyVelocity0.resize(2 * static_cast<std::size_t>(n));
+    }
+    int* bodyOf = m_bodyOf.data();
+    Body* body = m_bodies.data();
+    BodyPosition* position = m_bodyPositions.data();
+    double* velocity0 = m_bodyVelocity0.data();
+    int bodies = 0;
+    // The body of ball i, gathered from the balls the first time it is named
+    // (its lines are in cache then: the caller has just read them): the
+    // velocity the passes change and the one before, the position and radius.
+    auto bodyFor = [&](std::size_t i) {
+        int k = bodyOf[i];
+        if (k < 0) {
+            k = bodies++;
+            bodyOf[i] = k;
+            body[k] = {{v[2 * i], v[2 * i + 1]}, inverseMass[i], -1, static_cast<int>(i)};
+            velocity0[2 * k] = v[2 * i];
+            velocity0[2 * k + 1] = v[2 * i + 1];
+            position[k] = {x[2 * i], x[2 * i + 1], radius[i], inverseMass[i]};
+        }
+        return k;
+    };
 
     // Ball–ball rows, in contact order ((a, b), like last sub-step's rows, so
     // the impulses of pairs still in contact are found by a merge). The line
     // of impact comes from the positions at detection. A pair may close the
     // gap it had at the start of the sub-step, gap_end − v_n·h, and no more:
     // its normal speed may not drop below −allowed (0 for pairs that overlap).
-    m_spareRows.clear();
-    m_spareImpulse.clear();
-    m_vn0.clear();
-    m_spareRows.reserve(pairs.size());
-    m_spareImpulse.reserve(pairs.size());
-    m_vn0.reserve(pairs.size());
-    std::size_t old = 0;
+    //
+    // The rows are written by index into arrays that only grow, and the pairs
+    // that overlap now are copied to m_contacts without a branch: each is
+    // written, and the count moves on by the result of the test.
+    const std::size_t m = pairs.size();
+    if (m_spareRows.size() < m) {
+        m_spareRows.resize(m);
+        m_spareBalls.resize(m);
+        m_spareImpulse.resize(m);
+        m_vn0.resize(m);
+    }
+    std::size_t old = 0, count = 0, touching = 0;
+    const std::size_t oldCount = m_rowCount;
+    const Contact* oldBalls = m_rowBalls.data();
+    const double* oldImpulse = m_impulse.data();
+    PairRow* newRows = m_spareRows.data();
+    Contact* newBalls = m_spareBalls.data();
+    double* newImpulse = m_spareImpulse.data();
+    double* vn0s = m_vn0.data();
     const double inverseH = 1.0 / h;
     const bool speculative = &pairs != &m_contacts;
-    if (speculative)
-        m_contacts.clear();
+    if (speculative && m_contacts.size() < m)
+        m_contacts.resize(m);
+    Contact* touchingOut = m_contacts.data();
     unsigned char* colliding = balls.colliding.data();
-    for (const Contact& c : pairs) {
+    for (std::size_t p = 0; p < m; ++p) {
+        const Contact c = pairs[p];
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
-        if (speculative && dx * dx + dy * dy < s * s) { // circlesOverlap, to the bit
-            m_contacts.push_back(c);
-            colliding[a] = 1;
-            colliding[b] = 1;
+        if (speculative) {
+            const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
+            touchingOut[touching] = c;
+            touching += overlap;
+            colliding[a] |= static_cast<unsigned char>(overlap);
+            colliding[b] |= static_cast<unsigned char>(overlap);
         }
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
@@ -304,20 +353,25 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
         const double gapStart = (len - s) - vn0 * h;
         const double allowed = gapStart > 0.0 ? gapStart * inverseH : 0.0;
-        while (old < m_pairRows.size() &&
-               (m_pairRows[old].a < c.a || (m_pairRows[old].a == c.a && m_pairRows[old].b < c.b)))
+        while (old < oldCount && (oldBalls[old].a < c.a || (oldBalls[old].a == c.a && oldBalls[old].b < c.b)))
             ++old;
-        const double warm = (old < m_pairRows.size() && m_pairRows[old].a == c.a && m_pairRows[old].b == c.b)
-                                ? m_impulse[old]
-                                : 0.0;
-        m_spareRows.push_back({c.a, c.b, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)),
-                               static_cast<float>(allowed)});
-        m_spareImpulse.push_back(warm);
-        m_vn0.push_back(vn0);
+        const double warm =
+            (old < oldCount && oldBalls[old].a == c.a && oldBalls[old].b == c.b) ? oldImpulse[old] : 0.0;
+        const int ba = bodyFor(a), bb = bodyFor(b);
+        newRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
+        newBalls[count] = c;
+        newImpulse[count] = warm;
+        vn0s[count] = vn0;
+        ++count;
     }
+    if (speculative)
+        m_contacts.resize(touching);
     m_pairRows.swap(m_spareRows);
+    m_rowBalls.swap(m_spareBalls);
     m_impulse.swap(m_spareImpulse);
-    const std::size_t rowCount = m_pairRows.size();
+    m_rowCount = count;
+    const std::size_t rowCount = count;
+    const PairRow* rows = m_pairRows.data();
     double* impulse = m_impulse.data();
     clock.lap(m_profile.build);
 
@@ -338,7 +392,8 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
                 ++old;
             const double warm = (old < m_wallRows.size() && m_wallRows[old].key == key) ? m_wallRows[old].impulse : 0.0;
             const double w = inverseMass[i];
-            m_spareWalls.push_back({key, i, k, side, std::max(gap, 0.0) / h, w, side * v[2 * i + k], warm});
+            const int bi = bodyFor(static_cast<std::size_t>(i));
+            m_spareWalls.push_back({key, bi, k, side, std::max(gap, 0.0) / h, w, side * v[2 * i + k], warm});
         };
         // Nothing near a wall gets a row: a quick test on the largest margin first.
         for (int i = 0; i < n; ++i) {
@@ -365,28 +420,26 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     m_wallRows.swap(m_spareWalls);
     clock.lap(m_profile.wallScan);
 
-    m_velocityBefore = balls.velocity;
-
     auto applyPair = [&](const PairRow& row, double j) {
-        const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-        const double ja = inverseMass[a] * j, jb = inverseMass[b] * j;
-        v[2 * a] -= ja * row.nx;
-        v[2 * a + 1] -= ja * row.ny;
-        v[2 * b] += jb * row.nx;
-        v[2 * b + 1] += jb * row.ny;
+        Body& ba = body[row.a];
+        Body& bb = body[row.b];
+        const double ja = ba.w * j, jb = bb.w * j;
+        ba.v[0] -= ja * row.nx;
+        ba.v[1] -= ja * row.ny;
+        bb.v[0] += jb * row.nx;
+        bb.v[1] += jb * row.ny;
     };
     auto normalSpeed = [&](const PairRow& row) {
-        const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-        return (v[2 * b] - v[2 * a]) * row.nx + (v[2 * b + 1] - v[2 * a + 1]) * row.ny;
+        const Body& ba = body[row.a];
+        const Body& bb = body[row.b];
+        return (bb.v[0] - ba.v[0]) * row.nx + (bb.v[1] - ba.v[1]) * row.ny;
     };
-    auto wallSpeed = [&](const WallRow& row) -> double& {
-        return v[2 * static_cast<std::size_t>(row.ball) + static_cast<std::size_t>(row.axis)];
-    };
+    auto wallSpeed = [&](const WallRow& row) -> double& { return body[row.body].v[row.axis]; };
 
     // Warm start: last sub-step's impulse of every contact that is still there.
     for (std::size_t k = 0; k < rowCount; ++k)
         if (impulse[k] > 0.0)
-            applyPair(m_pairRows[k], impulse[k]);
+            applyPair(rows[k], impulse[k]);
     for (const WallRow& row : m_wallRows)
         if (row.impulse > 0.0)
             wallSpeed(row) -= row.side * row.w * row.impulse;
@@ -395,20 +448,20 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // they do not pull) is adjusted until it no longer approaches faster than
     // it may. After the first pass a contact is solved again only if one of
     // its balls changed speed by more than the tolerance since it was last
-    // solved (pass stamps per ball); the others would get no impulse worth
+    // solved (pass stamps per body); the others would get no impulse worth
     // having. The passes stop when no ball changed by more than that.
     const double tolerance = cs.relaxTolerance * restingSpeed;
     const int passes = std::max(1, cs.velocityPasses);
-    m_changed.assign(static_cast<std::size_t>(n), -1);
-    int* changed = m_changed.data();
     int made = 0;
     std::int64_t solves = 0;
     for (int pass = 0; pass < passes; ++pass) {
         bool moved = false;
         const int since = pass - 1;
         forEachInterleaved(rowCount, [&](std::size_t k) {
-            const PairRow& row = m_pairRows[k];
-            if (pass > 0 && changed[row.a] < since && changed[row.b] < since)
+            const PairRow& row = rows[k];
+            Body& ba = body[row.a];
+            Body& bb = body[row.b];
+            if (pass > 0 && ba.changed < since && bb.changed < since)
                 return;
             ++solves;
             const double total = std::max(impulse[k] - (normalSpeed(row) + row.allowed) * row.mass, 0.0);
@@ -416,26 +469,27 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             impulse[k] = total;
             applyPair(row, j);
             const double dj = std::abs(j);
-            if (dj * inverseMass[row.a] > tolerance) {
-                changed[row.a] = pass;
+            if (dj * ba.w > tolerance) {
+                ba.changed = pass;
                 moved = true;
             }
-            if (dj * inverseMass[row.b] > tolerance) {
-                changed[row.b] = pass;
+            if (dj * bb.w > tolerance) {
+                bb.changed = pass;
                 moved = true;
             }
         });
         for (WallRow& row : m_wallRows) {
-            if (pass > 0 && changed[row.ball] < since)
+            Body& bw = body[row.body];
+            if (pass > 0 && bw.changed < since)
                 continue;
-            double& vk = wallSpeed(row);
+            double& vk = bw.v[row.axis];
             const double into = row.side * vk;
             const double total = std::max(row.impulse + (into - row.allowed) / row.w, 0.0);
             const double j = total - row.impulse;
             row.impulse = total;
             vk -= row.side * row.w * j;
             if (std::abs(j) * row.w > tolerance) {
-                changed[row.ball] = pass;
+                bw.changed = pass;
                 moved = true;
             }
         }
@@ -445,7 +499,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     }
     m_lastPasses = made;
     if (m_profiling) {
-        m_profile.rows += static_cast<std::int64_t>(m_pairRows.size());
+        m_profile.rows += static_cast<std::int64_t>(rowCount);
         m_profile.solves += solves;
     }
     clock.lap(m_profile.velocity);
@@ -456,7 +510,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         const double vn0 = m_vn0[k];
         if (!(-vn0 > restingSpeed) || !(impulse[k] > 0.0))
             continue;
-        const PairRow& row = m_pairRows[k];
+        const PairRow& row = rows[k];
         const double total = std::max(impulse[k] + (-e * vn0 - normalSpeed(row)) * row.mass, 0.0);
         applyPair(row, total - impulse[k]);
         impulse[k] = total;
@@ -483,17 +537,18 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // The integrator moved the balls with their velocities before the
     // contacts acted; move them as if the contact impulses had acted at the
     // start of the sub-step (what a solver that runs between the velocity and
-    // the position update does), without crossing a wall.
-    const double* before = m_velocityBefore.data();
-    for (int i = 0; i < n; ++i) {
-        const double dx = (v[2 * i] - before[2 * i]) * h, dy = (v[2 * i + 1] - before[2 * i + 1]) * h;
+    // the position update does), without crossing a wall. The bodies only:
+    // the velocity of every other ball is what it was before the solve.
+    for (int k = 0; k < bodies; ++k) {
+        const double dx = (body[k].v[0] - velocity0[2 * k]) * h, dy = (body[k].v[1] - velocity0[2 * k + 1]) * h;
         if (dx == 0.0 && dy == 0.0)
             continue;
-        const Vec2 p(x[2 * i], x[2 * i + 1]);
+        BodyPosition& pk = position[k];
+        const Vec2 p(pk.x, pk.y);
         Vec2 q(p.x() + dx, p.y() + dy);
-        keepInsideWalls(p, q, radius[i], box, walls);
-        x[2 * i] = q.x();
-        x[2 * i + 1] = q.y();
+        keepInsideWalls(p, q, pk.r, box, walls);
+        pk.x = q.x();
+        pk.y = q.y();
     }
     clock.lap(m_profile.position);
 
@@ -503,21 +558,22 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
     for (int pass = 0; pass < std::max(1, cs.positionPasses); ++pass) {
         forEachInterleaved(rowCount, [&](std::size_t k) {
-            const PairRow& row = m_pairRows[k];
-            const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-            const double ra = radius[a], rb = radius[b];
+            const PairRow& row = rows[k];
+            BodyPosition& A = position[row.a];
+            BodyPosition& B = position[row.b];
+            const double ra = A.r, rb = B.r;
             const double allowed = cs.slop * std::min(ra, rb);
             const double reachAllowed = ra + rb - allowed; // centres closer than this get a push
-            const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+            const double dx = B.x - A.x, dy = B.y - A.y;
             if (!(dx * dx + dy * dy < reachAllowed * reachAllowed) || !(reachAllowed > 0.0))
                 return;
-            Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
+            Vec2 pa(A.x, A.y), pb(B.x, B.y);
             const double depth = ra + rb - std::sqrt(dx * dx + dy * dy);
             if (!(depth > allowed))
                 return;
             const double push = cs.correction * (depth - allowed);
             const Vec2 nrm(row.nx, row.ny);
-            const double wa = inverseMass[a], wb = inverseMass[b];
+            const double wa = A.w, wb = B.w;
             const double moveA = push * (wa / (wa + wb));
             const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
             if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
@@ -526,13 +582,38 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             } else {
                 pushApart(pa, pb, ra, rb, nrm, wa, wb, push, box, walls); // stops at the walls
             }
-            x[2 * a] = pa.x();
-            x[2 * a + 1] = pa.y();
-            x[2 * b] = pb.x();
-            x[2 * b + 1] = pb.y();
+            A.x = pa.x();
+            A.y = pa.y();
+            B.x = pb.x();
+            B.y = pb.y();
         });
     }
     clock.lap(m_profile.correction);
+
+    // Velocities and positions back to the balls, in ball order; every ball
+    // is without a body again. A ball without a body kept its velocity, so
+    // (v − v)·h moves it: nowhere, or to NaN when its velocity is not finite,
+    // as the position update always did.
+    for (int i = 0; i < n; ++i) {
+        const int k = bodyOf[i];
+        if (k >= 0) {
+            v[2 * i] = body[k].v[0];
+            v[2 * i + 1] = body[k].v[1];
+            x[2 * i] = position[k].x;
+            x[2 * i + 1] = position[k].y;
+            bodyOf[i] = -1;
+            continue;
+        }
+        const double dx = (v[2 * i] - v[2 * i]) * h, dy = (v[2 * i + 1] - v[2 * i + 1]) * h;
+        if (dx == 0.0 && dy == 0.0)
+            continue;
+        const Vec2 p(x[2 * i], x[2 * i + 1]);
+        Vec2 q(p.x() + dx, p.y() + dy);
+        keepInsideWalls(p, q, radius[i], box, walls);
+        x[2 * i] = q.x();
+        x[2 * i + 1] = q.y();
+    }
+    clock.lap(m_profile.position);
 }
 
 void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings,
