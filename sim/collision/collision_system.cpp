@@ -291,7 +291,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
         if (k < 0) {
             k = bodies++;
             bodyOf[i] = k;
-            body[k] = {{v[2 * i], v[2 * i + 1]}, inverseMass[i], -1, static_cast<int>(i)};
+            body[k] = {{v[2 * i], v[2 * i + 1]}, inverseMass[i], -1};
             velocity0[2 * k] = v[2 * i];
             velocity0[2 * k + 1] = v[2 * i + 1];
             position[k] = {x[2 * i], x[2 * i + 1], radius[i], inverseMass[i]};
@@ -539,16 +539,18 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // start of the sub-step (what a solver that runs between the velocity and
     // the position update does), without crossing a wall. The bodies only:
     // the velocity of every other ball is what it was before the solve.
-    for (int k = 0; k < bodies; ++k) {
-        const double dx = (body[k].v[0] - velocity0[2 * k]) * h, dy = (body[k].v[1] - velocity0[2 * k + 1]) * h;
+    auto moveBy = [&](double& px, double& py, double r, double dx, double dy) {
         if (dx == 0.0 && dy == 0.0)
-            continue;
-        BodyPosition& pk = position[k];
-        const Vec2 p(pk.x, pk.y);
+            return;
+        const Vec2 p(px, py);
         Vec2 q(p.x() + dx, p.y() + dy);
-        keepInsideWalls(p, q, pk.r, box, walls);
-        pk.x = q.x();
-        pk.y = q.y();
+        keepInsideWalls(p, q, r, box, walls);
+        px = q.x();
+        py = q.y();
+    };
+    for (int k = 0; k < bodies; ++k) {
+        BodyPosition& pk = position[k];
+        moveBy(pk.x, pk.y, pk.r, (body[k].v[0] - velocity0[2 * k]) * h, (body[k].v[1] - velocity0[2 * k + 1]) * h);
     }
     clock.lap(m_profile.position);
 
@@ -604,14 +606,7 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             bodyOf[i] = -1;
             continue;
         }
-        const double dx = (v[2 * i] - v[2 * i]) * h, dy = (v[2 * i + 1] - v[2 * i + 1]) * h;
-        if (dx == 0.0 && dy == 0.0)
-            continue;
-        const Vec2 p(x[2 * i], x[2 * i + 1]);
-        Vec2 q(p.x() + dx, p.y() + dy);
-        keepInsideWalls(p, q, radius[i], box, walls);
-        x[2 * i] = q.x();
-        x[2 * i + 1] = q.y();
+        moveBy(x[2 * i], x[2 * i + 1], radius[i], (v[2 * i] - v[2 * i]) * h, (v[2 * i + 1] - v[2 * i + 1]) * h);
     }
     clock.lap(m_profile.position);
 }

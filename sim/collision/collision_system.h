@@ -104,15 +104,17 @@ private:
     };
     // One ball that takes part in the solve (a body), gathered in the order
     // the rows first name it: the velocity the passes change, its inverse
-    // mass, the last velocity pass that changed it (−1: none) and the ball.
-    // 32 bytes, so a row update touches one cache line per ball instead of
-    // the velocity, the inverse mass and the pass stamp in three arrays; the
-    // velocities are written back to the balls after the passes.
+    // mass and the last velocity pass that changed it (−1: none). 32 bytes
+    // with padding, so a row update touches one cache line per ball instead
+    // of the velocity, the inverse mass and the pass stamp in three arrays;
+    // the velocities are written back to the balls after the passes
+    // (m_bodyOf maps a ball to its body).
     struct Body {
         double v[2];
         double w;
-        int changed, ball;
+        int changed;
     };
+    static_assert(sizeof(Body) == 32);
     // The same bodies for the position update and positional correction:
     // position, radius, inverse mass. Gathered with the bodies, beside their
     // velocities before the solve (m_bodyVelocity0, two per body).
