@@ -44,6 +44,7 @@ private slots:
     void columnStandsUnderGravity();
     void pileSettlesUnderGravity();
     void gravityFreeStepIsOnePass();
+    void restingSolverKeepsMomentumAndCentre();
 };
 
 // 2,000 balls in a box, 2d-impulse with e = 1, walls with e = 1, no gravity or
@@ -343,6 +344,67 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
     BallState g = w.balls();
     sys.step(g, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
     QVERIFY(sys.lastVelocityPasses() >= 2);
+}
+
+// The resting-contact solver (gravity on) only exchanges equal and opposite
+// impulses within pairs, moves each ball by its own change of velocity times
+// h, and pushes overlapping pairs apart in proportion to inverse mass
+// (m_a·Δx_a = −m_b·Δx_b). With the walls off, a collision stage therefore
+// changes neither the total momentum nor the centre of mass, and a ball
+// farther than 1.2 (r_a + r_b) from every other (beyond any speculative
+// margin, at most 10% of each radius) keeps its velocity and position to the
+// bit. The stage runs on its own (no integration), ten times on the same
+// balls, so each solve starts from the last one's state and warm start. The
+// masses differ (∝ r³, radii 3–6 px), so a ball's result written back to
+// another ball would show in the momentum.
+void TestCollisionWorld::restingSolverKeepsMomentumAndCentre()
+{
+    Scene s = boxOfBalls(800, 500.0, 500.0, Detection::Sweep, 0.9);
+    s.settings.walls = WallSettings{false, false, false, false, WallModel::Clamp, 1.0};
+    const World w(s);
+    BallState b = w.balls();
+    const int n = b.size();
+    auto isolatedBalls = [&] {
+        std::vector<int> out;
+        for (int i = 0; i < n; ++i) {
+            bool alone = true;
+            for (int j = 0; j < n && alone; ++j)
+                alone = j == i || (b.position.col(i) - b.position.col(j)).norm() > 1.2 * (b.radius[i] + b.radius[j]);
+            if (alone)
+                out.push_back(i);
+        }
+        return out;
+    };
+
+    const Vec2 p0 = b.velocity * b.mass;
+    const Vec2 c0 = b.position * b.mass;
+    const double momentumScale = (b.velocity.colwise().norm().transpose().array() * b.mass.array()).sum();
+    const double centreScale = 500.0 * b.mass.sum();
+    CollisionSystem sys;
+    double worstP = 0.0, worstC = 0.0;
+    std::size_t contacts = 0, untouched = 0;
+    for (int k = 0; k < 10; ++k) {
+        const std::vector<int> isolated = isolatedBalls();
+        const Matrix2X v0 = b.velocity, x0 = b.position;
+        sys.step(b, x0, s.settings.collisions, s.settings.box, s.settings.walls, 1.0 / 60.0, Vec2(0.0, 980.0));
+        if (k == 0)
+            QVERIFY(sys.lastVelocityPasses() >= 2); // later stages settle and may stop after one pass
+        contacts += sys.contacts().size();
+        worstP = std::max(worstP, (b.velocity * b.mass - p0).norm() / momentumScale);
+        worstC = std::max(worstC, (b.position * b.mass - c0).norm() / centreScale);
+        for (int i : isolated) {
+            QCOMPARE(b.velocity.col(i), v0.col(i));
+            QCOMPARE(b.position.col(i), x0.col(i));
+        }
+        untouched += isolated.size();
+    }
+    qInfo("resting solver, 10 stages: momentum change %.3g of sum m|v|, centre of mass change %.3g of the box "
+          "(%zu contacts, %zu isolated balls left alone)",
+          worstP, worstC, contacts, untouched);
+    QVERIFY(contacts > 1000); // the solver really had work
+    QVERIFY(untouched > 500);
+    QVERIFY2(worstP <= 1e-13, qPrintable(QString::number(worstP)));
+    QVERIFY2(worstC <= 1e-13, qPrintable(QString::number(worstC)));
 }
 
 QTEST_APPLESS_MAIN(TestCollisionWorld)
