@@ -380,6 +380,16 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
     // sub-step (so it is caught before it hits, not after), plus what it moved
     // away from the wall in this sub-step (a ball that just bounced off a wall
     // can be pushed back into it by the balls above).
+    //
+    // How fast it may still move towards the wall: the gap over h, less the
+    // speed it already leaves the wall with. The position update below moves
+    // a body by (v − v_before)·h, so a ball the wall stage has just sent away
+    // at speed u ends the sub-step gap − (v_wall + u)·h from the wall, where
+    // v_wall is its new speed towards it: it stays inside only for
+    // v_wall ≤ gap/h − u. With gap/h alone (the rule for a ball that comes
+    // in), the exact wall model's floor ball hopped: the solver let it fall at
+    // gap/h, the position update stopped it on the floor still moving into
+    // it, and the next wall stage bounced it up again, every sub-step.
     m_spareWalls.clear();
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
@@ -393,7 +403,9 @@ void CollisionSystem::solveResting(BallState& balls, double e, const BoxSettings
             const double warm = (old < m_wallRows.size() && m_wallRows[old].key == key) ? m_wallRows[old].impulse : 0.0;
             const double w = inverseMass[i];
             const int bi = bodyFor(static_cast<std::size_t>(i));
-            m_spareWalls.push_back({key, bi, k, side, std::max(gap, 0.0) / h, w, side * v[2 * i + k], warm});
+            const double into = side * v[2 * i + k];
+            const double allowed = std::max(std::max(gap, 0.0) / h + std::min(into, 0.0), 0.0);
+            m_spareWalls.push_back({key, bi, k, side, allowed, w, into, warm});
         };
         // Nothing near a wall gets a row: a quick test on the largest margin first.
         for (int i = 0; i < n; ++i) {
