@@ -42,6 +42,7 @@ private slots:
     void continuousWithExactWalls();
     void columnStandsUnderGravity_data();
     void columnStandsUnderGravity();
+    void pileSettlesUnderGravity_data();
     void pileSettlesUnderGravity();
     void gravityFreeStepIsOnePass();
     void restingSolverKeepsMomentumAndCentre();
@@ -269,14 +270,22 @@ void TestCollisionWorld::columnStandsUnderGravity()
     QVERIFY(allInside(w));
 }
 
+void TestCollisionWorld::pileSettlesUnderGravity_data()
+{
+    QTest::addColumn<int>("substeps");
+    QTest::newRow("1 sub-step") << 1;
+    QTest::newRow("8 sub-steps") << 8;
+}
+
 // 2,000 balls (r = 3–5 px) on a jittered grid filling 30% of a box, random
-// speeds, gravity, e = 0.9, one sub-step at 60 Hz (the bench's scene): after
-// 20 s the pile has settled. Its kinetic energy is a tiny share of the
+// speeds, gravity, e = 0.9, 60 Hz with 1 sub-step (the bench's scene) or 8:
+// after 20 s the pile has settled. Its kinetic energy is a tiny share of the
 // potential energy it started with, it is about as dense as packed discs
 // (a hexagonal packing has 3 contacts per ball), no pair overlaps by more than
 // 2% of the smaller radius, and every ball is inside the box.
 void TestCollisionWorld::pileSettlesUnderGravity()
 {
+    QFETCH(int, substeps);
     const int n = 2000;
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -299,6 +308,7 @@ void TestCollisionWorld::pileSettlesUnderGravity()
     }
     Scene s;
     s.settings.box = BoxSettings{side, side};
+    s.settings.time.substeps = substeps;
     s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
     s.settings.gravity.enabled = true;
     s.settings.collisions.detection = Detection::Grid;
@@ -322,14 +332,17 @@ void TestCollisionWorld::pileSettlesUnderGravity()
     const BallState& b = w.balls();
     QVERIFY(b.position.allFinite() && b.velocity.allFinite());
     const double ke = w.energy().kinetic;
-    const double perBall = double(w.lastStep().contacts) / n;
+    const double perBall = double(w.lastStep().contacts) / n / substeps; // the step counts every sub-step
     const double overlap = deepestOverlap(w);
     qInfo("after 20 s: KE / PE0 = %.3g, PE / PE0 = %.3f, %.2f contacts per ball, deepest overlap %.3g r",
           ke / pe0, potential(w) / pe0, perBall, overlap);
     QVERIFY2(ke <= 1e-3 * pe0, qPrintable(QString::number(ke / pe0)));
     QVERIFY2(perBall <= 4.0 && perBall >= 1.5, qPrintable(QString::number(perBall)));
-    QEXPECT_FAIL("", "a few pairs that met hard (faster than a speculative contact can see) stay deeply overlapped (~1.2 r)",
-                 Continue);
+    // Known gap at 1 sub-step (docs/performance.md, "Piles"): balls land at
+    // up to 3 radii per step, and the pairs that meet that hard stay deeply
+    // overlapped under the weight above them. 8 sub-steps meet the target.
+    if (substeps == 1)
+        QEXPECT_FAIL("", "1 sub-step: a few pairs that met hard stay deeply overlapped (~1.2 r)", Continue);
     QVERIFY2(overlap <= 0.02, qPrintable(QString::number(overlap)));
     QVERIFY(allInside(w));
 }
