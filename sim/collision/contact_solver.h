@@ -28,8 +28,10 @@
 // 3. The walls take part. A ball on an enabled wall (or so close that one
 //    sub-step of gravity would bring it there) is a contact with a partner of
 //    infinite mass: the passes stop it from moving into the wall faster than
-//    it can close the gap in one sub-step. This is how the floor holds the
-//    pile up; the wall stage itself is unchanged.
+//    it can close the gap in one sub-step (less the speed the wall stage has
+//    just sent it away with, since the position update adds only the change
+//    of velocity). This is how the floor holds the pile up; the wall stage
+//    itself is unchanged.
 // 4. Speculative contacts. A pair that does not touch yet but is closer than
 //    one sub-step of motion can close (each ball's radius grown by
 //    |v|·h + |g|·h², at most `speculative` of its radius) is a contact too,
