@@ -512,12 +512,13 @@ void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
     }
     if (const auto o = r.object(models, base, "collisions")) {
         const QString p = join(base, "collisions");
-        r.checkKeys(*o, p, {"detection", "response", "restitution", "continuous"});
+        r.checkKeys(*o, p, {"detection", "response", "restitution", "continuous", "resting"});
         s.collisions.response = sim::Response::Impulse2D; // present without a response: the correct one
         r.enumeration(*o, p, "detection", &sim::parseDetection, sim::detectionNames(), s.collisions.detection);
         r.enumeration(*o, p, "response", &sim::parseResponse, sim::responseNames(), s.collisions.response);
         r.number(*o, p, "restitution", range::kUnit, s.collisions.restitution);
         r.boolean(*o, p, "continuous", s.collisions.continuous);
+        r.boolean(*o, p, "resting", s.collisions.resting);
     }
 }
 

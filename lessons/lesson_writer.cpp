@@ -188,7 +188,8 @@ QByteArray modelsBlock(const sim::WorldSettings& s)
         return Fields{{"detection", str(sim::toString(c.detection))},
                       {"response", str(sim::toString(c.response))},
                       {"restitution", num(c.restitution)},
-                      {"continuous", c.continuous ? "true" : "false"}};
+                      {"continuous", c.continuous ? "true" : "false"},
+                      {"resting", c.resting ? "true" : "false"}};
     };
     // Like wind: response "none" is off; written when anything differs from the defaults.
     if (collisions(s.collisions) != collisions(d.collisions))

@@ -125,6 +125,10 @@ struct CollisionSettings {
     Response response = Response::None; ///< None: the collision stage is skipped entirely
     double restitution = 1.0;           ///< 1, ball–ball restitution e, [0, 1]
     bool continuous = false;            ///< find the time of impact inside the step
+    /// under gravity, 2d-impulse also solves resting contact (contact_solver.h:
+    /// several passes, a bounce threshold, speculative contacts), so piles stand;
+    /// false: the one textbook pass, as without gravity
+    bool resting = true;
 };
 
 enum class IntegratorKind { Euler, SemiImplicitEuler, Verlet, Rk4, Yoshida4, Rk45, Exact, Ias15 };

@@ -45,6 +45,7 @@ private slots:
     void pileSettlesUnderGravity_data();
     void pileSettlesUnderGravity();
     void gravityFreeStepIsOnePass();
+    void columnSinksWithOnePass();
     void restingSolverKeepsMomentumAndCentre();
 };
 
@@ -362,6 +363,54 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
     BallState g = w.balls();
     sys.step(g, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
     QVERIFY(sys.lastVelocityPasses() >= 2);
+    // With resting contacts switched off (collisions.resting: false), gravity
+    // changes nothing in the stage: the same one pass, to the bit.
+    CollisionSettings onePass = w.settings().collisions;
+    onePass.resting = false;
+    CollisionSystem fresh;
+    BallState o = w.balls();
+    fresh.step(o, start, onePass, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
+    QCOMPARE(fresh.lastVelocityPasses(), 0);
+    QVERIFY(o.position == b.position && o.velocity == b.velocity);
+}
+
+// What the resting-contact solver is for, as a student sees it when they
+// switch it off: the 20-ball column of columnStandsUnderGravity (clamp walls,
+// 1 sub-step) with one pass of 2d-impulse per step sinks into itself. The
+// push of gravity reaches one ball further down per pass, and positional
+// correction cannot hold the weight: after 10 s the column is well under
+// 90% of its 400 px (measured: 221.5 px), where the solver keeps it at 397 px.
+void TestCollisionWorld::columnSinksWithOnePass()
+{
+    const double r = 10.0, height = 600.0;
+    Scene s;
+    s.settings.box = BoxSettings{200.0, height};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.collisions.detection = Detection::Sweep;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    for (int i = 0; i < 20; ++i) {
+        Ball b;
+        b.radius = r;
+        b.position = Vec2(100.0, height - r - (2.0 * r + 1.0) * i);
+        s.balls.push_back(b);
+    }
+    auto heightAfter10s = [&](bool resting) -> double {
+        Scene t = s;
+        t.settings.collisions.resting = resting;
+        World w(t);
+        for (int step = 0; step < 600; ++step)
+            w.step();
+        const BallState& b = w.balls();
+        if (!b.position.allFinite())
+            return std::nan(""); // fails both checks below
+        return b.position.row(1).maxCoeff() - b.position.row(1).minCoeff() + 2.0 * r;
+    };
+    const double solved = heightAfter10s(true), onePass = heightAfter10s(false);
+    qInfo("column after 10 s: %.1f px with resting contacts, %.1f px with one pass", solved, onePass);
+    QVERIFY2(solved >= 0.98 * 400.0, qPrintable(QString::number(solved)));
+    QVERIFY2(onePass < 0.9 * 400.0, qPrintable(QString::number(onePass)));
 }
 
 // The resting-contact solver (gravity on) only exchanges equal and opposite

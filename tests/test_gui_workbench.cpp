@@ -150,6 +150,7 @@ const std::vector<ControlCase>& controlCases()
          FIELD(s.collisions.response)},
         {"ball_restitution", "ballRestitutionSpin", 0.5, 0.5, FIELD(s.collisions.restitution)},
         {"continuous", "continuousCheck", true, 1.0, FIELD(s.collisions.continuous)},
+        {"resting", "restingCheck", false, 0.0, FIELD(s.collisions.resting)},
         {"integrator", "integratorCombo", "rk45", indexOf<sim::IntegratorKind>(sim::integratorNames(), "rk45"),
          FIELD(s.time.integrator)},
         {"dt", "dtSpin", 5.0, 0.005, FIELD(s.time.dt)},
@@ -217,6 +218,7 @@ QString settingsDifference(const sim::WorldSettings& a, const sim::WorldSettings
     SAME(pointer.enabled) SAME(pointer.strength) SAME(pointer.maxAccel)
     SAME(speedLimit.enabled) SAME(speedLimit.max)
     SAME(collisions.detection) SAME(collisions.response) SAME(collisions.restitution) SAME(collisions.continuous)
+    SAME(collisions.resting)
 #undef SAME
     return {};
 }

@@ -122,6 +122,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
     COMPARE_ENUM(s.collisions.response, t.collisions.response);
     COMPARE_BITS(s.collisions.restitution, t.collisions.restitution);
     QCOMPARE(s.collisions.continuous, t.collisions.continuous);
+    QCOMPARE(s.collisions.resting, t.collisions.resting);
 
     QCOMPARE(a.scene.balls.size(), b.scene.balls.size());
     for (std::size_t i = 0; i < a.scene.balls.size(); ++i) {
@@ -293,7 +294,8 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     "homing": {"strength": 6},
     "pointer": {"strength": 1e6, "max_accel": 2500},
     "speed_limit": {"max": 700},
-    "collisions": {"detection": "grid", "response": "1d-elastic", "restitution": 0.5, "continuous": true}
+    "collisions": {"detection": "grid", "response": "1d-elastic", "restitution": 0.5, "continuous": true,
+                   "resting": false}
   },
   "balls": [{"x": 100, "y": 50, "vx": -3, "vy": 4, "r": 11, "mass": 2.5, "color": "#E05051"},
             {"x": 7, "y": 8}],
@@ -365,6 +367,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     COMPARE_ENUM(s.collisions.response, sim::Response::Elastic1D);
     QCOMPARE(s.collisions.restitution, 0.5);
     QVERIFY(s.collisions.continuous);
+    QVERIFY(!s.collisions.resting);
 
     QCOMPARE(l.scene.balls.size(), std::size_t{2});
     const sim::Ball& b = l.scene.balls[0];
@@ -486,6 +489,9 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("wrong type: bool")
         << minimal(R"("models": {"collisions": {"continuous": 1}})")
         << "t.json: models.collisions.continuous: expected true or false, got the number 1";
+    QTest::newRow("wrong type: resting")
+        << minimal(R"("models": {"collisions": {"resting": "yes"}})")
+        << "t.json: models.collisions.resting: expected true or false, got the string \"yes\"";
     QTest::newRow("wrong type: whole number") << minimal(R"("time": {"substeps": 1.5})")
                                               << "t.json: time.substeps: expected a whole number, got 1.5";
     QTest::newRow("out of range, open bound") << minimal(R"("time": {"dt": 0})")

@@ -44,7 +44,7 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("homing"), {"homing_strength"}},
         {QStringLiteral("pointer"), {"pointer_strength", "pointer_clamp"}},
         {QStringLiteral("speed_limit"), {"speed_limit"}},
-        {QStringLiteral("collisions"), {"detection", "response", "ball_restitution", "continuous"}},
+        {QStringLiteral("collisions"), {"detection", "response", "ball_restitution", "continuous", "resting"}},
         {QStringLiteral("walls"), {"wall_sides", "wall_model", "wall_restitution"}},
         {QStringLiteral("wall_model"), {"wall_model"}},
         {QStringLiteral("restitution"), {"wall_restitution", "ball_restitution"}},
@@ -245,6 +245,10 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     addSwitch(QStringLiteral("continuous"), QStringLiteral("continuousCheck"), tr("Continuous"),
               tr("Find the moment of impact inside the step"),
               [](const S& s) { return s.collisions.continuous; }, [](S& s, bool on) { s.collisions.continuous = on; });
+    addSwitch(QStringLiteral("resting"), QStringLiteral("restingCheck"), tr("Resting contacts"),
+              tr("Under gravity, solve the contacts of a pile several times per step so it stands; "
+                 "off: one pass, and a pile sinks into itself"),
+              [](const S& s) { return s.collisions.resting; }, [](S& s, bool on) { s.collisions.resting = on; });
 
     addSection(QStringLiteral("time"), tr("Time"));
     addTimeScale();

@@ -186,8 +186,8 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     const bool continuous = settings.continuous && startPositions.cols() == n;
     const double g = gravity.norm();
     const double restingSpeed = m_solver.restingFactor * g * dt;
-    const bool resting = settings.response == Response::Impulse2D && !continuous && restingSpeed > 0.0 &&
-                         std::isfinite(restingSpeed);
+    const bool resting = settings.resting && settings.response == Response::Impulse2D && !continuous &&
+                         restingSpeed > 0.0 && std::isfinite(restingSpeed);
     if (resting && m_solver.speculative > 0.0) {
         // Speculative contacts: every ball grown by the distance one sub-step
         // can bring it closer, |v|·h + |g|·h², at most `speculative` of its
