@@ -133,6 +133,8 @@ struct Row {
     double stepMs = std::nan("");
     double detectCpuMs = std::nan("");
     double stepCpuMs = std::nan("");
+    double onePassMs = std::nan("");    // the whole step with collisions.resting off, same warm state
+    double onePassCpuMs = std::nan("");
     std::int64_t pairsTested = 0;
     std::int64_t contacts = 0;
 };
@@ -146,11 +148,13 @@ std::vector<Row> runMainTable(const Options& o, std::ostream& out)
     out << "Box 30% full, radii 3-5 px, gravity 980 px/s^2, 2d-impulse e = 0.9, dt = 1/60 s, 1 sub-step.\n"
         << "Each world first runs 60 steps (1 s) so the balls are falling and piling up.\n"
         << "detect: CollisionSystem::detect on that state; step: World::step (forces, integration, walls,\n"
-        << "detection, response). Median of " << o.runs << " runs. brute and halved only up to N = " << o.bruteLimit
+        << "detection, response; under gravity 2d-impulse solves resting contacts). 1-pass: the same step\n"
+        << "with collisions.resting off (one textbook pass of 2d-impulse), from the same state. Median of " << o.runs
+        << " runs.\nbrute and halved only up to N = " << o.bruteLimit
         << " (at 100,000 one brute call is 10^10 tests, about 10 s).\n\n";
     out << std::left << std::setw(8) << "detector" << std::right << std::setw(9) << "N" << std::setw(13)
         << "detect ms" << std::setw(12) << "step ms" << std::setw(11) << "(cpu det" << std::setw(10) << "cpu step)"
-        << std::setw(14) << "pairs tested" << std::setw(10) << "contacts" << "\n";
+        << std::setw(12) << "1-pass cpu" << std::setw(14) << "pairs tested" << std::setw(10) << "contacts" << "\n";
     for (int n : o.sizes) {
         World warm(boxScene(n, 3.0, 5.0, 100.0, 0.9, Detection::Grid, 7));
         for (int k = 0; k < 60; ++k)
@@ -198,6 +202,23 @@ std::vector<Row> runMainTable(const Options& o, std::ostream& out)
             }
             row.stepMs = median(times);
             row.stepCpuMs = median(cpu);
+            // The same steps with one pass of 2d-impulse instead of the
+            // resting-contact solver, from the same warm state.
+            World single = warm;
+            ws.collisions.resting = false;
+            single.setSettings(ws);
+            times.clear();
+            cpu.clear();
+            for (int k = 0; k < runs + 1; ++k) {
+                const double c0 = threadCpuMilliseconds();
+                single.step();
+                if (k > 0) {
+                    times.push_back(single.lastStep().seconds * 1e3);
+                    cpu.push_back(threadCpuMilliseconds() - c0);
+                }
+            }
+            row.onePassMs = median(times);
+            row.onePassCpuMs = median(cpu);
             // Every detector finds the same pairs, so the runs (same number of
             // steps from the same state) are identical to the bit.
             if (!reference)
@@ -207,7 +228,8 @@ std::vector<Row> runMainTable(const Options& o, std::ostream& out)
             rows.push_back(row);
             out << std::left << std::setw(8) << toString(d) << std::right << std::setw(9) << n << std::fixed
                 << std::setprecision(3) << std::setw(13) << row.detectMs << std::setw(12) << row.stepMs
-                << std::setw(11) << row.detectCpuMs << std::setw(10) << row.stepCpuMs << std::setw(14) << row.pairsTested << std::setw(10) << row.contacts << "\n"
+                << std::setw(11) << row.detectCpuMs << std::setw(10) << row.stepCpuMs << std::setw(12)
+                << row.onePassCpuMs << std::setw(14) << row.pairsTested << std::setw(10) << row.contacts << "\n"
                 << std::flush;
         }
     }
@@ -244,8 +266,16 @@ void printTargets(const std::vector<Row>& rows, const Options& o, std::ostream& 
             << "x step (target >= 10x)\n";
     }
     if (std::find(o.sizes.begin(), o.sizes.end(), 100000) != o.sizes.end()) {
+        auto onePass = [&](Detection d) {
+            for (const Row& r : rows)
+                if (r.table == "main" && r.detection == d && r.n == 100000)
+                    return r.onePassCpuMs;
+            return std::nan("");
+        };
         out << std::setprecision(2) << "  whole step at 100000: grid " << findMs(rows, "main", Detection::Grid, 100000, true)
-            << " ms, sweep " << findMs(rows, "main", Detection::Sweep, 100000, true) << " ms (target <= 10 ms)\n";
+            << " ms, sweep " << findMs(rows, "main", Detection::Sweep, 100000, true)
+            << " ms with resting contacts; grid " << onePass(Detection::Grid) << " ms, sweep "
+            << onePass(Detection::Sweep) << " ms with one pass (target <= 10 ms)\n";
     }
 }
 
@@ -420,7 +450,8 @@ void runBandwidth(const std::vector<Row>& rows, const Options& o, std::ostream& 
 
 void writeCsv(const std::vector<Row>& rows, std::ostream& csv)
 {
-    csv << "table,detector,n,detect_ms,step_ms,detect_cpu_ms,step_cpu_ms,pairs_tested,contacts\n";
+    csv << "table,detector,n,detect_ms,step_ms,detect_cpu_ms,step_cpu_ms,pairs_tested,contacts,one_pass_ms,"
+           "one_pass_cpu_ms\n";
     for (const Row& r : rows) {
         csv << r.table << "," << toString(r.detection) << "," << r.n << ",";
         if (!std::isnan(r.detectMs))
@@ -434,7 +465,13 @@ void writeCsv(const std::vector<Row>& rows, std::ostream& csv)
         csv << ",";
         if (!std::isnan(r.stepCpuMs))
             csv << r.stepCpuMs;
-        csv << "," << r.pairsTested << "," << r.contacts << "\n";
+        csv << "," << r.pairsTested << "," << r.contacts << ",";
+        if (!std::isnan(r.onePassMs))
+            csv << r.onePassMs;
+        csv << ",";
+        if (!std::isnan(r.onePassCpuMs))
+            csv << r.onePassCpuMs;
+        csv << "\n";
     }
 }
 
