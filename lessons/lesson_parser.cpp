@@ -627,7 +627,7 @@ const QStringList& controlNames()
                                    "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn",
                                    // the switches of the stages that break something on purpose
                                    "middle_wall", "centre_only", "fully_inside", "per_frame", "random_accel",
-                                   "wind_compare", "point_clamp", "response", "detection", "time_scale"};
+                                   "wind_compare", "point_clamp", "response", "detection", "resting", "time_scale"};
     return names;
 }
 

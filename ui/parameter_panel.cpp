@@ -61,6 +61,7 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("point_clamp"), {"point_clamp"}},
         {QStringLiteral("response"), {"response"}},
         {QStringLiteral("detection"), {"detection"}},
+        {QStringLiteral("resting"), {"resting"}},
         {QStringLiteral("time_scale"), {"time_scale"}},
     };
     return rows;
