@@ -185,40 +185,33 @@ std::vector<Row> runMainTable(const Options& o, std::ostream& out)
             }
             row.detectMs = median(times);
             row.detectCpuMs = median(cpu);
-            // Whole steps, from a copy of the warm world.
+            // Whole steps, from a copy of the warm world: medians of the wall
+            // clock and of the thread's CPU time (the first step is dropped).
+            auto timeSteps = [&](World& world, double& wallMs, double& cpuMs) {
+                times.clear();
+                cpu.clear();
+                for (int k = 0; k < runs + 1; ++k) {
+                    const double c0 = threadCpuMilliseconds();
+                    world.step();
+                    if (k > 0) {
+                        times.push_back(world.lastStep().seconds * 1e3);
+                        cpu.push_back(threadCpuMilliseconds() - c0);
+                    }
+                }
+                wallMs = median(times);
+                cpuMs = median(cpu);
+            };
             World w = warm;
             WorldSettings ws = w.settings();
             ws.collisions.detection = d;
             w.setSettings(ws);
-            times.clear();
-            cpu.clear();
-            for (int k = 0; k < runs + 1; ++k) {
-                const double c0 = threadCpuMilliseconds();
-                w.step();
-                if (k > 0) {
-                    times.push_back(w.lastStep().seconds * 1e3);
-                    cpu.push_back(threadCpuMilliseconds() - c0);
-                }
-            }
-            row.stepMs = median(times);
-            row.stepCpuMs = median(cpu);
+            timeSteps(w, row.stepMs, row.stepCpuMs);
             // The same steps with one pass of 2d-impulse instead of the
             // resting-contact solver, from the same warm state.
             World single = warm;
             ws.collisions.resting = false;
             single.setSettings(ws);
-            times.clear();
-            cpu.clear();
-            for (int k = 0; k < runs + 1; ++k) {
-                const double c0 = threadCpuMilliseconds();
-                single.step();
-                if (k > 0) {
-                    times.push_back(single.lastStep().seconds * 1e3);
-                    cpu.push_back(threadCpuMilliseconds() - c0);
-                }
-            }
-            row.onePassMs = median(times);
-            row.onePassCpuMs = median(cpu);
+            timeSteps(single, row.onePassMs, row.onePassCpuMs);
             // Every detector finds the same pairs, so the runs (same number of
             // steps from the same state) are identical to the bit.
             if (!reference)
@@ -459,26 +452,20 @@ void writeCsv(const std::vector<Row>& rows, std::ostream& csv)
 {
     csv << "table,detector,n,detect_ms,step_ms,detect_cpu_ms,step_cpu_ms,pairs_tested,contacts,one_pass_ms,"
            "one_pass_cpu_ms\n";
+    // A time that was not measured (brute force above its limit) is an empty cell.
+    auto cell = [&](double ms) -> std::ostream& {
+        if (!std::isnan(ms))
+            csv << ms;
+        return csv;
+    };
     for (const Row& r : rows) {
         csv << r.table << "," << toString(r.detection) << "," << r.n << ",";
-        if (!std::isnan(r.detectMs))
-            csv << r.detectMs;
-        csv << ",";
-        if (!std::isnan(r.stepMs))
-            csv << r.stepMs;
-        csv << ",";
-        if (!std::isnan(r.detectCpuMs))
-            csv << r.detectCpuMs;
-        csv << ",";
-        if (!std::isnan(r.stepCpuMs))
-            csv << r.stepCpuMs;
-        csv << "," << r.pairsTested << "," << r.contacts << ",";
-        if (!std::isnan(r.onePassMs))
-            csv << r.onePassMs;
-        csv << ",";
-        if (!std::isnan(r.onePassCpuMs))
-            csv << r.onePassCpuMs;
-        csv << "\n";
+        cell(r.detectMs) << ",";
+        cell(r.stepMs) << ",";
+        cell(r.detectCpuMs) << ",";
+        cell(r.stepCpuMs) << "," << r.pairsTested << "," << r.contacts << ",";
+        cell(r.onePassMs) << ",";
+        cell(r.onePassCpuMs) << "\n";
     }
 }
 

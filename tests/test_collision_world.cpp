@@ -183,6 +183,28 @@ double deepestOverlap(const World& w)
     return worst;
 }
 
+// A column of 20 balls (r = 10 px) on the floor of a 200 × 600 px box, 1 px
+// apart, gravity on, 2d-impulse with e = 0.9 for balls and walls, sweep.
+Scene columnScene(WallModel walls, int substeps)
+{
+    const double r = 10.0, height = 600.0;
+    Scene s;
+    s.settings.box = BoxSettings{200.0, height};
+    s.settings.walls = WallSettings{true, true, true, true, walls, 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.time.substeps = substeps;
+    s.settings.collisions.detection = Detection::Sweep;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    for (int i = 0; i < 20; ++i) {
+        Ball b;
+        b.radius = r;
+        b.position = Vec2(100.0, height - r - (2.0 * r + 1.0) * i);
+        s.balls.push_back(b);
+    }
+    return s;
+}
+
 bool allInside(const World& w)
 {
     const BallState& b = w.balls();
@@ -215,21 +237,7 @@ void TestCollisionWorld::columnStandsUnderGravity()
     QFETCH(int, wallModel);
     QFETCH(int, substeps);
     const double r = 10.0, height = 600.0;
-    Scene s;
-    s.settings.box = BoxSettings{200.0, height};
-    s.settings.walls = WallSettings{true, true, true, true, static_cast<WallModel>(wallModel), 0.9};
-    s.settings.gravity.enabled = true;
-    s.settings.time.substeps = substeps;
-    s.settings.collisions.detection = Detection::Sweep;
-    s.settings.collisions.response = Response::Impulse2D;
-    s.settings.collisions.restitution = 0.9;
-    for (int i = 0; i < 20; ++i) {
-        Ball b;
-        b.radius = r;
-        b.position = Vec2(100.0, height - r - (2.0 * r + 1.0) * i);
-        s.balls.push_back(b);
-    }
-    World w(s);
+    World w(columnScene(static_cast<WallModel>(wallModel), substeps));
     double worstOverlap = 0.0;
     double intoFloor = 0.0; // fastest a ball on the floor ends a step moving into it, px/s
     for (int step = 0; step < 600; ++step) {
@@ -382,20 +390,8 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
 // 90% of its 400 px (measured: 221.5 px), where the solver keeps it at 397 px.
 void TestCollisionWorld::columnSinksWithOnePass()
 {
-    const double r = 10.0, height = 600.0;
-    Scene s;
-    s.settings.box = BoxSettings{200.0, height};
-    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
-    s.settings.gravity.enabled = true;
-    s.settings.collisions.detection = Detection::Sweep;
-    s.settings.collisions.response = Response::Impulse2D;
-    s.settings.collisions.restitution = 0.9;
-    for (int i = 0; i < 20; ++i) {
-        Ball b;
-        b.radius = r;
-        b.position = Vec2(100.0, height - r - (2.0 * r + 1.0) * i);
-        s.balls.push_back(b);
-    }
+    const double r = 10.0;
+    const Scene s = columnScene(WallModel::Clamp, 1);
     auto heightAfter10s = [&](bool resting) -> double {
         Scene t = s;
         t.settings.collisions.resting = resting;
