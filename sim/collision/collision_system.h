@@ -96,8 +96,9 @@ private:
     };
     // One ball on a wall: key 4·ball + 2·axis + (far side), its body, axis 0
     // (x) or 1 (y), side +1 (the wall at the box's far edge) or −1 (at 0), the
-    // speed towards the wall that closes the gap in one sub-step, inverse
-    // mass, speed towards the wall before the solve, total impulse.
+    // speed towards the wall it may keep (closes the gap by the end of the
+    // sub-step, never below 0), inverse mass, speed towards the wall before
+    // the solve, total impulse.
     struct WallRow {
         int key, body, axis;
         double side, allowed, w, into0, impulse;
