@@ -251,7 +251,7 @@ void TestCollisionWorld::columnStandsUnderGravity()
     }
     // A ball the solver leaves on the floor is not still moving into it: the
     // next wall stage would bounce it up again, every step (the exact wall
-    // model's floor ball did, at up to 140 px/s, and the column sank to 289 px).
+    // model's floor ball did, at up to 146 px/s, and the column sank to 289 px).
     // 1e-9 px/s leaves room for the rounding of the impulse sums (~1e-13).
     QVERIFY2(intoFloor <= 1e-9, qPrintable(QString::number(intoFloor)));
     const BallState& b = w.balls();
