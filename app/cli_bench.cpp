@@ -231,44 +231,42 @@ std::vector<Row> runMainTable(const Options& o, std::ostream& out)
 
 // The thread's CPU time where it was measured (the main table): on a shared
 // machine the wall clock also counts the time spent waiting for a core.
-double findMs(const std::vector<Row>& rows, const std::string& table, Detection d, int n, bool step)
+enum class Timed { Detect, Step, OnePass };
+
+double findMs(const std::vector<Row>& rows, const std::string& table, Detection d, int n, Timed what)
 {
     for (const Row& r : rows)
         if (r.table == table && r.detection == d && r.n == n) {
-            const double cpu = step ? r.stepCpuMs : r.detectCpuMs;
-            return std::isnan(cpu) ? (step ? r.stepMs : r.detectMs) : cpu;
+            const auto [cpu, wall] = what == Timed::Detect ? std::pair{r.detectCpuMs, r.detectMs}
+                                     : what == Timed::Step ? std::pair{r.stepCpuMs, r.stepMs}
+                                                           : std::pair{r.onePassCpuMs, r.onePassMs};
+            return std::isnan(cpu) ? wall : cpu;
         }
     return std::nan("");
 }
 
 void printTargets(const std::vector<Row>& rows, const Options& o, std::ostream& out)
 {
+    auto ms = [&](Detection d, int n, Timed what) { return findMs(rows, "main", d, n, what); };
     const int small = o.sizes.front(), large = o.sizes.back();
     out << "\nTargets (one core, thread CPU time):\n" << std::fixed << std::setprecision(1);
     for (Detection d : {Detection::Sweep, Detection::Grid}) {
-        const double det = findMs(rows, "main", d, large, false) / findMs(rows, "main", d, small, false);
-        const double stp = findMs(rows, "main", d, large, true) / findMs(rows, "main", d, small, true);
+        const double det = ms(d, large, Timed::Detect) / ms(d, small, Timed::Detect);
+        const double stp = ms(d, large, Timed::Step) / ms(d, small, Timed::Step);
         out << "  " << toString(d) << ": t(" << large << ")/t(" << small << ") = " << det << " detect, " << stp
             << " step (N ratio " << large / std::max(1, small) << ", target <= 150)\n";
     }
     if (std::find(o.sizes.begin(), o.sizes.end(), 4000) != o.sizes.end()) {
-        out << "  sweep vs brute at 4000: " << findMs(rows, "main", Detection::Brute, 4000, false) /
-                                                  findMs(rows, "main", Detection::Sweep, 4000, false)
-            << "x detect, "
-            << findMs(rows, "main", Detection::Brute, 4000, true) / findMs(rows, "main", Detection::Sweep, 4000, true)
+        out << "  sweep vs brute at 4000: "
+            << ms(Detection::Brute, 4000, Timed::Detect) / ms(Detection::Sweep, 4000, Timed::Detect) << "x detect, "
+            << ms(Detection::Brute, 4000, Timed::Step) / ms(Detection::Sweep, 4000, Timed::Step)
             << "x step (target >= 10x)\n";
     }
     if (std::find(o.sizes.begin(), o.sizes.end(), 100000) != o.sizes.end()) {
-        auto onePass = [&](Detection d) {
-            for (const Row& r : rows)
-                if (r.table == "main" && r.detection == d && r.n == 100000)
-                    return r.onePassCpuMs;
-            return std::nan("");
-        };
-        out << std::setprecision(2) << "  whole step at 100000: grid " << findMs(rows, "main", Detection::Grid, 100000, true)
-            << " ms, sweep " << findMs(rows, "main", Detection::Sweep, 100000, true)
-            << " ms with resting contacts; grid " << onePass(Detection::Grid) << " ms, sweep "
-            << onePass(Detection::Sweep) << " ms with one pass (target <= 10 ms)\n";
+        out << std::setprecision(2) << "  whole step at 100000: grid " << ms(Detection::Grid, 100000, Timed::Step)
+            << " ms, sweep " << ms(Detection::Sweep, 100000, Timed::Step) << " ms with resting contacts; grid "
+            << ms(Detection::Grid, 100000, Timed::OnePass) << " ms, sweep "
+            << ms(Detection::Sweep, 100000, Timed::OnePass) << " ms with one pass (target <= 10 ms)\n";
     }
 }
 
@@ -365,11 +363,18 @@ std::vector<Row> runPeerTable(const Options& o, std::ostream& out)
     const std::pair<int, std::pair<double, double>> peers[] = {
         {1000, {0.52, 10.0}}, {5000, {3.1, 100.0}}, {10000, {7.4, std::nan("")}}, {20000, {20.7, std::nan("")}}};
     for (int n : o.peerSizes) {
+        // grid and sweep with resting contacts, then sweep with one pass.
+        struct Run {
+            Detection detection;
+            bool resting;
+        };
+        const Run runs[] = {{Detection::Grid, true}, {Detection::Sweep, true}, {Detection::Sweep, false}};
         double ms[3] = {0, 0, 0};
-        int k = 0;
-        for (Detection d : {Detection::Grid, Detection::Sweep, Detection::Sweep}) {
+        for (int k = 0; k < 3; ++k) {
+            const Run& run = runs[k];
+            const Detection d = run.detection;
             Scene scene = boxScene(n, 5.0, 5.0, 0.0, 0.9, d, 3);
-            scene.settings.collisions.resting = k < 2;
+            scene.settings.collisions.resting = run.resting;
             World w(scene);
             const double c0 = threadCpuMilliseconds();
             std::int64_t contacts = 0;
@@ -378,16 +383,15 @@ std::vector<Row> runPeerTable(const Options& o, std::ostream& out)
                 contacts += w.lastStep().contacts;
             }
             ms[k] = (threadCpuMilliseconds() - c0) / o.peerSteps;
-            if (k == 2) { // the one-pass run goes beside the sweep's row
+            if (!run.resting) { // the one-pass run goes beside the sweep's row
                 rows.back().onePassMs = rows.back().onePassCpuMs = ms[k];
-                break;
+                continue;
             }
             Row row{"peer", d, n};
             row.stepMs = ms[k];
             row.contacts = contacts;
             row.pairsTested = w.totals().pairsTested;
             rows.push_back(row);
-            ++k;
         }
         auto fmt = [](double v) {
             std::ostringstream ss;
@@ -437,7 +441,7 @@ void runBandwidth(const std::vector<Row>& rows, const Options& o, std::ostream& 
     // each way), read radius and inverse mass (16 B): 80 B per ball.
     const double minimum = 80.0 * n;
     for (Detection d : {Detection::Grid, Detection::Sweep}) {
-        const double ms = findMs(rows, "main", d, n, true);
+        const double ms = findMs(rows, "main", d, n, Timed::Step);
         if (std::isnan(ms))
             continue;
         out << "  " << toString(d) << " step at N = " << n << ": " << std::setprecision(2) << ms
