@@ -236,8 +236,8 @@ void TestCollisionWorld::columnStandsUnderGravity()
 {
     QFETCH(int, wallModel);
     QFETCH(int, substeps);
-    const double r = 10.0, height = 600.0;
     World w(columnScene(static_cast<WallModel>(wallModel), substeps));
+    const double r = w.balls().radius[0], height = w.settings().box.height;
     double worstOverlap = 0.0;
     double intoFloor = 0.0; // fastest a ball on the floor ends a step moving into it, px/s
     for (int step = 0; step < 600; ++step) {
@@ -390,8 +390,8 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
 // 90% of its 400 px (measured: 221.5 px), where the solver keeps it at 397 px.
 void TestCollisionWorld::columnSinksWithOnePass()
 {
-    const double r = 10.0;
     const Scene s = columnScene(WallModel::Clamp, 1);
+    const double r = s.balls.front().radius;
     auto heightAfter10s = [&](bool resting) -> double {
         Scene t = s;
         t.settings.collisions.resting = resting;
