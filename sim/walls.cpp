@@ -1,5 +1,6 @@
 #include "walls.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -62,17 +63,25 @@ void mirrorAxis(const Axis& ax, double e, double& p, double& u)
         clampAxis(ax, e, p, u);
 }
 
-// Smallest t in [0, tMax] with p0 + u t + ½ a t² = wall, or NaN. Uses the
-// cancellation-free form of the quadratic formula: q = −½ (B + sign(B) √D),
-// roots q / A and C / q.
-double firstRoot(double p0, double u, double a, double wall, double tMax)
+// When does the ball touch `wall` while moving into it? The path is
+// p(t) = p0 + u t + ½ a t²; `into` is +1 for the high wall (moving into it
+// means dp/dt > 0) and −1 for the low wall. Returns the smallest such t in
+// [0, tMax], or NaN. A root at which the ball moves away from the wall is not
+// a contact: it is the moment the ball leaves the wall it has just bounced
+// off. A root with zero speed counts only when the acceleration presses the
+// ball into the wall (it rests there). The roots use the cancellation-free
+// form of the quadratic formula: q = −½ (B + sign(B) √D), roots q / A and C / q.
+double contactTime(double p0, double u, double a, double wall, double into, double tMax)
 {
     const double A = 0.5 * a;
     const double B = u;
     const double C = p0 - wall;
     double best = std::numeric_limits<double>::quiet_NaN();
     auto consider = [&](double t) {
-        if (t >= 0.0 && t <= tMax && !(t >= best))
+        if (!(t >= 0.0 && t <= tMax) || t >= best)
+            return;
+        const double towards = into * (u + a * t);
+        if (towards > 0.0 || (towards == 0.0 && into * a > 0.0))
             best = t;
     };
     if (A == 0.0) {
@@ -123,10 +132,25 @@ StepPath stepPath(IntegratorKind kind, double p0, double u0, double p1, double u
     }
 }
 
-// exact: find when the edge touches the wall along the step's path, reverse
-// the normal speed there (times e), and follow the path for the rest of the
-// step. A ball resting on the floor bounces many times a step with ever less
-// speed; after a few the remainder is tiny and the ball is set on the wall.
+// Most bounces the exact model follows along one axis in one step. Only a
+// ball crossing the box thousands of times a step with e just below 1 gets
+// here (e = 1 repeats and is skipped in whole cycles, e < 1 under a pull
+// towards the wall settles in closed form); it then stops at the wall it
+// last left, moving away, and loses the rest of the step's path but no energy.
+constexpr int kMaxBounces = 4096;
+
+// exact: find when the edge touches a wall along the step's path, reverse the
+// normal speed there (times e), and follow the path for the rest of the step,
+// as often as the ball meets a wall again. Two motions need more than that:
+//  * A ball pulled towards the wall it bounced off (gravity and the floor) with
+//    e < 1 bounces ever lower: after a bounce at speed s it comes back after
+//    2s/g, then after 2es/g, 2e²s/g, … All of these bounces together take
+//    2s / (g (1 − e)), a finite time. If that time ends inside the step, the
+//    ball has come to rest on the wall: it stays there with no normal speed.
+//  * With e = 1 nothing is lost, so the motion repeats: from one bounce at a
+//    wall to the next bounce at the same wall is one cycle of fixed length.
+//    Whole cycles are skipped at once, so a very fast ball costs no more than
+//    a slow one, and a hop of 0.01 px keeps hopping.
 void exactAxis(const Axis& ax, double e, const StepPath& path, double p0, double h, double& p, double& u,
                std::int64_t& hits)
 {
@@ -135,19 +159,30 @@ void exactAxis(const Axis& ax, double e, const StepPath& path, double p0, double
         ++hits;
         return;
     }
+    if (ax.lo == ax.hi) { // wedged between two walls: it cannot move along this axis
+        p = ax.lo;
+        hits += u != 0.0;
+        u = 0.0;
+        return;
+    }
     const double a = path.accel;
     double start = p0, speed = path.drift, left = h;
-    for (int bounce = 0; bounce < 16; ++bounce) {
+    int cycleWall = -1;      // the wall whose first bounce started the cycle (0 low, 1 high)
+    double cycleLeft = 0.0;  // s, time left in the step at that bounce
+    std::int64_t cycleHits = 0;
+    for (int bounce = 0; bounce < kMaxBounces; ++bounce) {
         // The integrator's end point is outside (that is why we are here); after
         // a bounce, the path's end point decides.
-        const double end = start + speed * left + 0.5 * a * left * left;
-        if (bounce > 0 && !outside(ax, end)) {
-            p = end;
-            u = speed + a * left + path.endKick;
-            return;
+        if (bounce > 0) {
+            const double end = start + speed * left + 0.5 * a * left * left;
+            if (!outside(ax, end)) {
+                p = end;
+                u = speed + a * left + path.endKick;
+                return;
+            }
         }
-        double tLo = ax.loOn ? firstRoot(start, speed, a, ax.lo, left) : std::nan("");
-        double tHi = ax.hiOn ? firstRoot(start, speed, a, ax.hi, left) : std::nan("");
+        const double tLo = ax.loOn ? contactTime(start, speed, a, ax.lo, -1.0, left) : std::nan("");
+        const double tHi = ax.hiOn ? contactTime(start, speed, a, ax.hi, +1.0, left) : std::nan("");
         const bool hitLo = !std::isnan(tLo) && (std::isnan(tHi) || tLo <= tHi);
         const double t = hitLo ? tLo : tHi;
         if (std::isnan(t)) { // the path and the integrator disagree: fall back
@@ -158,12 +193,43 @@ void exactAxis(const Axis& ax, double e, const StepPath& path, double p0, double
         const double hitSpeed = speed + a * t;
         start = hitLo ? ax.lo : ax.hi;
         speed = -e * hitSpeed;
-        left -= t;
+        left = std::max(0.0, left - t);
+        if (hitSpeed == 0.0) { // touching with no speed: resting on the wall, not a bounce
+            p = start;
+            u = 0.0;
+            return;
+        }
         ++hits;
+
+        // Pulled back towards this wall, and not reaching the other one?
+        const double pull = hitLo ? -a : a; // px/s², acceleration towards the wall just hit
+        const bool otherOn = hitLo ? ax.hiOn : ax.loOn;
+        if (pull > 0.0 && e < 1.0 && !(otherOn && speed * speed >= 2.0 * pull * (ax.hi - ax.lo))) {
+            const double settle = 2.0 * std::abs(speed) / (pull * (1.0 - e)); // s, all bounces to come
+            if (settle <= left) {
+                p = start;
+                u = 0.0;
+                return;
+            }
+        }
+        if (e == 1.0) {
+            const int wall = hitLo ? 0 : 1;
+            if (cycleWall < 0) {
+                cycleWall = wall;
+                cycleLeft = left;
+                cycleHits = hits;
+            } else if (wall == cycleWall && cycleLeft > left) {
+                const double period = cycleLeft - left;
+                const double cycles = std::min(std::floor(left / period), 1e15); // a count, not a physics limit
+                hits += static_cast<std::int64_t>(cycles) * (hits - cycleHits);
+                left = std::fmod(left, period);
+                cycleWall = 2; // skipped once; follow the rest bounce by bounce
+            }
+        }
     }
-    // Still bouncing after 16 bounces in one step: the ball is resting on the wall.
-    p = std::min(std::max(start, ax.lo), ax.hi);
-    u = 0.0;
+    // Out of bounces: at the wall it last left, moving away from it.
+    p = start;
+    u = speed + path.endKick;
 }
 
 } // namespace

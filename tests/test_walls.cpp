@@ -2,6 +2,8 @@
 
 #include "sim_test_util.h"
 
+#include "sim/names.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -56,6 +58,12 @@ private slots:
     void reverseTrapsBallsThatStartOutside();
     void middleWallKeepsSides();
     void centreOnlyLetsBallsSinkIn();
+    void exactFastBallFoldsIntoTheBox_data();
+    void exactFastBallFoldsIntoTheBox();
+    void exactTinyHopKeepsHopping();
+    void exactRestingBallStaysPut_data();
+    void exactRestingBallStaysPut();
+    void exactBouncesSettleAtTheClosedFormTime();
 };
 
 void TestWalls::exactKeepsHeight_data()
@@ -272,6 +280,165 @@ void TestWalls::centreOnlyLetsBallsSinkIn()
         }
         QCOMPARE(furthest, centreOnly ? 600.0 : 560.0);
     }
+}
+
+// Where a ball moving at constant speed u between two walls ends up: unfold
+// the walls into a line of mirrored boxes, move p0 + u t along it, fold back.
+// The folded motion has period 2L (L = hi − lo); in the first half of a
+// period the ball moves forwards, in the second half backwards.
+struct Folded {
+    double position;
+    double velocity;
+    std::int64_t hits;
+};
+Folded foldIntoBox(double p0, double u, double t, double lo, double hi)
+{
+    const double L = hi - lo;
+    const double unfolded = (p0 - lo) + u * t; // distance from lo along the unfolded line
+    const double periods = std::floor(unfolded / (2.0 * L));
+    const double phase = unfolded - periods * 2.0 * L; // in [0, 2L)
+    Folded f;
+    f.position = phase <= L ? lo + phase : hi - (phase - L);
+    f.velocity = phase <= L ? u : -u;
+    f.hits = static_cast<std::int64_t>(std::floor(std::abs(unfolded) / L) + (unfolded < 0 ? 1 : 0));
+    return f;
+}
+
+void TestWalls::exactFastBallFoldsIntoTheBox_data()
+{
+    QTest::addColumn<double>("vx");
+    QTest::addColumn<double>("vy");
+    QTest::newRow("1e5 along x (the issue's case)") << 1e5 << 0.0;
+    QTest::newRow("corner 1e5, 7e4") << 1e5 << 7e4;
+    QTest::newRow("corner -3e5, -2.5e5") << -3e5 << -2.5e5;
+    QTest::newRow("corner 1e9, -1.2345e8") << 1e9 << -1.2345e8;
+}
+
+// e = 1, no forces, exact walls: a ball fast enough to cross the box several
+// times in one step ends where the unfolded straight line puts it, with its
+// speed unchanged. Before the fix the exact model found the wall the ball
+// had just left at t = 0, "bounced" 16 times in no time and stopped the ball
+// dead (vx = 1e5 ended at x = 580 with vx = 0, kinetic energy ÷ 5e5).
+void TestWalls::exactFastBallFoldsIntoTheBox()
+{
+    QFETCH(double, vx);
+    QFETCH(double, vy);
+    for (IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Exact}) {
+        Scene s = dropScene(WallModel::Exact, 1.0, kind, 1.0 / 60);
+        s.settings.gravity.enabled = false;
+        s.balls = {ballAt(120, 60, vx, vy, 20)};
+        World w;
+        QVERIFY(!w.reset(s));
+        const int steps = 3;
+        for (int k = 0; k < steps; ++k)
+            w.step();
+        const double t = steps / 60.0;
+        const Folded fx = foldIntoBox(120, vx, t, 20, 580);
+        const Folded fy = foldIntoBox(60, vy, t, 20, 380);
+        const Vec2 p = w.balls().position.col(0), v = w.balls().velocity.col(0);
+        // Rounding of the bounce times grows with the number of bounces: 1e-12
+        // of the distance travelled.
+        const double tol = 1e-12 * std::max(std::abs(vx), std::abs(vy)) * t + 1e-9;
+        QVERIFY2(std::abs(p.x() - fx.position) <= tol && std::abs(p.y() - fy.position) <= tol,
+                 qPrintable(QString("%1: (%2, %3) expected (%4, %5)")
+                                .arg(toString(kind).data())
+                                .arg(p.x(), 0, 'g', 17)
+                                .arg(p.y(), 0, 'g', 17)
+                                .arg(fx.position, 0, 'g', 17)
+                                .arg(fy.position, 0, 'g', 17)));
+        QCOMPARE(v.x(), fx.velocity);
+        QCOMPARE(v.y(), fy.velocity);
+        QCOMPARE(w.totals().wallHits, fx.hits + fy.hits);
+    }
+}
+
+// A ball 0.01 px above the floor, at rest, e = 1: it falls 0.01 px, bounces
+// at √(2 g 0.01) = 4.43 px/s and keeps hopping 0.01 px high (a hop lasts
+// 9.0 ms, so about two a step). Before the fix the second bounce of a step
+// found the floor again at t = 0 and the ball was stopped.
+void TestWalls::exactTinyHopKeepsHopping()
+{
+    constexpr double hop = 0.01; // px
+    Scene s = dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, 1.0 / 60);
+    s.balls = {ballAt(300, kFloor - hop)};
+    World w;
+    QVERIFY(!w.reset(s));
+    double worst = 0;
+    for (int k = 0; k < 600; ++k) {
+        w.step();
+        worst = std::max(worst, std::abs(apexHeight(w) - hop));
+    }
+    const double period = 2.0 * std::sqrt(2.0 * hop / kG); // s, one hop
+    const double expectedHits = std::floor((10.0 - 0.5 * period) / period) + 1;
+    qInfo("after 10 s: %lld bounces (closed form %.0f), worst apex error %.3g px",
+          static_cast<long long>(w.totals().wallHits), expectedHits, worst);
+    QVERIFY2(worst <= 1e-9, qPrintable(QString::number(worst)));
+    QVERIFY(std::abs(static_cast<double>(w.totals().wallHits) - expectedHits) <= 1.0);
+}
+
+void TestWalls::exactRestingBallStaysPut_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<double>("restitution");
+    for (IntegratorKind kind : {IntegratorKind::Verlet, IntegratorKind::Rk4, IntegratorKind::Yoshida4,
+                                IntegratorKind::Exact, IntegratorKind::Rk45, IntegratorKind::Ias15}) {
+        for (double e : {1.0, 0.5, 0.0})
+            QTest::addRow("%s e=%g", toString(kind).data(), e) << int(kind) << e;
+    }
+}
+
+// A ball resting on the floor touches it with no speed: that is not a bounce.
+// It stays exactly where it is, with no vertical speed and no wall hits
+// (before the fix: 16 "hits" a step).
+void TestWalls::exactRestingBallStaysPut()
+{
+    QFETCH(int, integrator);
+    QFETCH(double, restitution);
+    Scene s = dropScene(WallModel::Exact, restitution, static_cast<IntegratorKind>(integrator), 1.0 / 60);
+    s.balls = {ballAt(300, kFloor)};
+    World w;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 600; ++k)
+        w.step();
+    QCOMPARE(w.balls().position(1, 0), kFloor);
+    QCOMPARE(w.balls().velocity(1, 0), 0.0);
+    QCOMPARE(w.totals().wallHits, std::int64_t(0));
+}
+
+// e = 0.8, dropped from H = 290 px: the k-th bounce's apex is e^(2k) H, and
+// the bounces get shorter in a geometric series that ends at
+// t∞ = t₀ (1 + e) / (1 − e), with t₀ = √(2H/g) the first fall (6.92 s here).
+// Every step until then keeps the apex law to 1e-12 H; from the first step
+// after t∞ the ball lies still on the floor. Before the fix the sequence
+// ended after bounce 22 (16 bounces in one step stopped the ball).
+void TestWalls::exactBouncesSettleAtTheClosedFormTime()
+{
+    constexpr double e = 0.8;
+    const double dt = 1.0 / 60;
+    World w;
+    QVERIFY(!w.reset(dropScene(WallModel::Exact, e, IntegratorKind::Exact, dt)));
+    const double H = apexHeight(w);
+    const double t0 = std::sqrt(2.0 * H / kG);
+    const double tRest = t0 * (1.0 + e) / (1.0 - e);
+    double worst = 0;
+    while (w.time() + dt < tRest) {
+        w.step();
+        const double k = static_cast<double>(w.totals().wallHits);
+        worst = std::max(worst, std::abs(apexHeight(w) - H * std::pow(e, 2.0 * k)) / H);
+        QVERIFY2(w.time() >= tRest - dt || w.balls().velocity(1, 0) != 0.0,
+                 qPrintable(QString("at rest too early, t = %1").arg(w.time())));
+    }
+    const std::int64_t bounces = w.totals().wallHits;
+    w.step(); // the step that contains t∞
+    QCOMPARE(w.balls().position(1, 0), kFloor);
+    QCOMPARE(w.balls().velocity(1, 0), 0.0);
+    for (int k = 0; k < 60; ++k)
+        w.step();
+    QCOMPARE(w.balls().position(1, 0), kFloor);
+    qInfo("t_rest = %.6f s; %lld bounces followed one by one; worst apex error %.3g H", tRest,
+          static_cast<long long>(w.totals().wallHits), worst);
+    QVERIFY2(worst <= 1e-12, qPrintable(QString::number(worst)));
+    QVERIFY(bounces > 22);
 }
 
 QTEST_APPLESS_MAIN(TestWalls)
