@@ -18,7 +18,15 @@
 // forward in time) makes two passes enough in smooth motion.
 //
 // The size of the last term, |b₆| / |a|, estimates the sub-step's error; the
-// next sub-step is Δt (ε / error)^(1/7), where ε is time.tolerance. Positions
+// next sub-step is Δt (ε / error)^(1/7), where ε is time.tolerance. Rounding
+// sets a floor under that estimate: b₆ is a seventh divided difference of
+// force values, so it magnifies their rounding about 4550 times, and far from
+// the origin the force values carry the rounding of large coordinates. A
+// tolerance below the floor cannot be met by any sub-step, however short, so
+// where the estimate is above ε the floor is measured (one extra force
+// evaluation) and, if it is higher, it stands in for ε; the world reports it.
+// A sub-step whose predictor–corrector does not converge (a stiff force, a
+// sub-step too long) is refused like one with a large error. Positions
 // and velocities are summed with compensated (Kahan) summation, so rounding
 // does not build up over millions of sub-steps.
 
@@ -47,7 +55,14 @@ public:
 private:
     // One try of a sub-step of length dt from (x, v) at time t. Leaves the
     // converged b's in m_b and returns the error estimate |b₆| / |a|.
+    // The returned error is at least the last pass's change of b₆ (a pass that
+    // has not settled is no better than that), and +∞ when anything is not
+    // finite.
     double trySubStep(const ForceModel& forces, const Matrix2X& x, const Matrix2X& v, double t, double dt);
+    // The smallest error estimate that still means something at (x, v): the
+    // rounding of the force values at the nodes, carried into |b₆| / |a|. Costs
+    // one force evaluation; needs m_a0 = a(x, v, t).
+    double roundingFloor(const ForceModel& forces, const Matrix2X& x, const Matrix2X& v, double t);
     void predict(double ratio);
     void acceptSubStep(Matrix2X& x, Matrix2X& v, double dt);
 

@@ -34,6 +34,10 @@ struct IntegratorStats {
     std::int64_t accepted = 0; ///< rk45 / ias15 sub-steps accepted
     std::int64_t rejected = 0; ///< rk45 / ias15 sub-steps rejected (error above tolerance)
     bool gaveUp = false;       ///< the sub-step budget ran out before the end of the step
+    /// ias15: the rounding floor it held the error to where the tolerance asked
+    /// for less than rounding allows (1, like the tolerance; 0: the tolerance held)
+    double toleranceFloor = 0.0;
+    std::int64_t roundingChecks = 0; ///< ias15: force evaluations spent measuring the rounding floor
 };
 
 class Integrator {

@@ -20,6 +20,8 @@ StepStats& StepStats::operator+=(const StepStats& o)
     contacts += o.contacts;
     acceptedSteps += o.acceptedSteps;
     rejectedSteps += o.rejectedSteps;
+    roundingChecks += o.roundingChecks;
+    toleranceFloor = std::max(toleranceFloor, o.toleranceFloor);
     seconds += o.seconds;
     return *this;
 }
@@ -453,6 +455,8 @@ void World::subStep(double h)
     m_last.forceEvaluations += forces.evaluations();
     m_last.acceptedSteps += integration.accepted;
     m_last.rejectedSteps += integration.rejected;
+    m_last.roundingChecks += integration.roundingChecks;
+    m_last.toleranceFloor = std::max(m_last.toleranceFloor, integration.toleranceFloor);
     m_last.wallHits += hits;
     m_last.pairsTested += collisions.pairsTested;
     m_last.contacts += collisions.contacts;

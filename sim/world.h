@@ -27,8 +27,12 @@ struct StepStats {
     std::int64_t wallHits = 0;         ///< ball–wall bounces
     std::int64_t pairsTested = 0;      ///< narrow-phase distance tests
     std::int64_t contacts = 0;         ///< ball–ball contacts found
-    std::int64_t acceptedSteps = 0;    ///< rk45 only
-    std::int64_t rejectedSteps = 0;    ///< rk45 only
+    std::int64_t acceptedSteps = 0;    ///< rk45 and ias15 only
+    std::int64_t rejectedSteps = 0;    ///< rk45 and ias15 only
+    std::int64_t roundingChecks = 0;   ///< ias15: force evaluations spent measuring its rounding floor
+    /// ias15: the largest rounding floor it worked to instead of a tolerance
+    /// below it (1, like time.tolerance; 0 when the tolerance held)
+    double toleranceFloor = 0.0;
     double seconds = 0.0;              ///< wall-clock time of the step
     StepStats& operator+=(const StepStats& o);
 };

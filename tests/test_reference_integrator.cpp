@@ -37,6 +37,13 @@ private slots:
     void toleranceTradesAccuracyForEvaluations();
     void forceEvaluationsAreCounted();
     void freeFallIsExact();
+    void tightTolerancesHoldAtTheRoundingFloor_data();
+    void tightTolerancesHoldAtTheRoundingFloor();
+    void farFromTheOrigin_data();
+    void farFromTheOrigin();
+    void springFarFromTheOrigin_data();
+    void springFarFromTheOrigin();
+    void stiffQuadraticDrag();
 };
 
 void TestReferenceIntegrator::names()
@@ -149,14 +156,17 @@ void TestReferenceIntegrator::forceEvaluationsAreCounted()
         const StepStats& s = world.lastStep();
         const std::int64_t tries = s.acceptedSteps + s.rejectedSteps;
         QVERIFY(tries >= 1);
-        // Each try: 1 + 7 × passes, passes between 1 and 12.
-        QVERIFY(s.forceEvaluations >= 8 * tries);
-        QVERIFY(s.forceEvaluations <= (1 + 7 * 12) * tries);
-        QCOMPARE((s.forceEvaluations - tries) % 7, std::int64_t(0));
+        // Each try: 1 + 7 × passes, passes between 1 and 12, plus one for each
+        // measurement of the rounding floor.
+        const std::int64_t evaluations = s.forceEvaluations - s.roundingChecks;
+        QVERIFY(s.roundingChecks <= tries);
+        QVERIFY(evaluations >= 8 * tries);
+        QVERIFY(evaluations <= (1 + 7 * 12) * tries);
+        QCOMPARE((evaluations - tries) % 7, std::int64_t(0));
     }
     const StepStats& t = world.totals();
     const std::int64_t tries = t.acceptedSteps + t.rejectedSteps;
-    const double passes = double(t.forceEvaluations - tries) / (7.0 * double(tries));
+    const double passes = double(t.forceEvaluations - t.roundingChecks - tries) / (7.0 * double(tries));
     qInfo("one orbit at dt = P/64: %lld evaluations, %lld sub-steps, %.2f passes per sub-step",
           static_cast<long long>(t.forceEvaluations), static_cast<long long>(tries), passes);
     // With the polynomial carried from sub-step to sub-step, two or three
@@ -179,6 +189,147 @@ void TestReferenceIntegrator::freeFallIsExact()
     const double t = world.time();
     const Vec2 expected(100.0 + 30.0 * t, 50.0 - 200.0 * t + 0.5 * 980.0 * t * t);
     QVERIFY((world.balls().position.col(0) - expected).norm() <= 1e-12 * expected.norm());
+}
+
+void TestReferenceIntegrator::tightTolerancesHoldAtTheRoundingFloor_data()
+{
+    QTest::addColumn<double>("tolerance");
+    QTest::addColumn<bool>("belowFloor");
+    QTest::newRow("1e-9") << 1e-9 << false;
+    QTest::newRow("1e-12") << 1e-12 << true;
+    QTest::newRow("1e-13") << 1e-13 << true;
+    QTest::newRow("1e-14") << 1e-14 << true;
+    QTest::newRow("1e-15") << 1e-15 << true;
+}
+
+// The e = 0.5 orbit, 10 orbits at dt = P/16, at tolerances down to the
+// smallest the settings allow. Rounding puts a floor of about 1e-11 under
+// ias15's error estimate here, so a tighter tolerance cannot be met by any
+// sub-step: before, the sub-steps shrank to 1e-16 s and the run stopped after
+// 0.008 s ("needed more than 100000 sub-steps"). Now the floor stands in for
+// the tolerance, the world reports it, and the orbit is as accurate as
+// rounding allows: within 1e-12 a per orbit of Kepler's equation.
+void TestReferenceIntegrator::tightTolerancesHoldAtTheRoundingFloor()
+{
+    QFETCH(double, tolerance);
+    QFETCH(bool, belowFloor);
+    const Kepler kepler;
+    World world;
+    QVERIFY(!world.reset(kepler.scene(IntegratorKind::Ias15, 1.0 / 16, tolerance)));
+    for (int k = 0; k < 160; ++k)
+        world.step();
+    QVERIFY2(!world.halted(), world.halted() ? world.halted()->c_str() : "");
+    const double relative = (world.balls().position.col(0) - kepler.position(world.time())).norm() / kepler.a;
+    const double floor = world.totals().toleranceFloor;
+    qInfo("tolerance %.0e: |x - x_Kepler| / a = %.3g after 10 orbits, %lld evaluations, floor used %.3g", tolerance,
+          relative, static_cast<long long>(world.totals().forceEvaluations), floor);
+    QVERIFY2(relative <= 1e-12 * 10, qPrintable(QString::number(relative)));
+    if (belowFloor) {
+        QVERIFY(floor > tolerance);
+        QVERIFY(floor < 1e-9); // the floor is rounding, not a giving-up
+    } else {
+        QCOMPARE(floor, 0.0);
+    }
+}
+
+void TestReferenceIntegrator::farFromTheOrigin_data()
+{
+    QTest::addColumn<double>("focus");
+    QTest::newRow("300") << 300.0;
+    QTest::newRow("1e5") << 1e5;
+    QTest::newRow("1e6") << 1e6;
+    QTest::newRow("1e7") << 1e7;
+}
+
+// The same orbit with its focus moved far from the origin. Physics does not
+// care where the origin is; only the rounding of the coordinates grows, by
+// ε |focus| per operation. Before, the cost grew with the distance (2,364
+// evaluations an orbit at 300, 3,060 at 1e5) and at 1e6 the run stopped at
+// t = 0. Now every distance runs, costs within 1.5× of the orbit at 300, and
+// is as accurate as its coordinates' rounding allows: within
+// (1e-12 + 50 ε |focus| / a) per orbit, relative to a.
+void TestReferenceIntegrator::farFromTheOrigin()
+{
+    QFETCH(double, focus);
+    constexpr int kOrbits = 10;
+    auto run = [](double at, std::int64_t& evaluations) {
+        Kepler kepler;
+        kepler.focus = Vec2(at, 200.0);
+        World world;
+        if (world.reset(kepler.scene(IntegratorKind::Ias15, 1.0 / 16)))
+            return -1.0;
+        for (int k = 0; k < 16 * kOrbits && !world.halted(); ++k)
+            world.step();
+        evaluations = world.totals().forceEvaluations;
+        if (world.halted())
+            return -1.0;
+        return (world.balls().position.col(0) - kepler.position(world.time())).norm() / kepler.a;
+    };
+    std::int64_t near = 0, far = 0;
+    QVERIFY(run(300.0, near) >= 0.0);
+    const double relative = run(focus, far);
+    QVERIFY2(relative >= 0.0, "halted");
+    const double bound = kOrbits * (1e-12 + 50.0 * std::numeric_limits<double>::epsilon() * focus / 100.0);
+    qInfo("focus at %.0e: |x - x_Kepler| / a = %.3g (bound %.3g), %lld evaluations an orbit (%lld at 300)", focus,
+          relative, bound, static_cast<long long>(far / kOrbits), static_cast<long long>(near / kOrbits));
+    QVERIFY2(relative <= bound, qPrintable(QString::number(relative)));
+    QVERIFY(double(far) <= 1.5 * double(near));
+}
+
+void TestReferenceIntegrator::springFarFromTheOrigin_data()
+{
+    QTest::addColumn<double>("anchor");
+    QTest::newRow("400") << 400.0;
+    QTest::newRow("1e5") << 1e5;
+    QTest::newRow("1e7") << 1e7;
+}
+
+// A spring of k = 100 (ω = 10 rad/s) anchored at x = anchor, amplitude
+// 100 px, 10 s: x(t) = anchor + 100 cos(ω t). Before, an anchor at 1e5 stopped
+// the run after 0.15 s. Within 1e-9 px plus the rounding of the anchor's
+// coordinate (ε |anchor| per step).
+void TestReferenceIntegrator::springFarFromTheOrigin()
+{
+    QFETCH(double, anchor);
+    Scene s = openScene({ballAt(anchor + 100.0, 200.0)});
+    s.settings.spring = SpringSettings{true, Vec2(anchor, 200.0), 100.0};
+    s.settings.time.integrator = IntegratorKind::Ias15;
+    s.settings.time.dt = 1.0 / 60;
+    World world;
+    QVERIFY(!world.reset(s));
+    for (int k = 0; k < 600; ++k)
+        world.step();
+    QVERIFY2(!world.halted(), world.halted() ? world.halted()->c_str() : "");
+    const double expected = anchor + 100.0 * std::cos(10.0 * world.time());
+    const double error = std::abs(world.balls().position(0, 0) - expected);
+    const double bound = 1e-9 + 600 * std::numeric_limits<double>::epsilon() * anchor;
+    qInfo("anchor %.0e: error %.3g px (bound %.3g)", anchor, error, bound);
+    QVERIFY2(error <= bound, qPrintable(QString::number(error)));
+}
+
+// Quadratic drag k = 1 /px on a ball at 10⁴ px/s: dv/dt = −k v², so
+// v(t) = v₀ / (1 + k v₀ t) and x(t) = x₀ + ln(1 + k v₀ t) / k. The time scale
+// 1/(k v₀) = 0.1 ms is 170 times shorter than the step: the predictor–corrector
+// cannot converge over a whole step and the sub-steps must shrink. Before,
+// the diverged first try was taken (its NaN slipped past Eigen's maxCoeff) and
+// the run stopped at t = 0. Both within 1e-12 relative at t = 1 s.
+void TestReferenceIntegrator::stiffQuadraticDrag()
+{
+    Scene s = openScene({ballAt(100.0, 200.0, 1e4, 0.0)});
+    s.settings.drag = DragSettings{true, DragLaw::Quadratic, 1.0};
+    s.settings.time.integrator = IntegratorKind::Ias15;
+    s.settings.time.dt = 1.0 / 60;
+    World world;
+    QVERIFY(!world.reset(s));
+    for (int k = 0; k < 60; ++k)
+        world.step();
+    QVERIFY2(!world.halted(), world.halted() ? world.halted()->c_str() : "");
+    const double t = world.time(), kv0 = 1e4;
+    const double v = 1e4 / (1.0 + kv0 * t), x = 100.0 + std::log1p(kv0 * t);
+    qInfo("t = %.4g s: vx = %.10g (exact %.10g), x = %.12g (exact %.12g)", t, world.balls().velocity(0, 0), v,
+          world.balls().position(0, 0), x);
+    QVERIFY(std::abs(world.balls().velocity(0, 0) - v) <= 1e-12 * v);
+    QVERIFY(std::abs(world.balls().position(0, 0) - x) <= 1e-12 * x);
 }
 
 QTEST_APPLESS_MAIN(TestReferenceIntegrator)
