@@ -64,9 +64,12 @@ void addHoming(const HomingSettings& s, const Matrix2X& home, const Matrix2X& x,
     a.noalias() += s.strength * (home - x);
 }
 
-// Mutual gravity: F = G m_i m_j / (r² + ε²) along the line between centres.
-// Each pair is computed once and applied to both balls with opposite signs, so
-// total momentum is conserved to rounding. Coincident centres add nothing.
+// Mutual gravity: F = G m_i m_j r⃗ / (r² + ε²)^(3/2) along the line between
+// centres (Plummer softening). For r ≫ ε it is G m_i m_j / r²; near r = 0 it
+// falls smoothly to zero instead of flipping direction at full strength, so a
+// head-on pass through a softened pair has no kink for the step to miss.
+// Each pair is computed once and applied to both balls with opposite signs,
+// so total momentum is conserved to rounding. Coincident centres add nothing.
 void addMutualGravity(const MutualGravitySettings& s, const VectorX& mass, const Matrix2X& x, Matrix2X& a)
 {
     const Eigen::Index n = x.cols();
@@ -79,8 +82,9 @@ void addMutualGravity(const MutualGravitySettings& s, const VectorX& mass, const
             const double r2 = d.squaredNorm();
             if (r2 == 0.0)
                 continue;
-            // G / (r² + ε²) / r: the force per unit mass of each partner, divided by r to normalise d.
-            const double f = s.G / ((r2 + eps2) * std::sqrt(r2));
+            // G / (r² + ε²)^(3/2): the force per unit mass of each partner per px of d.
+            const double s2 = r2 + eps2;
+            const double f = s.G / (s2 * std::sqrt(s2));
             ai += (f * mass[j]) * d;
             a.col(j) -= (f * mass[i]) * d;
         }
@@ -88,15 +92,12 @@ void addMutualGravity(const MutualGravitySettings& s, const VectorX& mass, const
     }
 }
 
-// Potential of one mutual-gravity pair: U(r) with dU/dr = G m₁ m₂ / (r² + ε²)
-// and U(∞) = 0, which is −(G m₁ m₂ / ε) atan(ε / r); for ε = 0 it is −G m₁ m₂ / r.
+// Potential of one mutual-gravity pair: U(r) = −G m₁ m₂ / √(r² + ε²), whose
+// derivative is the Plummer force above, with U(∞) = 0.
 double mutualPairPotential(double G, double eps, double m1m2, double r)
 {
-    if (eps == 0.0)
-        return r == 0.0 ? 0.0 : -G * m1m2 / r;
-    if (r == 0.0)
-        return -G * m1m2 / eps * (0.5 * std::numbers::pi);
-    return -G * m1m2 / eps * std::atan(eps / r);
+    const double s2 = r * r + eps * eps;
+    return s2 == 0.0 ? 0.0 : -G * m1m2 / std::sqrt(s2);
 }
 
 } // namespace

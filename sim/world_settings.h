@@ -98,7 +98,7 @@ struct SpringSettings {
 struct MutualGravitySettings {
     bool enabled = false;
     double G = 1000.0;     ///< px³/(mass·s²); negative pushes every pair apart
-    double softening = 0.0; ///< px, ε in F = G m₁ m₂ / (r² + ε²)
+    double softening = 0.0; ///< px, ε in F = G m₁ m₂ r / (r² + ε²)^(3/2) (Plummer: smooth at r = 0)
 };
 
 struct HomingSettings {

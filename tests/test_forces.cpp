@@ -167,15 +167,22 @@ void TestForces::homing()
 
 void TestForces::mutualGravityPair()
 {
-    // F = G m1 m2 / (r² + ε²): G = 1000, m1 = 2, m2 = 6, r = 10, ε = 0 →
+    // F = G m1 m2 r / (r² + ε²)^(3/2): G = 1000, m1 = 2, m2 = 6, r = 10, ε = 0 →
     // a1 = G m2 / r² = 60 towards ball 2, a2 = G m1 / r² = 20 towards ball 1.
     Scene s = openScene({ballAt(0, 0, 0, 0, 1, 2), ballAt(10, 0, 0, 0, 1, 6)});
     s.settings.mutualGravity = MutualGravitySettings{true, 1000.0, 0.0};
     QCOMPARE_VEC(accelerationOf(s, 0), Vec2(60, 0));
     QCOMPARE_VEC(accelerationOf(s, 1), Vec2(-20, 0));
-    // Softening ε = 10: r² + ε² = 200, so half as much.
+    // Plummer softening ε = 10: r / (r² + ε²)^(3/2) = 10 / 200^(3/2), which is
+    // 1/(2√2) of 1/r²: a1 = 60 / (2√2) = 21.2132.
     s.settings.mutualGravity.softening = 10.0;
-    QCOMPARE_VEC(accelerationOf(s, 0), Vec2(30, 0));
+    QCOMPARE_VEC(accelerationOf(s, 0), Vec2(60.0 / (2.0 * std::sqrt(2.0)), 0));
+    // At r = 0.01 ≪ ε the pull fades to almost nothing instead of staying at
+    // G m2 / ε² (which the old law kept, flipping its direction through r = 0):
+    // G m2 r / ε³ = 1000 · 6 · 0.01 / 1000 = 0.06 (to 1e-5 relative).
+    Scene close = openScene({ballAt(0, 0, 0, 0, 1, 2), ballAt(0.01, 0, 0, 0, 1, 6)});
+    close.settings.mutualGravity = MutualGravitySettings{true, 1000.0, 10.0};
+    QVERIFY(std::abs(accelerationOf(close, 0).x() - 0.06) <= 1e-5 * 0.06);
 }
 
 // Each pair is computed once and applied to both with opposite signs: total

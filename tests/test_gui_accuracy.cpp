@@ -229,10 +229,13 @@ void GuiAccuracyTest::twinShowsChaosInThreeBodies()
     QCOMPARE(c->ghost()->settings().time.integrator, c->world().settings().time.integrator);
     const double start = c->ghostSeparation();
     QVERIFY(start > 0.0 && start < 1e-9);
-    runFor(c, 10.0);
-    QVERIFY(std::abs(c->world().time() - 10.0) < 1e-9);
+    // With Plummer softening the pull is smooth, so the growth is the
+    // physics' own: the twin's 1e-10 px measured 3.1e-7 px by 20 s and
+    // 4.9e-4 px (×4.9e6) by 30 s.
+    runFor(c, 30.0);
+    QVERIFY(std::abs(c->world().time() - 30.0) < 1e-9);
     const double end = c->ghostSeparation();
-    qInfo("three bodies: twin separation %.3g px at 0 s, %.3g px at 10 s", start, end);
+    qInfo("three bodies: twin separation %.3g px at 0 s, %.3g px at 30 s", start, end);
     QVERIFY(end > 1e6 * start); // a tenth of a nanometre becomes visible
 }
 

@@ -352,7 +352,10 @@ void TestLessonsForcesCollisions::threeBodiesIntegratorChangesOutcome()
         QCOMPARE(ball.velocity.norm(), 0.0);
     sim::World wa(a), wb(b);
     double earlyDiff = 0.0, worstP = 0.0;
-    for (int s = 1; s <= 600; ++s) {
+    // Plummer softening makes the close approaches smooth, so the two runs
+    // part more slowly than with a kinked pull: measured 37.5 px apart at
+    // 10 s; 20 s is used.
+    for (int s = 1; s <= 1200; ++s) {
         wa.step();
         wb.step();
         worstP = std::max({worstP, wa.momentum().norm() / momentumScale(wa.balls()),
@@ -361,7 +364,7 @@ void TestLessonsForcesCollisions::threeBodiesIntegratorChangesOutcome()
             earlyDiff = (wa.balls().position - wb.balls().position).colwise().norm().maxCoeff();
     }
     const double lateDiff = (wa.balls().position - wb.balls().position).colwise().norm().maxCoeff();
-    qInfo("20: largest position difference semi-implicit-euler vs rk4 after 1 s %.3g px, after 10 s %.1f px; worst "
+    qInfo("20: largest position difference semi-implicit-euler vs rk4 after 1 s %.3g px, after 20 s %.1f px; worst "
           "|p| / sum m|v| %.3g",
           earlyDiff, lateDiff, worstP);
     QVERIFY(earlyDiff < 2.0);
