@@ -2,6 +2,7 @@
 // A world: balls, the settings that act on them, and the step that moves them.
 
 #include "ball_state.h"
+#include "close_pass.h"
 #include "collision/collision_system.h"
 #include "force_model.h"
 #include "integrators.h"
@@ -106,6 +107,7 @@ private:
     void drawStepRandomness();
     void spawnOverTime();
     bool blewUp() const;
+    std::string explainBlowUp(double subStep, const std::optional<ClosePass>& unresolved) const;
 
     WorldSettings m_settings;
     BallState m_balls;
