@@ -1,6 +1,9 @@
 #include "names.h"
 
+#include "integrator_info.h"
+
 #include <array>
+#include <vector>
 
 namespace forcelab::sim {
 namespace {
@@ -13,7 +16,6 @@ constexpr std::array<std::string_view, 3> kForceScales{"none", "radius", "mass"}
 constexpr std::array<std::string_view, 2> kPointKinds{"attract", "repel"};
 constexpr std::array<std::string_view, 4> kDetections{"brute", "halved", "sweep", "grid"};
 constexpr std::array<std::string_view, 6> kResponses{"none", "flag", "1d-reverse", "1d-elastic", "2d-axis", "2d-impulse"};
-constexpr std::array<std::string_view, 8> kIntegrators{"euler", "semi-implicit-euler", "verlet", "rk4", "yoshida4", "rk45", "exact", "ias15"};
 
 template <typename E, std::size_t N>
 std::optional<E> lookup(const std::array<std::string_view, N>& table, std::string_view name)
@@ -33,7 +35,7 @@ std::string_view toString(ForceScale v) { return kForceScales.at(static_cast<std
 std::string_view toString(PointKind v) { return kPointKinds.at(static_cast<std::size_t>(v)); }
 std::string_view toString(Detection v) { return kDetections.at(static_cast<std::size_t>(v)); }
 std::string_view toString(Response v) { return kResponses.at(static_cast<std::size_t>(v)); }
-std::string_view toString(IntegratorKind v) { return kIntegrators.at(static_cast<std::size_t>(v)); }
+std::string_view toString(IntegratorKind v) { return integratorInfo(v).name; }
 
 std::optional<WallModel> parseWallModel(std::string_view n) { return lookup<WallModel>(kWallModels, n); }
 std::optional<DragLaw> parseDragLaw(std::string_view n) { return lookup<DragLaw>(kDragLaws, n); }
@@ -46,7 +48,10 @@ std::optional<IntegratorKind> parseIntegrator(std::string_view n)
 {
     if (n == "reference") // the most accurate integrator, whatever it is called
         return IntegratorKind::Ias15;
-    return lookup<IntegratorKind>(kIntegrators, n);
+    for (const IntegratorInfo& info : integrators())
+        if (info.name == n)
+            return info.kind;
+    return std::nullopt;
 }
 
 std::span<const std::string_view> wallModelNames() { return kWallModels; }
@@ -56,7 +61,16 @@ std::span<const std::string_view> forceScaleNames() { return kForceScales; }
 std::span<const std::string_view> pointKindNames() { return kPointKinds; }
 std::span<const std::string_view> detectionNames() { return kDetections; }
 std::span<const std::string_view> responseNames() { return kResponses; }
-std::span<const std::string_view> integratorNames() { return kIntegrators; }
+std::span<const std::string_view> integratorNames()
+{
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> out;
+        for (const IntegratorInfo& info : integrators())
+            out.push_back(info.name);
+        return out;
+    }();
+    return names;
+}
 
 std::string joinNames(std::span<const std::string_view> names)
 {

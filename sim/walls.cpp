@@ -1,5 +1,7 @@
 #include "walls.h"
 
+#include "integrator_info.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -113,23 +115,19 @@ double contactTime(double p0, double u, double a, double wall, double into, doub
 //    velocity in one kick; the rest of the velocity change is that kick.
 //    Bouncing inside the straight drift keeps semi-implicit Euler symplectic,
 //    so with e = 1 its energy error stays bounded instead of drifting.
-struct StepPath {
+struct PathInStep {
     double drift;   // d, px/s
     double accel;   // a, px/s²
     double endKick; // px/s, added to the velocity at the end of the step
 };
 
-StepPath stepPath(IntegratorKind kind, double p0, double u0, double p1, double u1, double h)
+PathInStep stepPath(IntegratorKind kind, double p0, double u0, double p1, double u1, double h)
 {
-    switch (kind) {
-    case IntegratorKind::Euler:
-    case IntegratorKind::SemiImplicitEuler: {
+    if (integratorInfo(kind).path == StepPath::KickDrift) {
         const double d = (p1 - p0) / h;
         return {d, 0.0, u1 - d};
     }
-    default:
-        return {u0, (u1 - u0) / h, 0.0};
-    }
+    return {u0, (u1 - u0) / h, 0.0};
 }
 
 // Most bounces the exact model follows along one axis in one step. Only a
@@ -151,7 +149,7 @@ constexpr int kMaxBounces = 4096;
 //    wall to the next bounce at the same wall is one cycle of fixed length.
 //    Whole cycles are skipped at once, so a very fast ball costs no more than
 //    a slow one, and a hop of 0.01 px keeps hopping.
-void exactAxis(const Axis& ax, double e, const StepPath& path, double p0, double h, double& p, double& u,
+void exactAxis(const Axis& ax, double e, const PathInStep& path, double p0, double h, double& p, double& u,
                std::int64_t& hits)
 {
     if (outside(ax, p0)) { // started outside (spawned there): nothing to solve

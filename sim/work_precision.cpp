@@ -1,5 +1,7 @@
 #include "work_precision.h"
 
+#include "integrator_info.h"
+
 #include "world.h"
 
 #include <algorithm>
@@ -194,18 +196,8 @@ double fittedOrder(std::span<const double> dts, std::span<const double> errors)
 
 double theoreticalOrder(IntegratorKind integrator)
 {
-    switch (integrator) {
-    case IntegratorKind::Euler:
-    case IntegratorKind::SemiImplicitEuler:
-        return 1.0;
-    case IntegratorKind::Verlet:
-        return 2.0;
-    case IntegratorKind::Rk4:
-    case IntegratorKind::Yoshida4:
-        return 4.0;
-    default:
-        return std::nan("");
-    }
+    const IntegratorInfo& info = integratorInfo(integrator);
+    return info.adaptive || info.order == 0.0 ? std::nan("") : info.order;
 }
 
 ConvergenceResult measureConvergence(const Scene& scene, IntegratorKind integrator, double dt, double duration,

@@ -1,6 +1,7 @@
 #include "world.h"
 
 #include "close_pass.h"
+#include "integrator_info.h"
 #include "names.h"
 #include "stability.h"
 #include "walls.h"
@@ -296,8 +297,7 @@ void World::step()
     const double h = (m_settings.time.perFrame ? kFrameSeconds : m_settings.time.dt) / substeps;
     // Close passes are watched for fixed-step integrators only: rk45 and
     // ias15 shorten their own sub-steps.
-    const bool adaptive = m_settings.time.integrator == IntegratorKind::Rk45 ||
-                          m_settings.time.integrator == IntegratorKind::Ias15;
+    const bool adaptive = integratorInfo(m_settings.time.integrator).adaptive;
     const bool watchPairs = !adaptive && m_settings.mutualGravity.enabled && m_settings.mutualGravity.G > 0.0;
     for (int k = 0; k < substeps && !m_gaveUp; ++k)
         subStep(h);

@@ -3,6 +3,9 @@
 
 #include "sim_test_util.h"
 
+#include "sim/integrator_info.h"
+#include "sim/stability.h"
+
 #include "sim/kepler.h"
 
 #include "sim/names.h"
@@ -51,6 +54,8 @@ private slots:
     void exactRejectedWithNonConstantForces();
     void forceEvaluationsPerStep_data();
     void forceEvaluationsPerStep();
+    void recordsAgreeWithTheMethods_data();
+    void recordsAgreeWithTheMethods();
 };
 
 void TestIntegrators::keplerOrder_data()
@@ -90,6 +95,7 @@ void TestIntegrators::keplerOrder()
         errors.push_back(err);
     }
     const double fitted = fittedOrder(dts, errors);
+    QCOMPARE(integratorInfo(static_cast<IntegratorKind>(integrator)).order, order);
     qInfo("%s: errors %.3g .. %.3g px, fitted order %.3f", QTest::currentDataTag(), errors.front(), errors.back(),
           fitted);
     QVERIFY2(std::abs(fitted - order) <= 0.15, qPrintable(QString("fitted order %1").arg(fitted)));
@@ -232,6 +238,48 @@ void TestIntegrators::forceEvaluationsPerStep()
     for (int k = 0; k < 10; ++k)
         world.step();
     QCOMPARE(world.totals().forceEvaluations, std::int64_t(evaluationsFor10Steps));
+    // The integrator's record says the same, give or take the one extra
+    // evaluation that starts a Verlet-type run.
+    const int perStep = integratorInfo(static_cast<IntegratorKind>(integrator)).evaluationsPerStep;
+    QVERIFY(evaluationsFor10Steps == 10 * perStep || evaluationsFor10Steps == 10 * perStep + 1);
+}
+
+void TestIntegrators::recordsAgreeWithTheMethods_data()
+{
+    QTest::addColumn<int>("integrator");
+    for (const IntegratorInfo& info : integrators())
+        QTest::addRow("%s", info.name.data()) << int(info.kind);
+}
+
+// Each integrator's record (sim/integrator_info.h) against the method itself:
+// its name round-trips; its spring limit is where one step's growth on
+// x'' = −ω² x (sim/stability.h, the eigenvalues of the step matrix) crosses 1,
+// within 1e-3 of ω h on either side; explicit Euler grows at any h; the
+// fitted Kepler orders (keplerOrder) match the recorded ones.
+void TestIntegrators::recordsAgreeWithTheMethods()
+{
+    QFETCH(int, integrator);
+    const IntegratorInfo& info = integratorInfo(static_cast<IntegratorKind>(integrator));
+    QCOMPARE(int(info.kind), integrator);
+    QVERIFY(parseIntegrator(info.name) == info.kind);
+    QCOMPARE(toString(info.kind), info.name);
+    if (info.adaptive || info.kind == IntegratorKind::Exact) {
+        QVERIFY(std::isinf(info.springLimit));
+        return;
+    }
+    WorldSettings s;
+    s.time.integrator = info.kind;
+    s.spring = SpringSettings{true, Vec2(0, 0), 1.0}; // ω = 1, so ω h = h
+    if (info.springLimit == 0.0) {
+        QVERIFY(linearGrowthPerStep(s, 1e-3) > 1.0);
+        return;
+    }
+    const double below = linearGrowthPerStep(s, info.springLimit * (1.0 - 1e-3));
+    const double above = linearGrowthPerStep(s, info.springLimit * (1.0 + 1e-3));
+    qInfo("%s: growth per step %.12f at 0.999 of ω h = %.4f, %.6f at 1.001", info.name.data(), below,
+          info.springLimit, above);
+    QVERIFY(below <= 1.0 + 1e-12);
+    QVERIFY(above > 1.0 + 1e-6);
 }
 
 QTEST_APPLESS_MAIN(TestIntegrators)

@@ -3,6 +3,7 @@
 #include "canvas.h"
 #include "simulation_controller.h"
 
+#include "sim/integrator_info.h"
 #include "sim/names.h"
 #include "sim/world.h"
 
@@ -92,10 +93,15 @@ QLabel* numberLabel(const QString& objectName)
 
 const std::vector<sim::IntegratorKind>& AccuracyDock::tradeOffIntegrators()
 {
-    static const std::vector<sim::IntegratorKind> kinds{sim::IntegratorKind::Euler,
-                                                        sim::IntegratorKind::SemiImplicitEuler,
-                                                        sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4,
-                                                        sim::IntegratorKind::Yoshida4};
+    // Every fixed-step method with an order to measure (not the adaptive
+    // ones, whose step is their own, nor exact, which has no error to fit).
+    static const std::vector<sim::IntegratorKind> kinds = [] {
+        std::vector<sim::IntegratorKind> out;
+        for (const sim::IntegratorInfo& info : sim::integrators())
+            if (!info.adaptive && info.order > 0.0)
+                out.push_back(info.kind);
+        return out;
+    }();
     return kinds;
 }
 
