@@ -3,6 +3,7 @@
 #include "close_pass.h"
 #include "integrator_info.h"
 #include "names.h"
+#include "parameters.h"
 #include "stability.h"
 #include "walls.h"
 
@@ -67,41 +68,17 @@ private:
 
 std::optional<std::string> validateSettings(const WorldSettings& s)
 {
-    Checker c;
-    c.range("world.width", s.box.width, 0.0, 1e7, true);
-    c.range("world.height", s.box.height, 0.0, 1e7, true);
-    c.range("world.restitution", s.walls.restitution, 0.0, 1.0);
-    c.range("time.dt", s.time.dt, 0.0, 1.0, true);
-    c.range("time.substeps", s.time.substeps, 1, 1000);
-    c.range("time.tolerance", s.time.tolerance, 1e-15, 1.0);
-    c.range("models.gravity.x", s.gravity.g.x(), -1e7, 1e7);
-    c.range("models.gravity.y", s.gravity.g.y(), -1e7, 1e7);
-    c.range("models.drag.k", s.drag.k, 0.0, 1e6);
-    c.range("models.wind.strength", s.wind.strength, 0.0, 1e7);
-    c.range("models.wind.smoothed_step", s.wind.smoothedStep, 0.0, 1.0, true);
-    c.range("models.wind.frequency", s.wind.noiseFrequency, 0.0, 1e3, true);
-    c.range("models.random_accel.strength", s.randomAccel.strength, 0.0, 1e7);
-    c.finite("models.point.x", s.point.position.x());
-    c.finite("models.point.y", s.point.position.y());
-    c.range("models.point.strength", s.point.strength, 0.0, 1e15);
-    c.range("models.point.max_accel", s.point.maxAccel, 0.0, 1e9);
-    c.finite("models.spring.x", s.spring.anchor.x());
-    c.finite("models.spring.y", s.spring.anchor.y());
-    c.range("models.spring.k", s.spring.k, 0.0, 1e6);
-    c.range("models.mutual_gravity.G", s.mutualGravity.G, -1e12, 1e12);
-    c.range("models.mutual_gravity.softening", s.mutualGravity.softening, 0.0, 1e6);
-    c.range("models.homing.strength", s.homing.strength, 0.0, 1e6);
-    c.range("models.pointer.strength", s.pointer.strength, 0.0, 1e15);
-    c.range("models.pointer.max_accel", s.pointer.maxAccel, 0.0, 1e9);
-    c.range("models.speed_limit.max", s.speedLimit.max, 0.0, 1e9, true);
-    c.range("models.collisions.restitution", s.collisions.restitution, 0.0, 1.0);
+    // Every row of the parameter table: its range, whole numbers, choices.
+    for (const Parameter& p : parameters())
+        if (auto problem = checkValue(p, p.get(s)))
+            return std::string(p.key) + ": " + *problem;
+    // What no single row can say.
     if (s.time.integrator == IntegratorKind::Exact) {
         if (const char* why = nonConstantAccelerationReason(s))
-            c.fail("time.integrator",
-                   std::string("exact needs a constant acceleration, but ") + why +
-                       "; pick another integrator or switch that model off");
+            return std::string("time.integrator: exact needs a constant acceleration, but ") + why +
+                   "; pick another integrator or switch that model off";
     }
-    return c.result();
+    return std::nullopt;
 }
 
 std::optional<std::string> validateSpawn(const SpawnSettings& s)
