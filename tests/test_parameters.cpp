@@ -4,9 +4,11 @@
 // exactly what the row's range refuses.
 
 #include "sim/names.h"
+#include "sim/parameter_reference.h"
 #include "sim/parameters.h"
 #include "sim/world.h"
 
+#include <QFile>
 #include <QTest>
 
 #include <cmath>
@@ -53,6 +55,7 @@ private slots:
     void eachRowOwnsOneField();
     void defaultsAreAllowed();
     void validationFollowsTheRanges();
+    void referenceIsUpToDate();
 };
 
 void TestParameters::keysAndControlsAreUnique()
@@ -126,6 +129,22 @@ void TestParameters::validationFollowsTheRanges()
             p.set(t, end);
             QCOMPARE(bool(validateSettings(t)), open);
         }
+    }
+}
+
+// docs/parameters.md is what the table says today (regenerate it with
+// `forcelab-cli params > docs/parameters.md`).
+void TestParameters::referenceIsUpToDate()
+{
+    QFile file(QStringLiteral(FORCELAB_SOURCE_DIR "/docs/parameters.md"));
+    QVERIFY2(file.open(QIODevice::ReadOnly), "docs/parameters.md is missing");
+    const QByteArray onDisk = file.readAll();
+    const std::string generated = parameterReference();
+    QVERIFY2(onDisk == QByteArray::fromStdString(generated),
+             "docs/parameters.md is out of date: run forcelab-cli params > docs/parameters.md");
+    for (const Parameter& p : parameters()) {
+        const std::string_view name = p.key.substr(p.key.rfind('.') + 1);
+        QVERIFY(onDisk.contains('`' + QByteArray(name.data(), static_cast<qsizetype>(name.size())) + '`'));
     }
 }
 
