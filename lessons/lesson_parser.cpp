@@ -3,6 +3,7 @@
 #include "lesson_limits.h"
 #include "nearest_key.h"
 #include "sim/names.h"
+#include "sim/parameters.h"
 
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -305,25 +306,26 @@ public:
         return true;
     }
 
-    template <typename E>
-    bool enumeration(const QJsonObject& o, const QString& path, const QString& key,
-                     std::optional<E> (*parse)(std::string_view), std::span<const std::string_view> allowed, E& out)
+    /// A Choice row: its value is one of the row's names (or an alias).
+    bool choice(const QJsonObject& o, const QString& path, const QString& key, const sim::Parameter& row,
+                sim::WorldSettings& s)
     {
         if (!o.contains(key))
             return false;
         const QString p = join(path, key);
         const QJsonValue v = o.value(key);
+        const auto allowed = row.choices();
         if (!v.isString()) {
             fail(p, QStringLiteral("expected a string, one of %1, got %2").arg(names(allowed), describe(v)));
             return false;
         }
         const QByteArray utf8 = v.toString().toUtf8();
-        const auto e = parse(std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size())));
-        if (!e) {
+        const int index = sim::choiceIndex(row, std::string_view(utf8.constData(), static_cast<std::size_t>(utf8.size())));
+        if (index < 0) {
             fail(p, QStringLiteral("%1 is not one of %2").arg(quoted(v.toString()), names(allowed)));
             return false;
         }
-        out = *e;
+        row.set(s, index);
         return true;
     }
 
@@ -360,11 +362,52 @@ public:
         return true;
     }
 
-    /// Present model objects are on unless they say "enabled": false.
-    void enabled(const QJsonObject& o, const QString& path, bool& out)
+    /// One row of the parameter table, read from the section object `o` at
+    /// `path`; written into `s` only when present and valid.
+    void row(const QJsonObject& o, const QString& path, const sim::Parameter& p, sim::WorldSettings& s)
     {
-        out = true;
-        boolean(o, path, QStringLiteral("enabled"), out);
+        const QString key = qs(sim::rowName(p));
+        switch (p.type) {
+        case sim::ParameterType::Number: {
+            double v = 0.0;
+            // The table's units are string literals, so their data() ends in a NUL.
+            const char* unit = p.unit.empty() ? "" : p.unit.data();
+            if (number(o, path, key, Range{p.lo, p.hi, p.loOpen, p.hiOpen, unit}, v))
+                p.set(s, v);
+            return;
+        }
+        case sim::ParameterType::Integer: {
+            int v = 0;
+            if (integer(o, path, key, static_cast<int>(p.lo), static_cast<int>(p.hi), v))
+                p.set(s, v);
+            return;
+        }
+        case sim::ParameterType::Boolean: {
+            bool v = false;
+            if (boolean(o, path, key, v))
+                p.set(s, v ? 1.0 : 0.0);
+            return;
+        }
+        case sim::ParameterType::Choice:
+            choice(o, path, key, p, s);
+            return;
+        }
+    }
+
+    /// Every row of a section: the keys the object may hold, what listing the
+    /// section means (whenListed), then each row present.
+    void section(const QJsonObject& o, const QString& path, sim::WorldSettings& s, const QStringList& extraKeys = {})
+    {
+        const std::vector<const sim::Parameter*> rows = sim::sectionRows(path.toStdString());
+        QStringList known;
+        for (const sim::Parameter* p : rows)
+            known << qs(sim::rowName(*p));
+        checkKeys(o, path, known + extraKeys);
+        for (const sim::Parameter* p : rows)
+            if (!std::isnan(p->whenListed))
+                p->set(s, p->whenListed);
+        for (const sim::Parameter* p : rows)
+            row(o, path, *p, s);
     }
 
 private:
@@ -374,9 +417,8 @@ private:
 void parseWorld(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
 {
     const QString path = QStringLiteral("world");
-    r.checkKeys(o, path, {"width", "height", "walls", "wall_model", "restitution", "middle_wall", "centre_only"});
-    r.number(o, path, "width", range::kBoxSize, s.box.width);
-    r.number(o, path, "height", range::kBoxSize, s.box.height);
+    r.section(o, path, s, {QStringLiteral("walls")});
+    // The walls are a list of names in the file, one switch each in the table.
     if (const auto walls = r.array(o, path, "walls", QStringLiteral("an array of wall names (left, right, top, bottom)"))) {
         bool on[4] = {false, false, false, false};
         bool ok = true;
@@ -401,125 +443,36 @@ void parseWorld(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
                 on[k] = true;
             }
         }
-        if (ok) {
-            s.walls.left = on[0];
-            s.walls.right = on[1];
-            s.walls.top = on[2];
-            s.walls.bottom = on[3];
-        }
+        if (ok)
+            for (int k = 0; k < 4; ++k)
+                sim::findParameter("world.walls." + kWallNames[k].toStdString())->set(s, on[k] ? 1.0 : 0.0);
     }
-    r.enumeration(o, path, "wall_model", &sim::parseWallModel, sim::wallModelNames(), s.walls.model);
-    r.number(o, path, "restitution", range::kUnit, s.walls.restitution);
-    r.boolean(o, path, "middle_wall", s.walls.middle);
-    r.boolean(o, path, "centre_only", s.walls.centreOnly);
 }
 
-void parseTime(Reader& r, const QJsonObject& o, sim::TimeSettings& t)
+void parseTime(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
 {
     const QString path = QStringLiteral("time");
-    r.checkKeys(o, path, {"integrator", "dt", "substeps", "tolerance", "seed", "per_frame"});
-    r.enumeration(o, path, "integrator", &sim::parseIntegrator, sim::integratorNames(), t.integrator);
-    r.number(o, path, "dt", range::kDt, t.dt);
-    r.integer(o, path, "substeps", intrange::kSubstepsLo, intrange::kSubstepsHi, t.substeps);
-    r.number(o, path, "tolerance", range::kTolerance, t.tolerance);
-    r.seed(o, path, "seed", t.seed);
-    r.boolean(o, path, "per_frame", t.perFrame);
+    r.section(o, path, s, {QStringLiteral("seed")});
+    r.seed(o, path, "seed", s.time.seed); // a whole number up to 2^64 − 1: not a row of doubles
 }
 
 void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
 {
     const QString base = QStringLiteral("models");
-    r.checkKeys(models, base,
-                {"gravity", "drag", "wind", "random_accel", "point", "spring", "mutual_gravity", "homing", "pointer",
-                 "speed_limit", "collisions"});
-
-    if (const auto o = r.object(models, base, "gravity")) {
-        const QString p = join(base, "gravity");
-        r.checkKeys(*o, p, {"enabled", "x", "y"});
-        r.enabled(*o, p, s.gravity.enabled);
-        r.number(*o, p, "x", range::kGravity, s.gravity.g.x());
-        r.number(*o, p, "y", range::kGravity, s.gravity.g.y());
+    // The models are the sections of the parameter table under "models.".
+    QStringList known;
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = qs(p.key);
+        if (!key.startsWith(base + QLatin1Char('.')))
+            continue;
+        const QString model = key.section(QLatin1Char('.'), 1, 1);
+        if (!known.contains(model))
+            known << model;
     }
-    if (const auto o = r.object(models, base, "drag")) {
-        const QString p = join(base, "drag");
-        r.checkKeys(*o, p, {"enabled", "law", "k"});
-        r.enabled(*o, p, s.drag.enabled);
-        r.enumeration(*o, p, "law", &sim::parseDragLaw, sim::dragLawNames(), s.drag.law);
-        r.number(*o, p, "k", range::kDragK, s.drag.k);
-    }
-    if (const auto o = r.object(models, base, "wind")) {
-        const QString p = join(base, "wind");
-        r.checkKeys(*o, p, {"mode", "strength", "scale", "smoothed_step", "frequency", "compare"});
-        s.wind.mode = sim::WindMode::Random; // present without a mode: the simplest wind
-        r.enumeration(*o, p, "mode", &sim::parseWindMode, sim::windModeNames(), s.wind.mode);
-        r.number(*o, p, "strength", range::kWindStrength, s.wind.strength);
-        r.enumeration(*o, p, "scale", &sim::parseForceScale, sim::forceScaleNames(), s.wind.scale);
-        r.number(*o, p, "smoothed_step", range::kSmoothedStep, s.wind.smoothedStep);
-        r.number(*o, p, "frequency", range::kFrequency, s.wind.noiseFrequency);
-        r.enumeration(*o, p, "compare", &sim::parseWindMode, sim::windModeNames(), s.wind.compare);
-    }
-    if (const auto o = r.object(models, base, "random_accel")) {
-        const QString p = join(base, "random_accel");
-        r.checkKeys(*o, p, {"enabled", "fixed", "strength"});
-        r.enabled(*o, p, s.randomAccel.enabled);
-        r.boolean(*o, p, "fixed", s.randomAccel.fixed);
-        r.number(*o, p, "strength", range::kRandomAccel, s.randomAccel.strength);
-    }
-    if (const auto o = r.object(models, base, "point")) {
-        const QString p = join(base, "point");
-        r.checkKeys(*o, p, {"enabled", "kind", "x", "y", "strength", "max_accel", "scale"});
-        r.enabled(*o, p, s.point.enabled);
-        r.enumeration(*o, p, "kind", &sim::parsePointKind, sim::pointKindNames(), s.point.kind);
-        r.number(*o, p, "x", range::kPosition, s.point.position.x());
-        r.number(*o, p, "y", range::kPosition, s.point.position.y());
-        r.number(*o, p, "strength", range::kInverseSquare, s.point.strength);
-        r.number(*o, p, "max_accel", range::kMaxAccel, s.point.maxAccel);
-        r.enumeration(*o, p, "scale", &sim::parseForceScale, sim::forceScaleNames(), s.point.scale);
-    }
-    if (const auto o = r.object(models, base, "spring")) {
-        const QString p = join(base, "spring");
-        r.checkKeys(*o, p, {"enabled", "x", "y", "k"});
-        r.enabled(*o, p, s.spring.enabled);
-        r.number(*o, p, "x", range::kPosition, s.spring.anchor.x());
-        r.number(*o, p, "y", range::kPosition, s.spring.anchor.y());
-        r.number(*o, p, "k", range::kSpringK, s.spring.k);
-    }
-    if (const auto o = r.object(models, base, "mutual_gravity")) {
-        const QString p = join(base, "mutual_gravity");
-        r.checkKeys(*o, p, {"enabled", "G", "softening"});
-        r.enabled(*o, p, s.mutualGravity.enabled);
-        r.number(*o, p, "G", range::kG, s.mutualGravity.G);
-        r.number(*o, p, "softening", range::kSoftening, s.mutualGravity.softening);
-    }
-    if (const auto o = r.object(models, base, "homing")) {
-        const QString p = join(base, "homing");
-        r.checkKeys(*o, p, {"enabled", "strength"});
-        r.enabled(*o, p, s.homing.enabled);
-        r.number(*o, p, "strength", range::kHoming, s.homing.strength);
-    }
-    if (const auto o = r.object(models, base, "pointer")) {
-        const QString p = join(base, "pointer");
-        r.checkKeys(*o, p, {"enabled", "strength", "max_accel"});
-        r.enabled(*o, p, s.pointer.enabled);
-        r.number(*o, p, "strength", range::kInverseSquare, s.pointer.strength);
-        r.number(*o, p, "max_accel", range::kMaxAccel, s.pointer.maxAccel);
-    }
-    if (const auto o = r.object(models, base, "speed_limit")) {
-        const QString p = join(base, "speed_limit");
-        r.checkKeys(*o, p, {"enabled", "max"});
-        r.enabled(*o, p, s.speedLimit.enabled);
-        r.number(*o, p, "max", range::kSpeedLimit, s.speedLimit.max);
-    }
-    if (const auto o = r.object(models, base, "collisions")) {
-        const QString p = join(base, "collisions");
-        r.checkKeys(*o, p, {"detection", "response", "restitution", "continuous", "resting"});
-        s.collisions.response = sim::Response::Impulse2D; // present without a response: the correct one
-        r.enumeration(*o, p, "detection", &sim::parseDetection, sim::detectionNames(), s.collisions.detection);
-        r.enumeration(*o, p, "response", &sim::parseResponse, sim::responseNames(), s.collisions.response);
-        r.number(*o, p, "restitution", range::kUnit, s.collisions.restitution);
-        r.boolean(*o, p, "continuous", s.collisions.continuous);
-        r.boolean(*o, p, "resting", s.collisions.resting);
-    }
+    r.checkKeys(models, base, known);
+    for (const QString& model : known)
+        if (const auto o = r.object(models, base, model))
+            r.section(*o, join(base, model), s);
 }
 
 void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
@@ -669,7 +622,7 @@ ParseResult parseLesson(const QJsonObject& root)
     if (const auto o = r.object(root, top, "world"))
         parseWorld(r, *o, scene.settings);
     if (const auto o = r.object(root, top, "time"))
-        parseTime(r, *o, scene.settings.time);
+        parseTime(r, *o, scene.settings);
     if (const auto o = r.object(root, top, "models"))
         parseModels(r, *o, scene.settings);
     if (const auto a = r.array(root, top, "balls", QStringLiteral("an array of ball objects")))

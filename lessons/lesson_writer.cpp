@@ -6,6 +6,7 @@
 #include "lesson_limits.h"
 #include "lesson_loader.h"
 #include "sim/names.h"
+#include "sim/parameters.h"
 
 #include <charconv>
 #include <cmath>
@@ -134,67 +135,57 @@ void addModel(QList<QByteArray>& models, const char* name, bool enabled, Fields 
     models << '"' + QByteArray(name) + "\": " + inlineObject(fields);
 }
 
+/// The value of one row as JSON text.
+QByteArray rowValue(const sim::Parameter& p, const sim::WorldSettings& s)
+{
+    const double v = p.get(s);
+    switch (p.type) {
+    case sim::ParameterType::Boolean:
+        return v != 0.0 ? "true" : "false";
+    case sim::ParameterType::Choice:
+        return str(p.choices()[static_cast<std::size_t>(v)]);
+    case sim::ParameterType::Integer:
+        return num(static_cast<int>(v));
+    case sim::ParameterType::Number:
+        break;
+    }
+    return num(v);
+}
+
+/// The rows of a section as fields, leaving out `enabled` (a model's switch
+/// is written by addModel).
+Fields sectionFields(std::string_view section, const sim::WorldSettings& s)
+{
+    Fields out;
+    for (const sim::Parameter* p : sim::sectionRows(section))
+        if (sim::rowName(*p) != "enabled")
+            out.push_back({p->key.data() + section.size() + 1, rowValue(*p, s)});
+    return out;
+}
+
 QByteArray modelsBlock(const sim::WorldSettings& s)
 {
     const sim::WorldSettings d; // defaults
     QList<QByteArray> m;
-    auto gravity = [](const sim::GravitySettings& g) {
-        return Fields{{"x", num(g.g.x())}, {"y", num(g.g.y())}};
-    };
-    addModel(m, "gravity", s.gravity.enabled, gravity(s.gravity), gravity(d.gravity));
-    auto drag = [](const sim::DragSettings& g) {
-        return Fields{{"law", str(sim::toString(g.law))}, {"k", num(g.k)}};
-    };
-    addModel(m, "drag", s.drag.enabled, drag(s.drag), drag(d.drag));
-    auto wind = [](const sim::WindSettings& w) {
-        return Fields{{"mode", str(sim::toString(w.mode))},
-                      {"strength", num(w.strength)},
-                      {"scale", str(sim::toString(w.scale))},
-                      {"smoothed_step", num(w.smoothedStep)},
-                      {"frequency", num(w.noiseFrequency)},
-                      {"compare", str(sim::toString(w.compare))}};
-    };
-    // Wind has no "enabled": mode "off" switches it off, and is written when
-    // the other values differ from the defaults.
-    if (wind(s.wind) != wind(d.wind))
-        m << "\"wind\": " + inlineObject(wind(s.wind));
-    auto randomAccel = [](const sim::RandomAccelSettings& r) {
-        return Fields{{"fixed", r.fixed ? "true" : "false"}, {"strength", num(r.strength)}};
-    };
-    addModel(m, "random_accel", s.randomAccel.enabled, randomAccel(s.randomAccel), randomAccel(d.randomAccel));
-    auto point = [](const sim::PointForceSettings& p) {
-        return Fields{{"kind", str(sim::toString(p.kind))},  {"x", num(p.position.x())},
-                      {"y", num(p.position.y())},            {"strength", num(p.strength)},
-                      {"max_accel", num(p.maxAccel)},        {"scale", str(sim::toString(p.scale))}};
-    };
-    addModel(m, "point", s.point.enabled, point(s.point), point(d.point));
-    auto spring = [](const sim::SpringSettings& p) {
-        return Fields{{"x", num(p.anchor.x())}, {"y", num(p.anchor.y())}, {"k", num(p.k)}};
-    };
-    addModel(m, "spring", s.spring.enabled, spring(s.spring), spring(d.spring));
-    auto mutual = [](const sim::MutualGravitySettings& p) {
-        return Fields{{"G", num(p.G)}, {"softening", num(p.softening)}};
-    };
-    addModel(m, "mutual_gravity", s.mutualGravity.enabled, mutual(s.mutualGravity), mutual(d.mutualGravity));
-    auto homing = [](const sim::HomingSettings& p) { return Fields{{"strength", num(p.strength)}}; };
-    addModel(m, "homing", s.homing.enabled, homing(s.homing), homing(d.homing));
-    auto pointer = [](const sim::PointerSettings& p) {
-        return Fields{{"strength", num(p.strength)}, {"max_accel", num(p.maxAccel)}};
-    };
-    addModel(m, "pointer", s.pointer.enabled, pointer(s.pointer), pointer(d.pointer));
-    auto limit = [](const sim::SpeedLimitSettings& p) { return Fields{{"max", num(p.max)}}; };
-    addModel(m, "speed_limit", s.speedLimit.enabled, limit(s.speedLimit), limit(d.speedLimit));
-    auto collisions = [](const sim::CollisionSettings& c) {
-        return Fields{{"detection", str(sim::toString(c.detection))},
-                      {"response", str(sim::toString(c.response))},
-                      {"restitution", num(c.restitution)},
-                      {"continuous", c.continuous ? "true" : "false"},
-                      {"resting", c.resting ? "true" : "false"}};
-    };
-    // Like wind: response "none" is off; written when anything differs from the defaults.
-    if (collisions(s.collisions) != collisions(d.collisions))
-        m << "\"collisions\": " + inlineObject(collisions(s.collisions));
-
+    // The models are the sections of the parameter table under "models.".
+    std::vector<std::string_view> sections;
+    for (const sim::Parameter& p : sim::parameters())
+        if (p.key.substr(0, 7) == "models.") {
+            const std::string_view section = p.key.substr(0, p.key.rfind('.'));
+            if (sections.empty() || sections.back() != section)
+                sections.push_back(section);
+        }
+    for (const std::string_view section : sections) {
+        const std::string name(section.substr(7));
+        const Fields fields = sectionFields(section, s);
+        if (const sim::Parameter* on = sim::findParameter(std::string(section) + ".enabled")) {
+            addModel(m, name.c_str(), on->get(s) != 0.0, fields, sectionFields(section, d));
+        } else if (fields != sectionFields(section, d)) {
+            // No switch (wind, collisions): a mode such as "off" or "none"
+            // switches it off; written when anything differs from the defaults.
+            m << '"' + QByteArray::fromStdString(name) + "\": " + inlineObject(fields);
+        }
+    }
     if (m.isEmpty())
         return "{}";
     QByteArray out = "{\n";
@@ -253,6 +244,13 @@ QByteArray saveLesson(const Lesson& lesson)
         spawnFields.push_back({"palette", inlineArray(colours)});
     }
 
+    // The walls are a list of names after the box size; the seed (not a row
+    // of doubles) comes before per_frame.
+    Fields world = sectionFields("world", s);
+    world.insert(world.begin() + 2, {"walls", inlineArray(walls)});
+    Fields time = sectionFields("time", s);
+    time.insert(time.end() - 1, {"seed", seed(s.time.seed)});
+
     Fields top{
         {"format", num(lessons::kFormat)},
         {"id", str(lesson.id)},
@@ -260,19 +258,8 @@ QByteArray saveLesson(const Lesson& lesson)
         {"stage", num(lesson.stage)},
         {"text", str(lesson.text)},
         {"challenges", strings(lesson.challenges, true)},
-        {"world", inlineObject({{"width", num(s.box.width)},
-                                {"height", num(s.box.height)},
-                                {"walls", inlineArray(walls)},
-                                {"wall_model", str(sim::toString(s.walls.model))},
-                                {"restitution", num(s.walls.restitution)},
-                                {"middle_wall", s.walls.middle ? "true" : "false"},
-                                {"centre_only", s.walls.centreOnly ? "true" : "false"}})},
-        {"time", inlineObject({{"integrator", str(sim::toString(s.time.integrator))},
-                               {"dt", num(s.time.dt)},
-                               {"substeps", num(s.time.substeps)},
-                               {"tolerance", num(s.time.tolerance)},
-                               {"seed", seed(s.time.seed)},
-                               {"per_frame", s.time.perFrame ? "true" : "false"}})},
+        {"world", inlineObject(world)},
+        {"time", inlineObject(time)},
         {"models", modelsBlock(s)},
         {"balls", blockArray(balls, 2)},
         {"spawn", inlineObject(spawnFields)},

@@ -58,7 +58,8 @@ const Parameter kParameters[] = {
     // time
     {.key = "time.integrator", .label = "Integrator", .type = T::Choice,
      .help = "The method that moves the balls through one step.",
-     CHOICE(time.integrator, IntegratorKind, integratorNames), .control = "integrator"},
+     CHOICE(time.integrator, IntegratorKind, integratorNames), .control = "integrator",
+     .alias = [](std::string_view n) { return n == "reference" ? static_cast<int>(IntegratorKind::Ias15) : -1; }},
     {.key = "time.dt", .label = "Step dt", .unit = "s", .lo = 0, .hi = 1, .loOpen = true, .sliderLo = 1e-4,
      .sliderHi = 0.1, .scale = Log, .help = "Simulated time of one step.", FIELD(time.dt), .control = "dt"},
     {.key = "time.substeps", .label = "Sub-steps", .type = T::Integer, .lo = 1, .hi = 1000, .sliderLo = 1,
@@ -74,14 +75,14 @@ const Parameter kParameters[] = {
      .control = "per_frame"},
     // models
     {.key = "models.gravity.enabled", .label = "Gravity", .type = T::Boolean, .hi = 1,
-     .help = "The same downward pull on every ball.", SWITCH(gravity.enabled), .control = "gravity"},
+     .help = "The same downward pull on every ball.", SWITCH(gravity.enabled), .control = "gravity", .whenListed = 1},
     {.key = "models.gravity.x", .label = "g x (right)", .unit = "px/s²", .lo = -kBig, .hi = kBig, .sliderLo = -2000,
      .sliderHi = 2000, .help = "Sideways part of gravity.", FIELD(gravity.g.x()), .control = "gravity_x"},
     {.key = "models.gravity.y", .label = "g y (down)", .unit = "px/s²", .lo = -kBig, .hi = kBig, .sliderLo = -2000,
      .sliderHi = 2000, .help = "Downward part of gravity; 980 px/s² is Earth's if 1 px is 1 cm.",
      FIELD(gravity.g.y()), .control = "gravity_y"},
     {.key = "models.drag.enabled", .label = "Drag", .type = T::Boolean, .hi = 1,
-     .help = "A force against the velocity.", SWITCH(drag.enabled), .control = "drag"},
+     .help = "A force against the velocity.", SWITCH(drag.enabled), .control = "drag", .whenListed = 1},
     {.key = "models.drag.law", .label = "Drag law", .type = T::Choice,
      .help = "linear: F = −k v; quadratic: F = −k |v| v.", CHOICE(drag.law, DragLaw, dragLawNames),
      .control = "drag_law"},
@@ -91,7 +92,8 @@ const Parameter kParameters[] = {
     {.key = "models.wind.mode", .label = "Wind", .type = T::Choice,
      .help = "off, random (a new gust every step), smoothed (a bounded random walk), noise (smooth noise) or "
              "pointer (blown by the mouse).",
-     CHOICE(wind.mode, WindMode, windModeNames), .control = "wind_mode"},
+     CHOICE(wind.mode, WindMode, windModeNames), .control = "wind_mode",
+     .whenListed = static_cast<int>(WindMode::Random)},
     {.key = "models.wind.strength", .label = "Wind strength", .unit = "px/s²", .lo = 0, .hi = kBig, .sliderLo = 1,
      .sliderHi = 1e4, .scale = Log, .help = "Largest sideways push on a 10 px ball.", FIELD(wind.strength),
      .control = "wind_strength"},
@@ -110,7 +112,7 @@ const Parameter kParameters[] = {
      CHOICE(wind.compare, WindMode, windModeNames), .control = "wind_compare"},
     {.key = "models.random_accel.enabled", .label = "Random acceleration", .type = T::Boolean, .hi = 1,
      .help = "A random push on every ball, centred on zero (stage 10).", SWITCH(randomAccel.enabled),
-     .control = "random_accel"},
+     .control = "random_accel", .whenListed = 1},
     {.key = "models.random_accel.fixed", .label = "One value per ball", .type = T::Boolean, .hi = 1,
      .help = "Off: a new random value every step. On: each ball keeps the value it drew first.",
      SWITCH(randomAccel.fixed), .control = "random_fixed"},
@@ -118,7 +120,7 @@ const Parameter kParameters[] = {
      .sliderLo = 1, .sliderHi = 1e4, .scale = Log, .help = "Largest value of each component.",
      FIELD(randomAccel.strength), .control = "random_strength"},
     {.key = "models.point.enabled", .label = "Point force", .type = T::Boolean, .hi = 1,
-     .help = "An inverse-square pull or push from a fixed point.", SWITCH(point.enabled), .control = "point"},
+     .help = "An inverse-square pull or push from a fixed point.", SWITCH(point.enabled), .control = "point", .whenListed = 1},
     {.key = "models.point.kind", .label = "Point kind", .type = T::Choice, .help = "attract or repel.",
      CHOICE(point.kind, PointKind, pointKindNames), .control = "point_kind"},
     {.key = "models.point.x", .label = "Point x", .unit = "px", .lo = -kBig, .hi = kBig, .sliderLo = 0,
@@ -136,7 +138,7 @@ const Parameter kParameters[] = {
      .control = "point_scale"},
     {.key = "models.spring.enabled", .label = "Spring", .type = T::Boolean, .hi = 1,
      .help = "Every ball tied to one anchor by a spring (Hooke's law).", SWITCH(spring.enabled),
-     .control = "spring"},
+     .control = "spring", .whenListed = 1},
     {.key = "models.spring.x", .label = "Anchor x", .unit = "px", .lo = -kBig, .hi = kBig, .sliderLo = 0,
      .sliderHi = 1000, .help = "Where the springs are tied, across.", FIELD(spring.anchor.x()),
      .control = "spring_x"},
@@ -147,7 +149,7 @@ const Parameter kParameters[] = {
      FIELD(spring.k), .control = "spring_k"},
     {.key = "models.mutual_gravity.enabled", .label = "Gravity between balls", .type = T::Boolean, .hi = 1,
      .help = "Every pair of balls pulls together (or pushes apart for G < 0).", SWITCH(mutualGravity.enabled),
-     .control = "mutual_gravity"},
+     .control = "mutual_gravity", .whenListed = 1},
     {.key = "models.mutual_gravity.G", .label = "G", .unit = "px³/(mass·s²)", .lo = -1e12, .hi = 1e12,
      .sliderLo = 1, .sliderHi = 1e8, .scale = Log, .help = "The constant in F = G m₁ m₂ / r².",
      FIELD(mutualGravity.G), .control = "mutual_g"},
@@ -156,12 +158,12 @@ const Parameter kParameters[] = {
      .help = "ε in F = G m₁ m₂ r / (r² + ε²)^(3/2): the pull fades smoothly to zero inside ε.",
      FIELD(mutualGravity.softening), .control = "mutual_softening"},
     {.key = "models.homing.enabled", .label = "Homing", .type = T::Boolean, .hi = 1,
-     .help = "Each ball tied by a spring to the home of its colour.", SWITCH(homing.enabled), .control = "homing"},
+     .help = "Each ball tied by a spring to the home of its colour.", SWITCH(homing.enabled), .control = "homing", .whenListed = 1},
     {.key = "models.homing.strength", .label = "Homing strength", .unit = "1/s²", .lo = 0, .hi = 1e6,
      .sliderLo = 0.01, .sliderHi = 1e3, .scale = Log, .help = "Stiffness of the spring to home, per unit mass.",
      FIELD(homing.strength), .control = "homing_strength"},
     {.key = "models.pointer.enabled", .label = "Pointer force", .type = T::Boolean, .hi = 1,
-     .help = "The mouse pointer pulls (hover) or pushes (pressed).", SWITCH(pointer.enabled), .control = "pointer"},
+     .help = "The mouse pointer pulls (hover) or pushes (pressed).", SWITCH(pointer.enabled), .control = "pointer", .whenListed = 1},
     {.key = "models.pointer.strength", .label = "Pointer strength", .unit = "px³/s²", .lo = 0, .hi = 1e15,
      .sliderLo = 1e3, .sliderHi = 1e9, .scale = Log, .help = "S in a = S / d².", FIELD(pointer.strength),
      .control = "pointer_strength"},
@@ -170,7 +172,7 @@ const Parameter kParameters[] = {
      FIELD(pointer.maxAccel), .control = "pointer_clamp"},
     {.key = "models.speed_limit.enabled", .label = "Speed limit", .type = T::Boolean, .hi = 1,
      .help = "No ball moves faster than the limit (a stand-in for terminal velocity).", SWITCH(speedLimit.enabled),
-     .control = "speed_limit_on"},
+     .control = "speed_limit_on", .whenListed = 1},
     {.key = "models.speed_limit.max", .label = "Largest speed", .unit = "px/s", .lo = 0, .hi = 1e9, .loOpen = true,
      .sliderLo = 10, .sliderHi = 1e5, .scale = Log, .help = "The limit.", FIELD(speedLimit.max),
      .control = "speed_limit"},
@@ -179,7 +181,8 @@ const Parameter kParameters[] = {
      CHOICE(collisions.detection, Detection, detectionNames), .control = "detection"},
     {.key = "models.collisions.response", .label = "Response", .type = T::Choice,
      .help = "What a touching pair does: none, flag, 1d-reverse, 1d-elastic, 2d-axis or 2d-impulse.",
-     CHOICE(collisions.response, Response, responseNames), .control = "response"},
+     CHOICE(collisions.response, Response, responseNames), .control = "response",
+     .whenListed = static_cast<int>(Response::Impulse2D)},
     {.key = "models.collisions.restitution", .label = "Ball restitution", .lo = 0, .hi = 1, .sliderLo = 0,
      .sliderHi = 1, .help = "Share of the approach speed a collision gives back.", FIELD(collisions.restitution),
      .control = "ball_restitution"},
@@ -219,6 +222,30 @@ const Parameter* findControl(std::string_view control)
         if (p.control == control)
             return &p;
     return nullptr;
+}
+
+std::vector<const Parameter*> sectionRows(std::string_view section)
+{
+    std::vector<const Parameter*> out;
+    for (const Parameter& p : kParameters)
+        if (p.key.size() > section.size() && p.key.substr(0, section.size()) == section &&
+            p.key[section.size()] == '.' && p.key.find('.', section.size() + 1) == std::string_view::npos)
+            out.push_back(&p);
+    return out;
+}
+
+std::string_view rowName(const Parameter& p)
+{
+    return p.key.substr(p.key.rfind('.') + 1);
+}
+
+int choiceIndex(const Parameter& p, std::string_view name)
+{
+    const auto names = p.choices();
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name)
+            return static_cast<int>(i);
+    return p.alias ? p.alias(name) : -1;
 }
 
 std::string numberText(double v)

@@ -9,10 +9,12 @@
 
 #include "world_settings.h"
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace forcelab::sim {
 
@@ -42,6 +44,14 @@ struct Parameter {
     void (*set)(WorldSettings&, double) = nullptr;
     std::span<const std::string_view> (*choices)() = nullptr; ///< Choice only
     std::string_view control{}; ///< the Parameters panel's row for it (lesson `controls` name it)
+    /// Choice only, optional: reads a name that is not in choices() (an alias
+    /// such as "reference"); returns the index or −1.
+    int (*alias)(std::string_view) = nullptr;
+    /// The value a lesson file means when it lists the row's section without
+    /// giving the row: a listed model is on ("gravity": {} switches gravity
+    /// on), listed wind blows at random, listed collisions use 2d-impulse.
+    /// NaN: the default stands.
+    double whenListed = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Every row, grouped by section in reading order.
@@ -52,6 +62,16 @@ const Parameter* findParameter(std::string_view key);
 
 /// The row whose panel control is `control`, or nullptr.
 const Parameter* findControl(std::string_view control);
+
+/// The rows directly in one section, in table order: "models.drag" gives
+/// enabled, law, k; "world" gives width, height, … but not world.walls.left.
+std::vector<const Parameter*> sectionRows(std::string_view section);
+
+/// The name of a row inside its section: "k" for "models.drag.k".
+std::string_view rowName(const Parameter& p);
+
+/// The index of a choice's name (or alias), or −1.
+int choiceIndex(const Parameter& p, std::string_view name);
 
 /// "[0, 1]", "(0, 1] s": the allowed values, for messages and the docs.
 std::string rangeText(const Parameter& p);

@@ -479,7 +479,7 @@ void TestLessonLoader::badInput_data()
         << R"(t.json: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
     QTest::newRow("unknown key without a close match lists the keys")
         << minimal(R"("world": {"colour": 1})")
-        << R"(t.json: world.colour: unknown key "colour"; known keys here: width, height, walls, wall_model, restitution, middle_wall, centre_only)";
+        << R"(t.json: world.colour: unknown key "colour"; known keys here: width, height, wall_model, restitution, middle_wall, centre_only, walls)";
     QTest::newRow("unknown top-level key") << minimal(R"("titel": "x")")
                                            << R"(t.json: titel: unknown key "titel"; did you mean "title"?)";
     QTest::newRow("wrong type: string for a number")
