@@ -10,6 +10,9 @@
 
 namespace forcelab::sim {
 
+/// Most balls a world holds: spawning and lesson files are checked against it.
+inline constexpr int kMaxBalls = 200'000;
+
 /// Density of the default mass: m = density × (4/3) π r³ (equal-density spheres).
 inline constexpr double kDefaultDensity = 1.0;
 

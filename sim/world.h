@@ -145,8 +145,6 @@ private:
     Matrix2X m_startVelocity;
 };
 
-/// Most balls a world holds: spawning and lesson files are checked against it.
-inline constexpr int kMaxBalls = 200'000;
 
 /// Checks the spawn settings ("spawn.count: …").
 std::optional<std::string> validateSpawn(const SpawnSettings& spawn);
