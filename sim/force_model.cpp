@@ -14,14 +14,24 @@ void addUniformGravity(const GravitySettings& s, Matrix2X& a)
     a.colwise() += s.g;
 }
 
-// Drag opposes the velocity. Linear: a = −k v (so dv/dt = −k v decays as
-// e^(−kt)). Quadratic: a = −k |v| v, which matters more at high speed.
-void addDrag(const DragSettings& s, const Matrix2X& v, Matrix2X& a)
+// Drag opposes the velocity. Linear: a = −c v with c = k × the ball's scale
+// factor (m_ref / m for a force), so dv/dt = −c v decays as e^(−ct).
+// Quadratic: a = −c |v| v, which matters more at high speed. `scale` is empty
+// for the tutorial's model, where every ball has c = k.
+void addDrag(const DragSettings& s, const VectorX& scale, const Matrix2X& v, Matrix2X& a)
 {
+    if (scale.size() == 0) {
+        if (s.law == DragLaw::Linear)
+            a.noalias() -= s.k * v;
+        else
+            a -= s.k * (v.array().rowwise() * v.colwise().norm().array()).matrix();
+        return;
+    }
+    const Eigen::ArrayXd c = s.k * scale.array();
     if (s.law == DragLaw::Linear)
-        a.noalias() -= s.k * v;
+        a -= (v.array().rowwise() * c.transpose()).matrix();
     else
-        a -= s.k * (v.array().rowwise() * v.colwise().norm().array()).matrix();
+        a -= (v.array().rowwise() * (c * v.colwise().norm().transpose().array()).transpose()).matrix();
 }
 
 // Wind blows along x: the reference ball gets w, the others w × its factor.
@@ -124,6 +134,8 @@ ForceModel::ForceModel(const WorldSettings& settings, const BallState& balls, co
         m_windScale = scaleFactors(settings.wind.scale, balls);
     if (settings.point.enabled && settings.point.scale != ForceScale::None)
         m_pointScale = scaleFactors(settings.point.scale, balls);
+    if (settings.drag.enabled && settings.drag.scale != ForceScale::None)
+        m_dragScale = scaleFactors(settings.drag.scale, balls);
 }
 
 double ForceModel::windAt(double t) const
@@ -139,7 +151,7 @@ void ForceModel::acceleration(const Matrix2X& x, const Matrix2X& v, double t, Ma
     if (s.gravity.enabled)
         addUniformGravity(s.gravity, a);
     if (s.drag.enabled)
-        addDrag(s.drag, v, a);
+        addDrag(s.drag, m_dragScale, v, a);
     if (s.wind.mode != WindMode::Off)
         addWind(windAt(t), m_windScale, a);
     if (s.randomAccel.enabled && m_inputs.randomAccel.cols() == a.cols())

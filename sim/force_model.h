@@ -56,6 +56,7 @@ private:
     const StepInputs& m_inputs;
     VectorX m_windScale;  // per-ball factor of the wind (none / radius / mass)
     VectorX m_pointScale; // per-ball factor of the point force
+    VectorX m_dragScale;  // per-ball factor of the drag (empty: the same for every ball)
     mutable std::int64_t m_evaluations = 0;
 };
 

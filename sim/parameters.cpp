@@ -84,11 +84,16 @@ const Parameter kParameters[] = {
     {.key = "models.drag.enabled", .label = "Drag", .type = T::Boolean, .hi = 1,
      .help = "A force against the velocity.", SWITCH(drag.enabled), .control = "drag", .whenListed = 1},
     {.key = "models.drag.law", .label = "Drag law", .type = T::Choice,
-     .help = "linear: F = −k v; quadratic: F = −k |v| v.", CHOICE(drag.law, DragLaw, dragLawNames),
+     .help = "linear: F ∝ −v; quadratic: F ∝ −|v| v.", CHOICE(drag.law, DragLaw, dragLawNames),
      .control = "drag_law"},
     {.key = "models.drag.k", .label = "Drag k", .unit = "1/s (linear) or 1/px (quadratic)", .lo = 0, .hi = 1e6,
-     .sliderLo = 1e-4, .sliderHi = 10, .scale = Log, .help = "How strong the drag is.", FIELD(drag.k),
-     .control = "drag_k"},
+     .sliderLo = 1e-4, .sliderHi = 10, .scale = Log,
+     .help = "How strong the drag is: how fast a 10 px ball slows down.", FIELD(drag.k), .control = "drag_k"},
+    {.key = "models.drag.scale", .label = "Drag scaling", .type = T::Choice,
+     .help = "mass: drag is a force, F = −k m(10 px) v, so a heavy ball slows down less and falls faster; "
+             "none: the tutorial's model, every ball loses the same share of its speed; radius: air drag on "
+             "spheres, × 10 px / r.",
+     CHOICE(drag.scale, ForceScale, forceScaleNames), .control = "drag_scale"},
     {.key = "models.wind.mode", .label = "Wind", .type = T::Choice,
      .help = "off, random (a new gust every step), smoothed (a bounded random walk), noise (smooth noise) or "
              "pointer (blown by the mouse).",

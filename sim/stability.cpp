@@ -2,6 +2,7 @@
 
 #include "ball_state.h"
 #include "force_model.h"
+#include "integrator_info.h"
 #include "integrators.h"
 #include "names.h"
 
@@ -21,7 +22,7 @@ struct LinearModel {
     bool any() const { return omega2 > 0.0 || damping > 0.0; }
 };
 
-LinearModel linearModel(const WorldSettings& s)
+LinearModel linearModel(const WorldSettings& s, double dragFactor)
 {
     LinearModel m;
     if (s.spring.enabled)
@@ -29,18 +30,27 @@ LinearModel linearModel(const WorldSettings& s)
     if (s.homing.enabled)
         m.omega2 += s.homing.strength;
     if (s.drag.enabled && s.drag.law == DragLaw::Linear)
-        m.damping = s.drag.k;
+        m.damping = s.drag.k * dragFactor; // the ball that drag slows fastest
     return m;
 }
 
-double growthPerStep(IntegratorKind kind, const LinearModel& model, double h, double tolerance)
+// One step's growth: the largest |λ| of the step matrix, and whether the step
+// matrix is defective there (a double eigenvalue with a single eigenvector).
+// Then the motion grows like n λⁿ: at |λ| = 1 that is linear growth, which no
+// spectral radius shows (semi-implicit Euler at exactly ω h = 2).
+struct Growth {
+    double rho = 0.0;
+    bool linear = false;
+};
+
+Growth growth(IntegratorKind kind, const LinearModel& model, double h, double tolerance)
 {
     // The test problem as a world of its own: a spring of stiffness ω² to the
     // origin and linear drag c. Ball 0 starts at x = 1, ball 1 with v = 1, so
     // after one step their x-components are the columns of the step matrix.
     WorldSettings s;
     s.spring = SpringSettings{model.omega2 > 0.0, Vec2(0.0, 0.0), model.omega2};
-    s.drag = DragSettings{model.damping > 0.0, DragLaw::Linear, model.damping};
+    s.drag = DragSettings{model.damping > 0.0, DragLaw::Linear, model.damping, ForceScale::None};
     BallState balls;
     balls.resize(2);
     balls.set(0, Ball{Vec2(1.0, 0.0), Vec2(0.0, 0.0), 1.0, 1.0, 0, Vec2(0.0, 0.0)});
@@ -54,15 +64,25 @@ double growthPerStep(IntegratorKind kind, const LinearModel& model, double h, do
     const double c = balls.velocity(0, 0), d = balls.velocity(0, 1);
     // Eigenvalues of [[a, b], [c, d]]: (tr ± √(tr² − 4 det)) / 2.
     const double tr = a + d, det = a * d - b * c;
-    const std::complex<double> root = std::sqrt(std::complex<double>(tr * tr - 4.0 * det, 0.0));
-    return std::max(std::abs(0.5 * (tr + root)), std::abs(0.5 * (tr - root)));
+    const double disc = tr * tr - 4.0 * det;
+    const std::complex<double> root = std::sqrt(std::complex<double>(disc, 0.0));
+    Growth g;
+    g.rho = std::max(std::abs(0.5 * (tr + root)), std::abs(0.5 * (tr - root)));
+    // A double root λ = tr/2 has one eigenvector only when N = A − λ I is not
+    // zero (then N is nilpotent). disc = (a − d)² + 4bc = −4 det N is measured
+    // against 4 |N|², so "zero" means zero to rounding.
+    const double n2 = 0.5 * (a - d) * (a - d) + b * b + c * c; // |N|², Frobenius
+    g.linear = n2 > 0.0 && std::abs(disc) <= 4e-9 * n2 && g.rho >= 1.0 - 1e-9;
+    return g;
 }
 
-// True when the test motion doubles within kDoublingSeconds at sub-step h.
+// True when the test motion doubles within kDoublingSeconds at sub-step h, or
+// grows without end (linearly, at a defective |λ| = 1).
 bool blowsUp(IntegratorKind kind, const LinearModel& model, double h, double tolerance)
 {
-    const double rho = growthPerStep(kind, model, h, tolerance);
-    if (!std::isfinite(rho))
+    const Growth g = growth(kind, model, h, tolerance);
+    const double rho = g.rho;
+    if (!std::isfinite(rho) || g.linear)
         return true;
     if (rho <= 1.0 + 1e-12)
         return false;
@@ -77,46 +97,86 @@ std::string format(double v)
     return text;
 }
 
-} // namespace
-
-double linearGrowthPerStep(const WorldSettings& settings, double h)
+// A limit to 3 significant figures, rounded down so that what the message
+// advises is really below the limit (0.28284 → 0.282, not 0.283).
+std::string formatBelow(double v)
 {
-    return growthPerStep(settings.time.integrator, linearModel(settings), h, settings.time.tolerance);
+    if (!(v > 0.0) || !std::isfinite(v))
+        return format(v);
+    const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
+    double shown = std::floor(v / unit) * unit;
+    if (shown > v) // the division rounded up
+        shown -= unit;
+    return format(shown);
 }
 
-std::optional<std::string> stabilityProblem(const WorldSettings& s)
+// The current value with as many figures as it takes to differ from `other`.
+std::string formatApart(double v, const std::string& other)
+{
+    for (int digits = 3; digits <= 17; ++digits) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.*g", digits, v);
+        if (text != other)
+            return text;
+    }
+    return format(v);
+}
+
+} // namespace
+
+double linearGrowthPerStep(const WorldSettings& settings, double h, double dragFactor)
+{
+    return growth(settings.time.integrator, linearModel(settings, dragFactor), h, settings.time.tolerance).rho;
+}
+
+std::optional<std::string> stabilityProblem(const WorldSettings& s, double dragFactor)
 {
     const IntegratorKind kind = s.time.integrator;
-    if (kind == IntegratorKind::Rk45 || kind == IntegratorKind::Ias15 || kind == IntegratorKind::Exact) // adapts its own step / has no such model
+    if (std::isinf(integratorInfo(kind).springLimit)) // adapts its own step, or has no such model
         return std::nullopt;
-    const LinearModel model = linearModel(s);
+    const LinearModel model = linearModel(s, dragFactor);
     if (!model.any())
         return std::nullopt;
     const double h = (s.time.perFrame ? kFrameSeconds : s.time.dt) / s.time.substeps;
     if (!blowsUp(kind, model, h, s.time.tolerance))
         return std::nullopt;
 
-    // The largest stable sub-step, by bisection on a log scale.
+    // The largest sub-step at which the motion does not grow at all (not the
+    // one where it merely grows slowly), by bisection on a log scale: advice
+    // below it is safe however long the run.
+    const auto growsAt = [&](double step) {
+        const Growth g = growth(kind, model, step, s.time.tolerance);
+        return !(g.rho <= 1.0 + 1e-12) || g.linear;
+    };
     double lo = h * 1e-9, hi = h;
     for (int i = 0; i < 60; ++i) {
         const double mid = std::sqrt(lo * hi);
-        (blowsUp(kind, model, mid, s.time.tolerance) ? hi : lo) = mid;
+        (growsAt(mid) ? hi : lo) = mid;
     }
     const double safeDt = lo * s.time.substeps;
-    const double rho = growthPerStep(kind, model, h, s.time.tolerance);
-    const double perSecond = std::exp(std::log(rho) / h);
+    const Growth g = growth(kind, model, h, s.time.tolerance);
+    const double perSecond = std::exp(std::log(g.rho) / h);
+    const std::string safe = formatBelow(safeDt);
 
     std::string what = model.omega2 > 0.0 && model.damping > 0.0 ? "this spring with drag"
                        : model.omega2 > 0.0                      ? "this spring"
                                                                  : "this drag";
     std::string message = std::string(toString(kind)) + " is unstable for " + what + " at dt = " +
-                          format(s.time.dt) + " s";
+                          formatApart(s.time.dt, safe) + " s";
     if (model.omega2 > 0.0)
         message += " (ω = √k = " + format(std::sqrt(model.omega2)) + " rad/s)";
-    if (model.damping > 0.0)
-        message += " (k·dt = " + format(model.damping * h) + ")";
-    message += ": the motion grows " + (perSecond > 1e6 ? std::string("more than a million") : format(perSecond)) +
-               " times every second. Lower dt below " + format(safeDt) + " s";
+    if (model.damping > 0.0) {
+        if (std::abs(dragFactor - 1.0) <= 1e-12)
+            message += " (k·dt = " + format(model.damping * h) + ")";
+        else // drag as a force slows the lightest ball fastest: c = k m₁₀ / m
+            message += " (c·dt = " + format(model.damping * h) + " for the lightest ball, c = k × m₁₀ / m = " +
+                       format(model.damping) + "/s)";
+    }
+    const std::string grows = g.linear && g.rho <= 1.0 + 1e-9
+                                  ? std::string("a little more every step, without end")
+                              : perSecond > 1e6 ? std::string("more than a million times every second")
+                                                : format(perSecond) + " times every second";
+    message += ": the motion grows " + grows + ". Lower dt below " + safe + " s";
     if (kind == IntegratorKind::Euler && model.omega2 > 0.0)
         message += " or pick verlet";
     else if (model.damping > 0.0)

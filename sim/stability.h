@@ -14,12 +14,15 @@
 namespace forcelab::sim {
 
 /// How much the test motion (spring + homing + linear drag) grows per step:
-/// the spectral radius of one step. 1 or less is stable.
-double linearGrowthPerStep(const WorldSettings& settings, double h);
+/// the spectral radius of one step. 1 or less is stable. `dragFactor` is the
+/// largest per-ball factor of the drag (m_ref / m of the lightest ball when
+/// drag is a force; 1 for the tutorial's drag).
+double linearGrowthPerStep(const WorldSettings& settings, double h, double dragFactor = 1.0);
 
 /// A plain-words explanation with the fix when the settings make the
 /// integrator blow up within 10 s of simulated time (the motion doubling in
-/// less than that), or nullopt.
-std::optional<std::string> stabilityProblem(const WorldSettings& settings);
+/// less than that, or growing without end), or nullopt. The safe dt it names
+/// is rounded down, so it is really safe.
+std::optional<std::string> stabilityProblem(const WorldSettings& settings, double dragFactor = 1.0);
 
 } // namespace forcelab::sim

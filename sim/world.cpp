@@ -126,7 +126,7 @@ std::optional<std::string> World::reset(const Scene& scene)
     m_stepCount = 0;
     m_last = StepStats{};
     m_totals = StepStats{};
-    m_halted = stabilityProblem(m_settings);
+    m_halted = stabilityProblem(m_settings, largestDragFactor());
     if (m_accounting)
         startBooks();
     return std::nullopt;
@@ -138,8 +138,15 @@ std::optional<std::string> World::setSettings(const WorldSettings& settings)
         return error;
     m_settings = settings;
     m_integrator.invalidate();
-    m_halted = stabilityProblem(m_settings);
+    m_halted = stabilityProblem(m_settings, largestDragFactor());
     return std::nullopt;
+}
+
+double World::largestDragFactor() const
+{
+    if (!m_settings.drag.enabled || m_settings.drag.scale == ForceScale::None || m_balls.empty())
+        return 1.0;
+    return scaleFactors(m_settings.drag.scale, m_balls).maxCoeff();
 }
 
 BallState& World::mutableBalls()
@@ -191,6 +198,8 @@ void World::spawnOverTime()
         return;
     m_balls.append(randomBall(m_spawn, m_settings.box, m_spawnRng));
     m_integrator.invalidate();
+    if (m_settings.drag.enabled && !m_halted) // a lighter ball may need a shorter step under drag
+        m_halted = stabilityProblem(m_settings, largestDragFactor());
 }
 
 double World::wind() const

@@ -107,6 +107,7 @@ private:
     void drawStepRandomness();
     void spawnOverTime();
     bool blewUp() const;
+    double largestDragFactor() const; // for the stability check: the ball drag slows fastest
     std::string explainBlowUp(double subStep, const std::optional<ClosePass>& unresolved) const;
 
     WorldSettings m_settings;

@@ -44,23 +44,34 @@ struct GravitySettings {
     Vec2 g{0.0, 980.0}; ///< px/s², uniform acceleration (y down)
 };
 
-enum class DragLaw {
-    Linear,    ///< a = -k v
-    Quadratic, ///< a = -k |v| v
-};
-
-struct DragSettings {
-    bool enabled = false;
-    DragLaw law = DragLaw::Linear;
-    double k = 0.1; ///< 1/s for linear drag, 1/px for quadratic drag
-};
-
-enum class WindMode { Off, Random, Smoothed, Noise, Pointer };
 enum class ForceScale {
     None,   ///< every ball gets the same acceleration
     Radius, ///< acceleration × (reference radius / r)
     Mass,   ///< a force: acceleration × (reference mass / m)
 };
+
+enum class DragLaw {
+    Linear,    ///< F = -k m_ref v
+    Quadratic, ///< F = -k m_ref |v| v
+};
+
+/// Drag opposes the velocity. With scale Mass (the default) it is a force,
+/// F = −k m_ref v (linear) or −k m_ref |v| v (quadratic), where m_ref is the
+/// mass of the 10 px reference ball; a ball accelerates by F / m, so a heavy
+/// ball slows down less and falls faster through air (terminal speed
+/// g m / (k m_ref) for linear drag). k is how fast the reference ball slows.
+/// Scale None is the tutorial's simpler model: every ball loses the same
+/// share of its velocity, a = −k v, whatever its mass. Scale Radius divides by
+/// r / r_ref instead: quadratic air drag on equal-density spheres (force ∝ r²,
+/// mass ∝ r³).
+struct DragSettings {
+    bool enabled = false;
+    DragLaw law = DragLaw::Linear;
+    double k = 0.1;                       ///< 1/s for linear drag, 1/px for quadratic drag (reference ball)
+    ForceScale scale = ForceScale::Mass;  ///< how the drag on a ball depends on its size
+};
+
+enum class WindMode { Off, Random, Smoothed, Noise, Pointer };
 
 struct WindSettings {
     WindMode mode = WindMode::Off;

@@ -69,6 +69,8 @@ private slots:
     void perFrameIgnoresDt();
     void randomAcceleration();
     void compareWindActsOnNothing();
+    void dragIsAForce_data();
+    void dragIsAForce();
 };
 
 void TestForces::noModelsNoAcceleration()
@@ -499,6 +501,54 @@ void TestForces::compareWindActsOnNothing()
     }
     QVERIFY(moved);
     QCOMPARE(w.balls().velocity(0, 0), 0.0);
+}
+
+void TestForces::dragIsAForce_data()
+{
+    QTest::addColumn<int>("law");
+    QTest::addColumn<int>("scale");
+    QTest::newRow("linear, force") << int(DragLaw::Linear) << int(ForceScale::Mass);
+    QTest::newRow("quadratic, force") << int(DragLaw::Quadratic) << int(ForceScale::Mass);
+    QTest::newRow("linear, tutorial (none)") << int(DragLaw::Linear) << int(ForceScale::None);
+    QTest::newRow("quadratic, tutorial (none)") << int(DragLaw::Quadratic) << int(ForceScale::None);
+}
+
+// Balls of mass 1 and 50 (radius 10) fall from rest under g = 980 px/s² with
+// drag k = 0.001. As a force, F = −k m₁₀ v (m₁₀ = 4188.79, the 10 px ball's
+// mass) gives each ball its own rate c = k m₁₀ / m:
+//   linear:    v(t) = v_t (1 − e^(−c t)),  v_t = g / c = g m / (k m₁₀);
+//   quadratic: v(t) = v_t tanh(g t / v_t), v_t = √(g / c) = √(g m / (k m₁₀)).
+// So the heavy ball falls faster: before, every ball had c = k (the tutorial's
+// model, scale "none"), and both fell identically. rk4 at dt = 1/600 s for
+// 2 s, within 1e-8 of v_t.
+void TestForces::dragIsAForce()
+{
+    QFETCH(int, law);
+    QFETCH(int, scale);
+    Scene s = openScene({ballAt(100, 0, 0, 0, 10, 1.0), ballAt(200, 0, 0, 0, 10, 50.0)});
+    s.settings.gravity.enabled = true;
+    s.settings.drag = DragSettings{true, static_cast<DragLaw>(law), 0.001, static_cast<ForceScale>(scale)};
+    s.settings.time.integrator = IntegratorKind::Rk4;
+    s.settings.time.dt = 1.0 / 600;
+    World w;
+    QVERIFY(!w.reset(s));
+    for (int k = 0; k < 1200; ++k)
+        w.step();
+    const double g = 980.0, t = w.time();
+    double speed[2];
+    for (int i = 0; i < 2; ++i) {
+        const double m = w.balls().mass[i];
+        const double c = scale == int(ForceScale::Mass) ? 0.001 * sphereMass(10.0) / m : 0.001;
+        const double vt = law == int(DragLaw::Linear) ? g / c : std::sqrt(g / c);
+        const double expected = law == int(DragLaw::Linear) ? vt * -std::expm1(-c * t) : vt * std::tanh(g * t / vt);
+        speed[i] = w.balls().velocity(1, i);
+        qInfo("mass %g: v = %.9g px/s, closed form %.9g (terminal %.6g)", m, speed[i], expected, vt);
+        QVERIFY2(std::abs(speed[i] - expected) <= 1e-8 * vt, qPrintable(QString::number(speed[i] - expected)));
+    }
+    if (scale == int(ForceScale::Mass))
+        QVERIFY(speed[1] > 2.0 * speed[0]); // the heavy ball falls faster through air
+    else
+        QCOMPARE(speed[1], speed[0]); // the tutorial's drag ignores mass
 }
 
 QTEST_APPLESS_MAIN(TestForces)

@@ -42,7 +42,7 @@ sim::Scene springScene(sim::IntegratorKind integrator, double dt, bool drag)
     s.settings.walls = sim::WallSettings{false, false, false, false, sim::WallModel::Clamp, 1.0};
     s.settings.spring = sim::SpringSettings{true, sim::Vec2(300, 200), 4.0};
     if (drag)
-        s.settings.drag = sim::DragSettings{true, sim::DragLaw::Linear, 0.5};
+        s.settings.drag = sim::DragSettings{true, sim::DragLaw::Linear, 0.5, sim::ForceScale::None};
     s.settings.time.integrator = integrator;
     s.settings.time.dt = dt;
     sim::Ball b;

@@ -109,6 +109,8 @@ const std::vector<ControlCase>& controlCases()
         {"drag_law", "dragLawCombo", "quadratic", indexOf<sim::DragLaw>(sim::dragLawNames(), "quadratic"),
          FIELD(s.drag.law)},
         {"drag_k", "dragKSpin", 0.0125, 0.0125, FIELD(s.drag.k)},
+        {"drag_scale", "dragScaleCombo", "none", indexOf<sim::ForceScale>(sim::forceScaleNames(), "none"),
+         FIELD(s.drag.scale)},
         {"wind_mode", "windModeCombo", "noise", indexOf<sim::WindMode>(sim::windModeNames(), "noise"),
          FIELD(s.wind.mode)},
         {"wind_strength", "windStrengthSpin", 1234.0, 1234.0, FIELD(s.wind.strength)},

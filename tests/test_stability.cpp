@@ -5,6 +5,7 @@
 
 #include "sim/stability.h"
 
+#include <QRegularExpression>
 #include <QTest>
 
 #include <cmath>
@@ -45,6 +46,10 @@ private slots:
     void closePassWithoutSofteningStaysFinite();
     void adaptiveIntegratorsGiveUpInTime_data();
     void adaptiveIntegratorsGiveUpInTime();
+    void linearGrowthAtTheLimitIsRefused();
+    void messagesNeverContradictThemselves_data();
+    void messagesNeverContradictThemselves();
+    void dragAsAForceLimitsTheLightestBall();
 };
 
 // One step of semi-implicit Euler on x'' = −ω² x is [[1 − ω²h², h], [−ω²h, 1]]:
@@ -202,6 +207,83 @@ void TestStability::adaptiveIntegratorsGiveUpInTime()
     QVERIFY(finiteState(w));
     QVERIFY2(QString::fromStdString(*w.halted()).contains("add softening"), w.halted()->c_str());
     QVERIFY(w.lastStep().acceptedSteps + w.lastStep().rejectedSteps <= kMaxAdaptiveSubSteps);
+}
+
+// Semi-implicit Euler at exactly ω dt = 2: the step matrix [[−3, h], [−4/h, 1]]
+// has the double eigenvalue −1 with one eigenvector, so the amplitude grows by
+// one swing's worth every step (×707 in 50 s at ω = 10), though |λ| = 1.
+// Before, a spectral radius of 1 was taken as stable. Just below the limit
+// the eigenvalues are two and on the unit circle: stable.
+void TestStability::linearGrowthAtTheLimitIsRefused()
+{
+    World w;
+    QVERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.2)));
+    QVERIFY(w.halted());
+    qInfo("%s", w.halted()->c_str());
+    QVERIFY2(QString::fromStdString(*w.halted()).contains("Lower dt below 0.199 s"), w.halted()->c_str());
+    QVERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.199)));
+    QVERIFY(!w.halted());
+    QVERIFY(!w.reset(springScene(IntegratorKind::Verlet, 100.0, 0.2)));
+    QVERIFY(w.halted());
+}
+
+void TestStability::messagesNeverContradictThemselves_data()
+{
+    QTest::addColumn<int>("integrator");
+    QTest::addColumn<double>("limit"); // ω h
+    QTest::newRow("rk4 at 0.284 (limit 2√2/ω = 0.28284)") << int(IntegratorKind::Rk4) << 2.0 * std::sqrt(2.0);
+    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 2.0;
+    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << 1.5734;
+}
+
+// ω = 10 rad/s and dt a hair above the limit, at many dt: the message names
+// the dt with enough figures to tell it from the advice, and advises a dt
+// below the true limit (rounded down, not to the nearest). Before: "unstable
+// at dt = 0.284 s … lower dt below 0.284 s" for rk4, whose limit is 0.28284.
+void TestStability::messagesNeverContradictThemselves()
+{
+    QFETCH(int, integrator);
+    QFETCH(double, limit);
+    const double trueLimit = limit / 10.0;
+    // From 0.4% above the limit (rk4's 0.284 s against 0.28284 s) to 10%:
+    // near enough that three figures could round onto the limit.
+    for (const double above : {1.0041, 1.006, 1.01, 1.03, 1.1}) {
+        const double dt = trueLimit * above;
+        World w;
+        QVERIFY(!w.reset(springScene(static_cast<IntegratorKind>(integrator), 100.0, dt)));
+        QVERIFY(w.halted());
+        const QString m = QString::fromStdString(*w.halted());
+        const QRegularExpression re(QStringLiteral("at dt = ([0-9.e-]+) s.*Lower dt below ([0-9.e-]+) s"));
+        const auto match = re.match(m);
+        QVERIFY2(match.hasMatch(), qPrintable(m));
+        const double said = match.captured(1).toDouble(), advised = match.captured(2).toDouble();
+        QVERIFY2(match.captured(1) != match.captured(2), qPrintable(m));
+        QVERIFY2(advised < said && advised <= trueLimit, qPrintable(m));
+        QVERIFY2(std::abs(said / dt - 1.0) < 5e-3, qPrintable(m));
+        QVERIFY2(advised > 0.99 * trueLimit, qPrintable(m)); // three figures, not a loose guess
+    }
+}
+
+// Drag as a force slows a ball by k m₁₀ / m: a ball of a tenth of the
+// reference mass has c = 10 k. k = 20 /s at dt = 16 ms is k·dt = 0.32 for a
+// 10 px ball, fine, but c·dt = 3.2 > 2 for the light one: semi-implicit Euler
+// flips its velocity back and forth, growing. The check sees the lightest ball.
+void TestStability::dragAsAForceLimitsTheLightestBall()
+{
+    Scene s = openScene({ballAt(100, 100, 50, 0), ballAt(200, 100, 50, 0, 10, sphereMass(10) / 10)});
+    s.settings.drag = DragSettings{true, DragLaw::Linear, 20.0};
+    s.settings.time.dt = 0.016;
+    World w;
+    QVERIFY(!w.reset(s));
+    QVERIFY(w.halted());
+    QVERIFY2(QString::fromStdString(*w.halted()).contains("c·dt = 3.2 for the lightest ball"), w.halted()->c_str());
+    s.balls.pop_back();
+    QVERIFY(!w.reset(s));
+    QVERIFY(!w.halted());
+    s.settings.drag.scale = ForceScale::None; // the tutorial's drag: every ball c = k
+    s.balls.push_back(ballAt(200, 100, 50, 0, 10, sphereMass(10) / 10));
+    QVERIFY(!w.reset(s));
+    QVERIFY(!w.halted());
 }
 
 QTEST_APPLESS_MAIN(TestStability)

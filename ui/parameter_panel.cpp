@@ -34,7 +34,7 @@ const QHash<QString, QStringList>& controlRows()
 {
     static const QHash<QString, QStringList> rows{
         {QStringLiteral("gravity"), {"gravity_x", "gravity_y"}},
-        {QStringLiteral("drag"), {"drag_law", "drag_k"}},
+        {QStringLiteral("drag"), {"drag_law", "drag_k", "drag_scale"}},
         {QStringLiteral("wind"), {"wind_mode", "wind_strength", "wind_scale", "wind_smoothed_step", "wind_frequency"}},
         {QStringLiteral("wind_compare"), {"wind_mode", "wind_compare", "wind_strength"}},
         {QStringLiteral("random_accel"), {"random_fixed", "random_strength"}},
@@ -136,6 +136,9 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     NumberControl* k = addNumber(QStringLiteral("drag_k"), QStringLiteral("dragK"), tr("k"),
                                  Number{0.0, 1e6, 1e-4, 10.0, true, 4, 4, {}},
                                  [](const S& s) { return s.drag.k; }, [](S& s, double v) { s.drag.k = v; });
+    addChoice(QStringLiteral("drag_scale"), QStringLiteral("dragScaleCombo"), tr("Scaling"), sim::forceScaleNames(),
+              [](const S& s) { return static_cast<int>(s.drag.scale); },
+              [](S& s, int i) { s.drag.scale = static_cast<sim::ForceScale>(i); });
     // The unit of k follows the law: a = -k v (1/s) or a = -k |v| v (1/px).
     m_refreshers.push_back([this, k] {
         const bool linear = m_controller->world().settings().drag.law == sim::DragLaw::Linear;
