@@ -41,8 +41,8 @@ namespace range {
 inline constexpr Range kUnit{0.0, 1.0, false, false, ""};
 inline constexpr Range kBallPosition{-1e7, 1e7, false, false, "px"};
 inline constexpr Range kBallVelocity{-1e7, 1e7, false, false, "px/s"};
-inline constexpr Range kRadius{0.0, 1e4, true, false, "px"};
-inline constexpr Range kMass{0.0, 1e15, true, false, "mass units"};
+inline constexpr Range kRadius{sim::kMinRadius, sim::kMaxRadius, false, false, "px"};
+inline constexpr Range kMass{sim::kMinMass, sim::kMaxMass, false, false, "mass units"};
 inline constexpr Range kSpawnSpeed{0.0, 1e7, false, false, "px/s"};
 } // namespace range
 

@@ -13,6 +13,15 @@ namespace forcelab::sim {
 /// Most balls a world holds: spawning and lesson files are checked against it.
 inline constexpr int kMaxBalls = 200'000;
 
+/// Sizes and masses a ball may have. Below 1e-6 px a density-1 sphere's mass
+/// (4.19e-18) is still a normal double; a radius of 1e-110 px gave a mass of
+/// exactly 0 (r³ underflows), which no force can move. A mass below 1e-12
+/// would make 1/m overflow with the impulses of a fast collision.
+inline constexpr double kMinRadius = 1e-6; ///< px
+inline constexpr double kMaxRadius = 1e4;  ///< px
+inline constexpr double kMinMass = 1e-12;  ///< mass units
+inline constexpr double kMaxMass = 1e15;   ///< mass units
+
 /// Density of the default mass: m = density × (4/3) π r³ (equal-density spheres).
 inline constexpr double kDefaultDensity = 1.0;
 

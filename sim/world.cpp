@@ -47,10 +47,10 @@ public:
         if (m_error)
             return;
         if (!std::isfinite(v) || v > hi || (loOpen ? v <= lo : v < lo)) {
-            std::ostringstream s;
-            s.precision(17);
-            s << v << " is outside " << (loOpen ? "(" : "[") << lo << ", " << hi << "]";
-            fail(key, s.str());
+            std::string s = numberText(v);
+            s.append(" is outside ").append(loOpen ? "(" : "[").append(numberText(lo)).append(", ");
+            s.append(numberText(hi)).append("]");
+            fail(key, s);
         }
     }
     void fail(const char* key, const std::string& what)
@@ -85,8 +85,8 @@ std::optional<std::string> validateSpawn(const SpawnSettings& s)
 {
     Checker c;
     c.range("spawn.count", s.count, 0, kMaxBalls);
-    c.range("spawn.radius[0]", s.minRadius, 0.0, 1e6, true);
-    c.range("spawn.radius[1]", s.maxRadius, s.minRadius, 1e6);
+    c.range("spawn.radius[0]", s.minRadius, kMinRadius, kMaxRadius);
+    c.range("spawn.radius[1]", s.maxRadius, s.minRadius, kMaxRadius);
     c.range("spawn.speed[0]", s.minSpeed, 0.0, 1e9);
     c.range("spawn.speed[1]", s.maxSpeed, s.minSpeed, 1e9);
     c.range("spawn.per_step", s.perStep, 0.0, 1.0);
@@ -107,11 +107,30 @@ World::World(const Scene& scene)
         reset(Scene{}); // an invalid scene leaves an empty default world
 }
 
+std::optional<std::string> validateBalls(std::span<const Ball> balls)
+{
+    Checker c;
+    for (std::size_t i = 0; i < balls.size() && !c.result(); ++i) {
+        const Ball& b = balls[i];
+        const std::string at = "balls." + std::to_string(i) + ".";
+        c.finite((at + "x").c_str(), b.position.x());
+        c.finite((at + "y").c_str(), b.position.y());
+        c.finite((at + "vx").c_str(), b.velocity.x());
+        c.finite((at + "vy").c_str(), b.velocity.y());
+        c.range((at + "r").c_str(), b.radius, kMinRadius, kMaxRadius);
+        if (b.mass != 0.0) // 0: the density-1 sphere of its radius
+            c.range((at + "mass").c_str(), b.mass, kMinMass, kMaxMass);
+    }
+    return c.result();
+}
+
 std::optional<std::string> World::reset(const Scene& scene)
 {
     if (auto error = validateSettings(scene.settings))
         return error;
     if (auto error = validateSpawn(scene.spawn))
+        return error;
+    if (auto error = validateBalls(scene.balls))
         return error;
     m_settings = scene.settings;
     m_balls = buildBalls(scene);

@@ -150,6 +150,11 @@ private:
 /// Checks the spawn settings ("spawn.count: …").
 std::optional<std::string> validateSpawn(const SpawnSettings& spawn);
 
+/// Checks listed balls: finite position and velocity, radius in
+/// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass]
+/// ("balls.3.r: …").
+std::optional<std::string> validateBalls(std::span<const Ball> balls);
+
 /// Checks a full settings struct. Returns the first problem as
 /// "key.path: what is wrong" using the lesson file's key paths.
 std::optional<std::string> validateSettings(const WorldSettings& settings);

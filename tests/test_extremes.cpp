@@ -19,6 +19,7 @@
 using namespace forcelab;
 using namespace forcelab::sim;
 using forcelab::test::ballAt;
+using forcelab::test::openScene;
 
 namespace {
 
@@ -157,6 +158,7 @@ private slots:
     void twoHundredThousandBalls();
     void closePassStopsAndNamesThePair_data();
     void closePassStopsAndNamesThePair();
+    void everyBallHasAMass();
 };
 
 void TestExtremes::grid_data()
@@ -336,6 +338,27 @@ void TestExtremes::closePassStopsAndNamesThePair()
         QVERIFY2(!w.halted(), w.halted() ? w.halted()->c_str() : "");
         QVERIFY2(drift <= (softening > 0 ? 1e-3 : 1e-9), qPrintable(QString::number(drift)));
     }
+}
+
+// The smallest and largest balls a world takes have a positive, finite mass
+// and inverse mass; one radius below (1e-110 px: r³ underflowed to a mass of
+// exactly 0, which the world took) or an explicit mass of 1e-300 is refused
+// with the ball's key path, and the world keeps what it had.
+void TestExtremes::everyBallHasAMass()
+{
+    World w;
+    QVERIFY(!w.reset(openScene({ballAt(100, 100, 0, 0, kMinRadius), ballAt(200, 100, 0, 0, kMaxRadius),
+                                ballAt(300, 100, 0, 0, 10, kMinMass), ballAt(400, 100, 0, 0, 10, kMaxMass)})));
+    const BallState& b = w.balls();
+    for (int i = 0; i < b.size(); ++i) {
+        QVERIFY(b.mass[i] > 0.0 && std::isfinite(b.mass[i]));
+        QVERIFY(b.inverseMass[i] > 0.0 && std::isfinite(b.inverseMass[i]));
+    }
+    const auto tiny = w.reset(openScene({ballAt(100, 100, 0, 0, 1e-110)}));
+    QVERIFY(tiny && *tiny == "balls.0.r: 1e-110 is outside [1e-06, 10000]");
+    const auto light = w.reset(openScene({ballAt(100, 100), ballAt(100, 100, 0, 0, 10, 1e-300)}));
+    QVERIFY(light && light->rfind("balls.1.mass: ", 0) == 0);
+    QCOMPARE(w.balls().size(), 4); // refused scenes change nothing
 }
 
 QTEST_APPLESS_MAIN(TestExtremes)

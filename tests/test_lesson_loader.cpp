@@ -501,7 +501,16 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("out of range, integer") << minimal(R"("time": {"substeps": 1001})")
                                            << "t.json: time.substeps: 1001 is outside [1, 1000]";
     QTest::newRow("out of range, ball radius")
-        << minimal(R"("balls": [{"x": 1, "y": 2, "r": -4}])") << "t.json: balls.0.r: -4 is outside (0, 10000] px";
+        << minimal(R"("balls": [{"x": 1, "y": 2, "r": -4}])") << "t.json: balls.0.r: -4 is outside [1e-06, 10000] px";
+    // r³ underflows: the sphere's mass would be exactly 0 (it was accepted).
+    QTest::newRow("ball radius whose mass underflows")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "r": 1e-110}])") << "t.json: balls.0.r: 1e-110 is outside [1e-06, 10000] px";
+    QTest::newRow("ball mass too small to invert safely")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "mass": 1e-300}])")
+        << "t.json: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
+    QTest::newRow("spawn radius whose mass underflows")
+        << minimal(R"("spawn": {"count": 3, "radius": [1e-200, 5]})")
+        << "t.json: spawn.radius.0: 1e-200 is outside [1e-06, 10000] px";
     QTest::newRow("missing ball position") << minimal(R"("balls": [{"x": 1}])")
                                            << "t.json: balls.0.y: missing; give the ball's centre y in px";
     QTest::newRow("bad colour") << minimal(R"("balls": [{"x": 1, "y": 2, "color": "red"}])")
@@ -578,7 +587,7 @@ void TestLessonLoader::everyProblemIsReported()
         R"(t.json: time.substeps: expected a whole number in [1, 1000], got the string "two")",
         "t.json: models.drag.k: 1000000000 is outside [0, 1000000] 1/s (linear) or 1/px (quadratic)",
         R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)",
-        "t.json: balls.0.r: 0 is outside (0, 10000] px",
+        "t.json: balls.0.r: 0 is outside [1e-06, 10000] px",
         R"(t.json: balls.1: expected a ball object {"x": …, "y": …}, got the number 5)",
     };
     QCOMPARE(r.errors, expected);
