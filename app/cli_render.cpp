@@ -7,6 +7,7 @@
 #include "cli_args.h"
 
 #include "lessons/lesson_loader.h"
+#include "sim/step_plan.h"
 #include "ui/world_painter.h"
 
 #include <QImage>
@@ -91,16 +92,14 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (!loaded)
         return 2;
     const Lesson& lesson = *loaded;
-    // The whole number of steps closest to T, as `run --time` takes.
-    const double dt = world.settings().time.dt;
-    const auto steps = static_cast<std::int64_t>(std::llround(options->time / dt));
-    if (steps > kMaxSteps) {
-        err << "forcelab-cli render: --time: " << steps << " steps of dt = " << dt << " s is more than " << kMaxSteps
-            << "\n";
+    // Ends at T, as `run --time` does.
+    std::string why;
+    const auto plan = sim::planSteps(options->time, world.settings().time.dt, kMaxSteps, &why);
+    if (!plan) {
+        err << "forcelab-cli render: --time: " << why << "\n";
         return 2;
     }
-    for (std::int64_t k = 0; k < steps && !world.halted(); ++k)
-        world.step();
+    sim::runPlan(world, *plan);
     if (world.halted()) {
         err << lesson.source.toStdString() << ": stopped after " << world.stepCount() << " steps: " << *world.halted()
             << "\n";

@@ -7,6 +7,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
+#include "sim/step_plan.h"
 #include "sim/world.h"
 
 #include <QJsonArray>
@@ -159,19 +160,23 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         return 2;
     const Lesson& lesson = *loaded;
     const double dt = world.settings().time.dt;
-    // --time T runs the whole number of steps closest to T (dt need not divide T).
-    const std::int64_t steps = options->steps ? *options->steps
-                               : options->time ? static_cast<std::int64_t>(std::llround(*options->time / dt))
-                                               : static_cast<std::int64_t>(std::llround(10.0 / dt));
-    if (steps > kMaxSteps) {
-        err << "forcelab-cli run: --time: " << steps << " steps of dt = " << dt << " s is more than "
-            << kMaxSteps << "\n";
-        return 2;
+    // --time T ends at T: whole steps of dt, then one shorter step if dt does
+    // not divide T. --steps N takes N steps of dt. Neither: 10 s.
+    sim::StepPlan plan;
+    if (options->steps) {
+        plan.whole = *options->steps;
+    } else {
+        std::string why;
+        const auto planned = sim::planSteps(options->time.value_or(10.0), dt, kMaxSteps, &why);
+        if (!planned) {
+            err << "forcelab-cli run: --time: " << why << "\n";
+            return 2;
+        }
+        plan = *planned;
     }
 
     const auto started = std::chrono::steady_clock::now();
-    for (std::int64_t k = 0; k < steps && !world.halted(); ++k)
-        world.step();
+    sim::runPlan(world, plan);
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     // The world stopped itself: the motion blows up. Exit 3 with its reason.
     if (world.halted()) {
@@ -187,7 +192,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     const sim::Energy e = world.energy();
     const sim::StepStats& t = world.totals();
     out << std::setprecision(10) << lesson.title.toStdString() << " (" << lesson.id.toStdString() << "): "
-        << world.stepCount() << " steps of " << dt << " s with "
+        << plan.whole << " steps of " << dt << " s";
+    if (plan.last > 0.0) // dt does not divide --time: one shorter step ends the run at the time asked
+        out << ", then one of " << plan.last << " s";
+    out << " with "
         << sim::toString(world.settings().time.integrator) << ", t = " << world.time() << " s\n"
         << "  balls " << world.balls().size() << ", energy kinetic " << e.kinetic << " potential " << e.potential
         << " total " << e.total() << "\n"

@@ -22,7 +22,7 @@ std::optional<std::int64_t> wholeSteps(double duration, double dt)
     if (!(dt > 0.0) || !(duration > 0.0))
         return std::nullopt;
     const double n = std::round(duration / dt);
-    if (n < 1.0 || std::abs(n * dt - duration) > 1e-9 * duration)
+    if (!(n >= 1.0 && n <= 0x1p53) || std::abs(n * dt - duration) > 1e-9 * duration) // also refuses inf and NaN
         return std::nullopt;
     return static_cast<std::int64_t>(n);
 }

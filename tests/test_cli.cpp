@@ -43,6 +43,10 @@ private slots:
     void shortSoakKeepsEnergy();
     void badInputExitsTwo_data();
     void badInputExitsTwo();
+    void timeEndsWhereAsked_data();
+    void timeEndsWhereAsked();
+    void timeThatCannotRunIsRefused_data();
+    void timeThatCannotRunIsRefused();
 
 private:
     QTemporaryDir m_dir;
@@ -91,6 +95,63 @@ void TestCli::jsonMatchesClosedForm()
     QCOMPARE(o["wall_hits"].toInt(), 0);
     QCOMPARE(o["contacts"].toInt(), 0);
     QVERIFY(o["wall_ms"].toDouble() >= 0.0);
+}
+
+void TestCli::timeEndsWhereAsked_data()
+{
+    QTest::addColumn<QString>("time");
+    QTest::addColumn<QString>("dt");
+    QTest::addColumn<int>("steps");
+    QTest::newRow("0.1 s at dt 0.04: two steps and one of 0.02") << "0.1" << "0.04" << 3;
+    QTest::newRow("0.01 s at dt 0.04: one step of 0.01") << "0.01" << "0.04" << 1;
+    QTest::newRow("0.3 s at dt 0.1: three steps, no sliver") << "0.3" << "0.1" << 3;
+    QTest::newRow("1 s at dt 0.01") << "1" << "0.01" << 100;
+    QTest::newRow("0 s") << "0" << "0.01" << 0;
+}
+
+// --time T ends at T, whatever dt is: the free fall's closed form at T,
+// y = 50 + ½ g T², x = 100 + 30 T (the exact integrator is exact for any step,
+// the shorter last one too). Before: 0.1 s at dt = 0.04 ended at 0.12 s and
+// 0.01 s ran no step at all, both with exit 0. The lesson's own dt is what the
+// report names.
+void TestCli::timeEndsWhereAsked()
+{
+    QFETCH(QString, time);
+    QFETCH(QString, dt);
+    QFETCH(int, steps);
+    const CliResult r = runCli({"run", m_lesson, "--time", time, "--dt", dt, "--json"});
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    const double T = time.toDouble();
+    QCOMPARE(o["steps"].toInt(), steps);
+    QVERIFY2(std::abs(o["time"].toDouble() - T) <= 1e-12, qPrintable(QString::number(o["time"].toDouble(), 'g', 17)));
+    QCOMPARE(o["dt"].toDouble(), dt.toDouble());
+    const QJsonObject ball = o["balls"].toArray().at(0).toObject();
+    QVERIFY(std::abs(ball["x"].toDouble() - (100 + 30 * T)) < 1e-9);
+    QVERIFY(std::abs(ball["y"].toDouble() - (50 + 0.5 * 980 * T * T)) < 1e-9);
+}
+
+void TestCli::timeThatCannotRunIsRefused_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message");
+    // Before: exit 0 after 0 steps (T/dt beyond 2^63 went through an undefined
+    // conversion to an integer).
+    QTest::newRow("1e300 s") << QStringList{"--time", "1e300"}
+                             << "forcelab-cli run: --time: 1e+300 s is 1e+302 steps of dt = 0.01 s, more than 1000000000";
+    QTest::newRow("1 s at dt 1e-300") << QStringList{"--time", "1", "--dt", "1e-300"}
+                                      << "steps of dt = 1e-300 s, more than 1000000000";
+    QTest::newRow("negative") << QStringList{"--time", "-1"} << "--time: expects a number of seconds >= 0";
+}
+
+void TestCli::timeThatCannotRunIsRefused()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    const CliResult r = runCli(QStringList{"run", m_lesson} + args);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    QVERIFY(r.out.isEmpty());
 }
 
 void TestCli::stepsZeroPrintsInitialState()
