@@ -96,7 +96,7 @@ QString builtInId(const QString& resource)
 
 LoadResult LessonLoader::load(const QString& pathOrId, const QList<Override>& overrides)
 {
-    if (QFileInfo(pathOrId).isFile())
+    if (QFileInfo(pathOrId).exists()) // a file, or a folder that loadFile names as one
         return loadFile(pathOrId, overrides);
     // A built-in lesson by file stem ("07-gravity") or by id ("gravity").
     const QStringList builtIn = builtInFiles();
@@ -121,6 +121,8 @@ LoadResult LessonLoader::loadFile(const QString& path, const QList<Override>& ov
 {
     QFile file(path);
     const QFileInfo info(path);
+    if (info.isDir())
+        return failure({path + QStringLiteral(": is a folder, not a lesson file; give one of the .json files in it")});
     if (info.exists() && !info.isFile())
         return failure({path + QStringLiteral(": is not a file")});
     if (!file.open(QIODevice::ReadOnly))
@@ -145,9 +147,19 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        if (parseError.error == QJsonParseError::DeepNesting)
+        // Qt gives up at its own depth (1024), far past ours, without a key
+        // path: our scan finds where the lesson first went past ours.
+        if (parseError.error == QJsonParseError::DeepNesting) {
+            const QList<StructureProblem> deep = scanStructure(json, kMaxDepth, 1);
+            if (!deep.isEmpty())
+                return failure({QStringLiteral("%1:%2:%3: %4: %5")
+                                    .arg(source)
+                                    .arg(deep.first().position.line)
+                                    .arg(deep.first().position.column)
+                                    .arg(deep.first().keyPath, deep.first().problem)});
             return failure({at(source, json, parseError.offset) +
                             QStringLiteral(": nested deeper than %1 levels").arg(kMaxDepth)});
+        }
         // Qt's offset lies just past the offending token, except for trailing garbage.
         // Qt's offset lies just past the offending token, except for trailing
         // garbage and bad numbers, where we look for the token's start.

@@ -47,6 +47,9 @@ private slots:
     void timeEndsWhereAsked();
     void timeThatCannotRunIsRefused_data();
     void timeThatCannotRunIsRefused();
+    void everyCommandHasHelp_data();
+    void everyCommandHasHelp();
+    void aFolderIsNamedAsOne();
 
 private:
     QTemporaryDir m_dir;
@@ -152,6 +155,43 @@ void TestCli::timeThatCannotRunIsRefused()
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.err.contains(message), qPrintable(r.err));
     QVERIFY(r.out.isEmpty());
+}
+
+void TestCli::everyCommandHasHelp_data()
+{
+    QTest::addColumn<QString>("command");
+    for (const char* c : {"run", "validate", "bench", "sweep", "render", "soak", "params"})
+        QTest::newRow(c) << c;
+}
+
+// COMMAND --help (and -h) prints that command's usage on stdout and exits 0,
+// the same lines as the top-level usage. Before: "unknown option '--help'"
+// (run, sweep, soak, bench, render) or "--help: cannot open" (validate).
+void TestCli::everyCommandHasHelp()
+{
+    QFETCH(QString, command);
+    const CliResult all = runCli({"--help"});
+    QCOMPARE(all.exitCode, 0);
+    for (const char* flag : {"--help", "-h"}) {
+        const CliResult r = runCli({command, flag});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith("usage: forcelab-cli " + command), qPrintable(r.out + r.err));
+        QVERIFY(r.err.isEmpty());
+        const QString synopsis = r.out.section('\n', 0, 0).mid(QString("usage: forcelab-cli ").size());
+        QVERIFY2(all.out.contains(synopsis), qPrintable(synopsis));
+    }
+}
+
+// A folder given where a lesson file belongs reads the same from run and
+// validate (before: "no such file" from run, "is not a file" from validate).
+void TestCli::aFolderIsNamedAsOne()
+{
+    const QString expected = m_dir.path() + ": is a folder, not a lesson file; give one of the .json files in it";
+    for (const char* command : {"run", "validate"}) {
+        const CliResult r = runCli({command, m_dir.path()});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.trimmed() == expected, qPrintable(r.err));
+    }
 }
 
 void TestCli::stepsZeroPrintsInitialState()

@@ -558,6 +558,11 @@ void TestLessonLoader::badInput_data()
                                     << "t.json:1:35: bytes that are not UTF-8 text; save the file as UTF-8";
     QTest::newRow("deep nesting") << minimal("\"text\": " + QByteArray(40, '[') + QByteArray(40, ']'))
                                   << "t.json:1:65: text" + QString(".0").repeated(31) + ": nested deeper than 32 levels";
+    // Past Qt's own limit of 1024 levels the same place is named (before: no
+    // key path, and the column where Qt gave up, 1:1058).
+    QTest::newRow("nesting deeper than Qt's limit")
+        << minimal("\"text\": " + QByteArray(1500, '[') + QByteArray(1500, ']'))
+        << "t.json:1:65: text" + QString(".0").repeated(31) + ": nested deeper than 32 levels";
     QTest::newRow("spawn count over the limit") << minimal(R"("balls": [{"x": 1, "y": 1}], "spawn": {"count": 200000})")
                                                 << "t.json: spawn.count: 200000 spawned + 1 listed balls is more than "
                                                    "the limit of 200000";
