@@ -143,6 +143,7 @@ QJsonObject report(const Lesson& lesson, const sim::World& world, double wallMs)
         {"force_evaluations", static_cast<double>(t.forceEvaluations)},
         {"wall_hits", static_cast<double>(t.wallHits)},
         {"contacts", static_cast<double>(t.contacts)},
+        {"tolerance_floor", t.toleranceFloor},
         {"wall_ms", wallMs},
     };
 }
@@ -184,6 +185,12 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
             << "\n";
         return 3;
     }
+
+    // ias15 could not meet a tolerance below what rounding allows: say what it held instead.
+    if (world.totals().toleranceFloor > 0.0)
+        err << "note: time.tolerance " << world.settings().time.tolerance
+            << " is below what rounding allows here; ias15 held its error estimate to "
+            << world.totals().toleranceFloor << " instead\n";
 
     if (options->json) {
         out << QJsonDocument(report(lesson, world, wallMs)).toJson(QJsonDocument::Compact).toStdString() << "\n";

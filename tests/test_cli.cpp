@@ -50,6 +50,7 @@ private slots:
     void everyCommandHasHelp_data();
     void everyCommandHasHelp();
     void aFolderIsNamedAsOne();
+    void toleranceBelowRoundingIsSaid();
 
 private:
     QTemporaryDir m_dir;
@@ -192,6 +193,23 @@ void TestCli::aFolderIsNamedAsOne()
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.trimmed() == expected, qPrintable(r.err));
     }
+}
+
+// ias15 asked for 1e-15 on an orbit: it runs (before: exit 3 after a few
+// steps), works to its rounding floor and says so on stderr and in the JSON;
+// at its default tolerance it says nothing.
+void TestCli::toleranceBelowRoundingIsSaid()
+{
+    const CliResult tight =
+        runCli({"run", "orbit-energy-drift", "--integrator", "ias15", "--tolerance", "1e-15", "--time", "2", "--json"});
+    QCOMPARE(tight.exitCode, 0);
+    QVERIFY2(tight.err.startsWith("note: time.tolerance 1e-15 is below what rounding allows here"), qPrintable(tight.err));
+    const double floor = QJsonDocument::fromJson(tight.out.toUtf8()).object()["tolerance_floor"].toDouble();
+    QVERIFY(floor > 1e-15 && floor < 1e-9);
+    const CliResult usual = runCli({"run", "orbit-energy-drift", "--integrator", "ias15", "--time", "2", "--json"});
+    QCOMPARE(usual.exitCode, 0);
+    QVERIFY(usual.err.isEmpty());
+    QCOMPARE(QJsonDocument::fromJson(usual.out.toUtf8()).object()["tolerance_floor"].toDouble(), 0.0);
 }
 
 void TestCli::stepsZeroPrintsInitialState()
