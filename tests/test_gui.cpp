@@ -177,7 +177,7 @@ void GuiTest::gravityControlChangesWorldAndFall()
                             .arg(expected.x(), 0, 'g', 17).arg(expected.y(), 0, 'g', 17)));
     QVERIFY((controller.world().balls().velocity.col(0) - (u + g * t)).norm() < 1e-9 * (u + g * t).norm());
 
-    auto* restitution = panel.findChild<QDoubleSpinBox*>(QStringLiteral("restitutionSpin"));
+    auto* restitution = panel.findChild<QDoubleSpinBox*>(QStringLiteral("wallRestitutionSpin"));
     QVERIFY(restitution);
     restitution->setValue(0.8);
     QCOMPARE(controller.world().settings().walls.restitution, 0.8);

@@ -102,7 +102,7 @@ const std::vector<ControlCase>& controlCases()
         {"wall_sides", "wallBottomCheck", false, 0.0, FIELD(s.walls.bottom)},
         {"wall_model", "wallModelCombo", "reverse", indexOf<sim::WallModel>(sim::wallModelNames(), "reverse"),
          FIELD(s.walls.model)},
-        {"wall_restitution", "restitutionSpin", 0.75, 0.75, FIELD(s.walls.restitution)},
+        {"wall_restitution", "wallRestitutionSpin", 0.75, 0.75, FIELD(s.walls.restitution)},
         {"middle_wall", "middleWallCheck", true, 1.0, FIELD(s.walls.middle)},
         {"centre_only", "centreOnlyCheck", true, 1.0, FIELD(s.walls.centreOnly)},
         {"drag", "dragGroup", true, 1.0, FIELD(s.drag.enabled)},
@@ -382,7 +382,7 @@ void GuiWorkbenchTest::outOfRangeIsReportedNotClamped()
 
     // Typed 1.5 for a restitution in [0, 1]: refused by the world, said in the
     // status bar, the box back at the world's value.
-    auto* spin = window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("restitutionSpin"));
+    auto* spin = window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("wallRestitutionSpin"));
     QVERIFY(spin);
     const double before = window.controller()->world().settings().walls.restitution;
     spin->setFocus();
@@ -415,7 +415,7 @@ void GuiWorkbenchTest::resetRestoresTheLessonsValues()
     ParameterPanel* panel = window.parameterPanel();
     panel->setShowAll(true);
     QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("gravityYSpin")), 123.0));
-    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("restitutionSpin")), 0.25));
+    QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("wallRestitutionSpin")), 0.25));
     QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("dragGroup")), true));
     QVERIFY(setWidget(panel->findChild<QWidget*>(QStringLiteral("ballCountSpin")), 7.0));
     QVERIFY(!settingsDifference(window.controller()->world().settings(), lesson).isEmpty());

@@ -5,6 +5,7 @@
 #include "simulation_controller.h"
 
 #include "sim/names.h"
+#include "sim/parameters.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -101,44 +102,24 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     outer->addWidget(m_hiddenNote);
     outer->addStretch(1);
 
-    using S = Settings;
-    const QString accel = QStringLiteral(" px/s²");
-    const QString inverseSquare = QStringLiteral(" px³/s²");
-
-    addSection(QStringLiteral("gravity"), tr("Gravity"), [](const S& s) { return s.gravity.enabled; },
-               [](S& s, bool on) { s.gravity.enabled = on; });
-    const Number g{-1e7, 1e7, -2000.0, 2000.0, false, 1, 0, accel};
-    addNumber(QStringLiteral("gravity_x"), QStringLiteral("gravityX"), tr("g<sub>x</sub> (right)"), g,
-              [](const S& s) { return s.gravity.g.x(); }, [](S& s, double v) { s.gravity.g.x() = v; });
-    addNumber(QStringLiteral("gravity_y"), QStringLiteral("gravityY"), tr("g<sub>y</sub> (down)"), g,
-              [](const S& s) { return s.gravity.g.y(); }, [](S& s, double v) { s.gravity.g.y() = v; });
+    // Every setting is a row of sim/parameters.h: its label, unit, range,
+    // slider, help and accessors come from there. A section's tick box is its
+    // model's "enabled" row.
+    addModelSection(QStringLiteral("gravity"), tr("Gravity"));
+    addParameter("models.gravity.x");
+    addParameter("models.gravity.y");
 
     addSection(QStringLiteral("walls"), tr("Walls"));
     addWallSides();
-    addChoice(QStringLiteral("wall_model"), QStringLiteral("wallModelCombo"), tr("Model"), sim::wallModelNames(),
-              [](const S& s) { return static_cast<int>(s.walls.model); },
-              [](S& s, int i) { s.walls.model = static_cast<sim::WallModel>(i); });
-    const Number unit{0.0, 1.0, 0.0, 1.0, false, 3, 0, {}};
-    addNumber(QStringLiteral("wall_restitution"), QStringLiteral("restitution"), tr("Restitution"), unit,
-              [](const S& s) { return s.walls.restitution; }, [](S& s, double v) { s.walls.restitution = v; });
-    addSwitch(QStringLiteral("middle_wall"), QStringLiteral("middleWallCheck"), tr("Middle wall"),
-              tr("A wall down the middle of the box; each ball stays on its side"),
-              [](const S& s) { return s.walls.middle; }, [](S& s, bool on) { s.walls.middle = on; });
-    addSwitch(QStringLiteral("centre_only"), QStringLiteral("centreOnlyCheck"), tr("Test the centre only"),
-              tr("The wall test uses the ball's centre instead of its edge (stage 3's bug)"),
-              [](const S& s) { return s.walls.centreOnly; }, [](S& s, bool on) { s.walls.centreOnly = on; });
+    addParameter("world.wall_model");
+    addParameter("world.restitution");
+    addParameter("world.middle_wall");
+    addParameter("world.centre_only");
 
-    addSection(QStringLiteral("drag"), tr("Drag"), [](const S& s) { return s.drag.enabled; },
-               [](S& s, bool on) { s.drag.enabled = on; });
-    addChoice(QStringLiteral("drag_law"), QStringLiteral("dragLawCombo"), tr("Law"), sim::dragLawNames(),
-              [](const S& s) { return static_cast<int>(s.drag.law); },
-              [](S& s, int i) { s.drag.law = static_cast<sim::DragLaw>(i); });
-    NumberControl* k = addNumber(QStringLiteral("drag_k"), QStringLiteral("dragK"), tr("k"),
-                                 Number{0.0, 1e6, 1e-4, 10.0, true, 4, 4, {}},
-                                 [](const S& s) { return s.drag.k; }, [](S& s, double v) { s.drag.k = v; });
-    addChoice(QStringLiteral("drag_scale"), QStringLiteral("dragScaleCombo"), tr("Scaling"), sim::forceScaleNames(),
-              [](const S& s) { return static_cast<int>(s.drag.scale); },
-              [](S& s, int i) { s.drag.scale = static_cast<sim::ForceScale>(i); });
+    addModelSection(QStringLiteral("drag"), tr("Drag"));
+    addParameter("models.drag.law");
+    NumberControl* k = addParameter<NumberControl>("models.drag.k");
+    addParameter("models.drag.scale");
     // The unit of k follows the law: a = -k v (1/s) or a = -k |v| v (1/px).
     m_refreshers.push_back([this, k] {
         const bool linear = m_controller->world().settings().drag.law == sim::DragLaw::Linear;
@@ -146,132 +127,48 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     });
 
     addSection(QStringLiteral("wind"), tr("Wind"));
-    addChoice(QStringLiteral("wind_mode"), QStringLiteral("windModeCombo"), tr("Mode"), sim::windModeNames(),
-              [](const S& s) { return static_cast<int>(s.wind.mode); },
-              [](S& s, int i) { s.wind.mode = static_cast<sim::WindMode>(i); });
-    addNumber(QStringLiteral("wind_strength"), QStringLiteral("windStrength"), tr("Strength"),
-              Number{0.0, 1e7, 1.0, 1e4, true, 4, 4, accel},
-              [](const S& s) { return s.wind.strength; }, [](S& s, double v) { s.wind.strength = v; });
-    addChoice(QStringLiteral("wind_scale"), QStringLiteral("windScaleCombo"), tr("Scaling"), sim::forceScaleNames(),
-              [](const S& s) { return static_cast<int>(s.wind.scale); },
-              [](S& s, int i) { s.wind.scale = static_cast<sim::ForceScale>(i); });
-    addNumber(QStringLiteral("wind_smoothed_step"), QStringLiteral("windSmoothedStep"), tr("Smoothed step"),
-              Number{0.0, 1.0, 0.001, 1.0, true, 4, 3, {}},
-              [](const S& s) { return s.wind.smoothedStep; }, [](S& s, double v) { s.wind.smoothedStep = v; });
-    addNumber(QStringLiteral("wind_frequency"), QStringLiteral("windFrequency"), tr("Noise frequency"),
-              Number{0.0, 1e3, 0.01, 100.0, true, 4, 3, QStringLiteral(" Hz")},
-              [](const S& s) { return s.wind.noiseFrequency; }, [](S& s, double v) { s.wind.noiseFrequency = v; });
-    addChoice(QStringLiteral("wind_compare"), QStringLiteral("windCompareCombo"), tr("Compare with"),
-              sim::windModeNames(), [](const S& s) { return static_cast<int>(s.wind.compare); },
-              [](S& s, int i) { s.wind.compare = static_cast<sim::WindMode>(i); });
+    for (const char* key : {"models.wind.mode", "models.wind.strength", "models.wind.scale", "models.wind.smoothed_step",
+                            "models.wind.frequency", "models.wind.compare"})
+        addParameter(key);
 
-    addSection(QStringLiteral("random_accel"), tr("Random acceleration"),
-               [](const S& s) { return s.randomAccel.enabled; }, [](S& s, bool on) { s.randomAccel.enabled = on; });
-    addSwitch(QStringLiteral("random_fixed"), QStringLiteral("randomFixedCheck"), tr("One value per ball"),
-              tr("Off: a new random value every step. On: each ball keeps the value it drew first"),
-              [](const S& s) { return s.randomAccel.fixed; }, [](S& s, bool on) { s.randomAccel.fixed = on; });
-    addNumber(QStringLiteral("random_strength"), QStringLiteral("randomStrength"), tr("Strength"),
-              Number{0.0, 1e7, 1.0, 1e4, true, 4, 4, accel},
-              [](const S& s) { return s.randomAccel.strength; }, [](S& s, double v) { s.randomAccel.strength = v; });
+    addModelSection(QStringLiteral("random_accel"), tr("Random acceleration"));
+    addParameter("models.random_accel.fixed");
+    addParameter("models.random_accel.strength");
 
-    addSection(QStringLiteral("point"), tr("Point force"), [](const S& s) { return s.point.enabled; },
-               [](S& s, bool on) { s.point.enabled = on; });
-    addChoice(QStringLiteral("point_kind"), QStringLiteral("pointKindCombo"), tr("Kind"), sim::pointKindNames(),
-              [](const S& s) { return static_cast<int>(s.point.kind); },
-              [](S& s, int i) { s.point.kind = static_cast<sim::PointKind>(i); });
-    const Number position{-1e7, 1e7, 0.0, 1000.0, false, 1, 0, QStringLiteral(" px")};
-    addNumber(QStringLiteral("point_x"), QStringLiteral("pointX"), tr("x"), position,
-              [](const S& s) { return s.point.position.x(); }, [](S& s, double v) { s.point.position.x() = v; });
-    addNumber(QStringLiteral("point_y"), QStringLiteral("pointY"), tr("y"), position,
-              [](const S& s) { return s.point.position.y(); }, [](S& s, double v) { s.point.position.y() = v; });
-    addNumber(QStringLiteral("point_strength"), QStringLiteral("pointStrength"), tr("Strength"),
-              Number{0.0, 1e15, 1e3, 1e9, true, 4, 4, inverseSquare},
-              [](const S& s) { return s.point.strength; }, [](S& s, double v) { s.point.strength = v; });
-    addNumber(QStringLiteral("point_clamp"), QStringLiteral("pointClamp"), tr("Clamp (0 = off)"),
-              Number{0.0, 1e9, 10.0, 1e6, true, 4, 4, accel},
-              [](const S& s) { return s.point.maxAccel; }, [](S& s, double v) { s.point.maxAccel = v; });
-    addChoice(QStringLiteral("point_scale"), QStringLiteral("pointScaleCombo"), tr("Scaling"),
-              sim::forceScaleNames(), [](const S& s) { return static_cast<int>(s.point.scale); },
-              [](S& s, int i) { s.point.scale = static_cast<sim::ForceScale>(i); });
+    addModelSection(QStringLiteral("point"), tr("Point force"));
+    for (const char* key : {"models.point.kind", "models.point.x", "models.point.y", "models.point.strength",
+                            "models.point.max_accel", "models.point.scale"})
+        addParameter(key);
 
-    addSection(QStringLiteral("spring"), tr("Spring"), [](const S& s) { return s.spring.enabled; },
-               [](S& s, bool on) { s.spring.enabled = on; });
-    addNumber(QStringLiteral("spring_k"), QStringLiteral("springK"), tr("k"),
-              Number{0.0, 1e6, 0.01, 1e3, true, 4, 4, QStringLiteral(" 1/s²")},
-              [](const S& s) { return s.spring.k; }, [](S& s, double v) { s.spring.k = v; });
-    addNumber(QStringLiteral("spring_x"), QStringLiteral("springX"), tr("Anchor x"), position,
-              [](const S& s) { return s.spring.anchor.x(); }, [](S& s, double v) { s.spring.anchor.x() = v; });
-    addNumber(QStringLiteral("spring_y"), QStringLiteral("springY"), tr("Anchor y"), position,
-              [](const S& s) { return s.spring.anchor.y(); }, [](S& s, double v) { s.spring.anchor.y() = v; });
+    addModelSection(QStringLiteral("spring"), tr("Spring"));
+    addParameter("models.spring.k");
+    addParameter("models.spring.x");
+    addParameter("models.spring.y");
 
-    addSection(QStringLiteral("mutual_gravity"), tr("Gravity between balls"),
-               [](const S& s) { return s.mutualGravity.enabled; },
-               [](S& s, bool on) { s.mutualGravity.enabled = on; });
-    addNumber(QStringLiteral("mutual_g"), QStringLiteral("mutualG"), tr("G"),
-              Number{-1e12, 1e12, 1.0, 1e8, true, 4, 4, QStringLiteral(" px³/(m·s²)")},
-              [](const S& s) { return s.mutualGravity.G; }, [](S& s, double v) { s.mutualGravity.G = v; });
-    addNumber(QStringLiteral("mutual_softening"), QStringLiteral("mutualSoftening"), tr("Softening ε"),
-              Number{0.0, 1e6, 0.1, 100.0, true, 4, 3, QStringLiteral(" px")},
-              [](const S& s) { return s.mutualGravity.softening; },
-              [](S& s, double v) { s.mutualGravity.softening = v; });
+    addModelSection(QStringLiteral("mutual_gravity"), tr("Gravity between balls"));
+    addParameter("models.mutual_gravity.G");
+    addParameter("models.mutual_gravity.softening");
 
-    addSection(QStringLiteral("homing"), tr("Homing"), [](const S& s) { return s.homing.enabled; },
-               [](S& s, bool on) { s.homing.enabled = on; });
-    addNumber(QStringLiteral("homing_strength"), QStringLiteral("homingStrength"), tr("Strength"),
-              Number{0.0, 1e6, 0.01, 1e3, true, 4, 4, QStringLiteral(" 1/s²")},
-              [](const S& s) { return s.homing.strength; }, [](S& s, double v) { s.homing.strength = v; });
+    addModelSection(QStringLiteral("homing"), tr("Homing"));
+    addParameter("models.homing.strength");
 
-    addSection(QStringLiteral("pointer"), tr("Pointer force"), [](const S& s) { return s.pointer.enabled; },
-               [](S& s, bool on) { s.pointer.enabled = on; });
-    addNumber(QStringLiteral("pointer_strength"), QStringLiteral("pointerStrength"), tr("Strength"),
-              Number{0.0, 1e15, 1e3, 1e9, true, 4, 4, inverseSquare},
-              [](const S& s) { return s.pointer.strength; }, [](S& s, double v) { s.pointer.strength = v; });
-    addNumber(QStringLiteral("pointer_clamp"), QStringLiteral("pointerClamp"), tr("Clamp (0 = off)"),
-              Number{0.0, 1e9, 10.0, 1e6, true, 4, 4, accel},
-              [](const S& s) { return s.pointer.maxAccel; }, [](S& s, double v) { s.pointer.maxAccel = v; });
+    addModelSection(QStringLiteral("pointer"), tr("Pointer force"));
+    addParameter("models.pointer.strength");
+    addParameter("models.pointer.max_accel");
 
-    addSection(QStringLiteral("speed_limit"), tr("Speed limit"), [](const S& s) { return s.speedLimit.enabled; },
-               [](S& s, bool on) { s.speedLimit.enabled = on; });
-    addNumber(QStringLiteral("speed_limit"), QStringLiteral("speedLimit"), tr("Largest speed"),
-              Number{0.0, 1e9, 10.0, 1e5, true, 4, 4, QStringLiteral(" px/s")},
-              [](const S& s) { return s.speedLimit.max; }, [](S& s, double v) { s.speedLimit.max = v; });
+    addModelSection(QStringLiteral("speed_limit"), tr("Speed limit"));
+    addParameter("models.speed_limit.max");
 
     addSection(QStringLiteral("collisions"), tr("Collisions"));
-    addChoice(QStringLiteral("detection"), QStringLiteral("detectionCombo"), tr("Detection"), sim::detectionNames(),
-              [](const S& s) { return static_cast<int>(s.collisions.detection); },
-              [](S& s, int i) { s.collisions.detection = static_cast<sim::Detection>(i); });
-    addChoice(QStringLiteral("response"), QStringLiteral("responseCombo"), tr("Response"), sim::responseNames(),
-              [](const S& s) { return static_cast<int>(s.collisions.response); },
-              [](S& s, int i) { s.collisions.response = static_cast<sim::Response>(i); });
-    addNumber(QStringLiteral("ball_restitution"), QStringLiteral("ballRestitution"), tr("Restitution"), unit,
-              [](const S& s) { return s.collisions.restitution; },
-              [](S& s, double v) { s.collisions.restitution = v; });
-    addSwitch(QStringLiteral("continuous"), QStringLiteral("continuousCheck"), tr("Continuous"),
-              tr("Find the moment of impact inside the step"),
-              [](const S& s) { return s.collisions.continuous; }, [](S& s, bool on) { s.collisions.continuous = on; });
-    addSwitch(QStringLiteral("resting"), QStringLiteral("restingCheck"), tr("Resting contacts"),
-              tr("Under gravity, solve the contacts of a pile several times per step so it stands; "
-                 "off: one pass, and a pile sinks into itself"),
-              [](const S& s) { return s.collisions.resting; }, [](S& s, bool on) { s.collisions.resting = on; });
+    for (const char* key : {"models.collisions.detection", "models.collisions.response",
+                            "models.collisions.restitution", "models.collisions.continuous",
+                            "models.collisions.resting"})
+        addParameter(key);
 
     addSection(QStringLiteral("time"), tr("Time"));
     addTimeScale();
-    addChoice(QStringLiteral("integrator"), QStringLiteral("integratorCombo"), tr("Integrator"),
-              sim::integratorNames(), [](const S& s) { return static_cast<int>(s.time.integrator); },
-              [](S& s, int i) { s.time.integrator = static_cast<sim::IntegratorKind>(i); });
-    addNumber(QStringLiteral("dt"), QStringLiteral("dt"), tr("Step dt"),
-              Number{0.0, 1000.0, 0.1, 100.0, true, 3, 4, QStringLiteral(" ms"), 1e3},
-              [](const S& s) { return s.time.dt; }, [](S& s, double v) { s.time.dt = v; });
-    addNumber(QStringLiteral("substeps"), QStringLiteral("substeps"), tr("Sub-steps"),
-              Number{1.0, 1000.0, 1.0, 1000.0, true, 0, 0, {}},
-              [](const S& s) { return static_cast<double>(s.time.substeps); },
-              [](S& s, double v) { s.time.substeps = static_cast<int>(std::lround(v)); });
-    addNumber(QStringLiteral("tolerance"), QStringLiteral("tolerance"), tr("rk45 tolerance"),
-              Number{1e-15, 1.0, 1e-12, 1e-2, true, 3, 3, {}},
-              [](const S& s) { return s.time.tolerance; }, [](S& s, double v) { s.time.tolerance = v; });
-    addSwitch(QStringLiteral("per_frame"), QStringLiteral("perFrameCheck"), tr("Move per frame"),
-              tr("Ignore dt: every step moves the balls as if 1/60 s had passed (stage 5's bug)"),
-              [](const S& s) { return s.time.perFrame; }, [](S& s, bool on) { s.time.perFrame = on; });
+    for (const char* key : {"time.integrator", "time.dt", "time.substeps", "time.tolerance", "time.per_frame"})
+        addParameter(key);
     addSeed();
 
     addSection(QStringLiteral("balls"), tr("Balls"));
@@ -489,6 +386,82 @@ void ParameterPanel::addRow(const QString& key, const QString& label, QWidget* f
     QString plain = label;
     plain.remove(QStringLiteral("<sub>")).remove(QStringLiteral("</sub>"));
     m_rows.push_back(Row{key, section.key, section.box->title() + QLatin1Char(' ') + plain.toLower(), field});
+}
+
+QGroupBox* ParameterPanel::addModelSection(const QString& model, const QString& title)
+{
+    const sim::Parameter* on = sim::findParameter("models." + model.toStdString() + ".enabled");
+    Q_ASSERT(on);
+    return addSection(model, title, [on](const Settings& s) { return on->get(s) != 0.0; },
+                      [on](Settings& s, bool enabled) { on->set(s, enabled ? 1.0 : 0.0); });
+}
+
+namespace {
+
+// "wind_smoothed_step" → "windSmoothedStep": the objectName stem of a row's widget.
+QString camelCase(std::string_view control)
+{
+    QString out;
+    bool upper = false;
+    for (const char c : control) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        out += upper ? QChar(c).toUpper() : QChar(c);
+        upper = false;
+    }
+    return out;
+}
+
+} // namespace
+
+QWidget* ParameterPanel::addParameterWidget(std::string_view key)
+{
+    const sim::Parameter* row = sim::findParameter(key);
+    Q_ASSERT_X(row, "ParameterPanel", "a key that is not in sim/parameters.cpp");
+    const sim::Parameter& p = *row;
+    const QString control = qs(p.control);
+    const QString stem = camelCase(p.control);
+    const QString label = qs(p.label);
+    auto get = [&p](const Settings& s) { return p.get(s); };
+    switch (p.type) {
+    case sim::ParameterType::Boolean:
+        return addSwitch(control, stem + QStringLiteral("Check"), label, qs(p.help),
+                         [get](const Settings& s) { return get(s) != 0.0; },
+                         [&p](Settings& s, bool on) { p.set(s, on ? 1.0 : 0.0); });
+    case sim::ParameterType::Choice: {
+        QComboBox* combo = addChoice(control, stem + QStringLiteral("Combo"), label, p.choices(),
+                                     [get](const Settings& s) { return static_cast<int>(get(s)); },
+                                     [&p](Settings& s, int i) { p.set(s, i); });
+        combo->setToolTip(qs(p.help));
+        return combo;
+    }
+    case sim::ParameterType::Number:
+    case sim::ParameterType::Integer:
+        break;
+    }
+    // dt reads better in ms; everything else in the row's own unit.
+    const bool ms = key == "time.dt";
+    const double toShown = ms ? 1e3 : 1.0;
+    Number spec;
+    spec.min = p.lo * toShown;
+    spec.max = p.hi * toShown;
+    spec.sliderMin = p.sliderLo * toShown;
+    spec.sliderMax = p.sliderHi * toShown;
+    spec.log = p.scale == sim::SliderScale::Log;
+    // Whole numbers; four significant figures across decades; otherwise
+    // decimals that suit the slider's span.
+    spec.decimals = p.type == sim::ParameterType::Integer ? 0 : spec.log ? 4 : p.sliderHi - p.sliderLo <= 1.0 ? 3 : 1;
+    spec.significant = p.type == sim::ParameterType::Number && spec.log ? 4 : 0;
+    spec.suffix = ms ? QStringLiteral(" ms") : p.unit.empty() ? QString() : QLatin1Char(' ') + qs(p.unit);
+    spec.toShown = toShown;
+    const bool whole = p.type == sim::ParameterType::Integer;
+    NumberControl* number = addNumber(control, stem, label, spec, get, [&p, whole](Settings& s, double v) {
+        p.set(s, whole ? static_cast<double>(std::lround(v)) : v);
+    });
+    number->setToolTip(qs(p.help));
+    return number;
 }
 
 NumberControl* ParameterPanel::addNumber(const QString& key, const QString& objectName, const QString& label,

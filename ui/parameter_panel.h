@@ -93,6 +93,16 @@ private:
 
     QGroupBox* addSection(const QString& key, const QString& title, std::function<bool(const Settings&)> enabled = {},
                           std::function<void(Settings&, bool)> setEnabled = {});
+    /// A section whose tick box is the model's "enabled" row ("models.<model>.enabled").
+    QGroupBox* addModelSection(const QString& model, const QString& title);
+    /// The row of sim/parameters.h with this key, as a spin box and slider, a
+    /// combo box or a check box named after its control ("dragK" + "Spin").
+    QWidget* addParameterWidget(std::string_view key);
+    template <class W = QWidget>
+    W* addParameter(std::string_view key)
+    {
+        return static_cast<W*>(addParameterWidget(key));
+    }
     NumberControl* addNumber(const QString& key, const QString& objectName, const QString& label, const Number& spec,
                              std::function<double(const Settings&)> get, std::function<void(Settings&, double)> set);
     QComboBox* addChoice(const QString& key, const QString& objectName, const QString& label,
