@@ -1,6 +1,7 @@
 #include "lesson_loader.h"
 
 #include "json_text_checks.h"
+#include "lesson_controls.h"
 #include "lesson_limits.h"
 #include "lesson_overrides.h"
 #include "lesson_parser.h"

@@ -1,5 +1,6 @@
 #include "lesson_parser.h"
 
+#include "lesson_controls.h"
 #include "lesson_limits.h"
 #include "nearest_key.h"
 #include "sim/names.h"
@@ -570,17 +571,6 @@ const QStringList& overlayNames()
 {
     static const QStringList names{"grid",    "velocity", "acceleration", "readout",   "colliding", "markers",
                                    "vanes",   "trails",   "impact",       "broadphase", "histogram", "totals"};
-    return names;
-}
-
-const QStringList& controlNames()
-{
-    static const QStringList names{"gravity", "drag",     "wind",      "point",       "spring",    "mutual_gravity",
-                                   "homing",  "pointer",  "speed_limit", "collisions", "walls",     "wall_model",
-                                   "restitution", "integrator", "dt", "substeps", "tolerance", "seed", "spawn",
-                                   // the switches of the stages that break something on purpose
-                                   "middle_wall", "centre_only", "fully_inside", "per_frame", "random_accel",
-                                   "wind_compare", "point_clamp", "response", "detection", "resting", "time_scale"};
     return names;
 }
 

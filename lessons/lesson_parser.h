@@ -24,8 +24,6 @@ struct ParseResult {
 
 /// Names accepted in "overlays" (drawn by the workbench's canvas).
 const QStringList& overlayNames();
-/// Names accepted in "controls" (the settings a lesson puts first in the Parameters dock).
-const QStringList& controlNames();
 
 /// Reads a format-1 lesson object. Absent keys keep the defaults of the
 /// sim structs; a model absent from "models" is off.

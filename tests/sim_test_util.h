@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the simulation tests.
 
+#include "sim/parameters.h"
 #include "sim/world.h"
 
 #include <cmath>
@@ -25,6 +26,24 @@ inline sim::Ball ballAt(double x, double y, double vx = 0.0, double vy = 0.0, do
     b.radius = r;
     b.mass = mass;
     return b;
+}
+
+/// A value the parameter row allows that differs from `from`: the other
+/// choice or switch state, or a point inside its slider range.
+inline double anotherValue(const sim::Parameter& p, double from)
+{
+    switch (p.type) {
+    case sim::ParameterType::Boolean:
+    case sim::ParameterType::Choice:
+        return from == 0.0 ? 1.0 : 0.0;
+    case sim::ParameterType::Integer:
+        return from == p.lo ? p.lo + 1 : p.lo;
+    case sim::ParameterType::Number:
+        break;
+    }
+    const double mid = p.scale == sim::SliderScale::Log ? std::sqrt(p.sliderLo * p.sliderHi)
+                                                        : 0.5 * (p.sliderLo + p.sliderHi);
+    return mid != from ? mid : 0.25 * p.sliderLo + 0.75 * p.sliderHi;
 }
 
 /// Least-squares slope of log(err) against log(dt): the observed order.

@@ -16,6 +16,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
+#include "sim/parameters.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -103,6 +104,8 @@ const std::vector<ControlCase>& controlCases()
         {"wall_model", "wallModelCombo", "reverse", indexOf<sim::WallModel>(sim::wallModelNames(), "reverse"),
          FIELD(s.walls.model)},
         {"wall_restitution", "wallRestitutionSpin", 0.75, 0.75, FIELD(s.walls.restitution)},
+        {"box_width", "boxWidthSpin", 700.0, 700.0, FIELD(s.box.width)},
+        {"box_height", "boxHeightSpin", 450.0, 450.0, FIELD(s.box.height)},
         {"middle_wall", "middleWallCheck", true, 1.0, FIELD(s.walls.middle)},
         {"centre_only", "centreOnlyCheck", true, 1.0, FIELD(s.walls.centreOnly)},
         {"drag", "dragGroup", true, 1.0, FIELD(s.drag.enabled)},
@@ -282,6 +285,20 @@ void GuiWorkbenchTest::tableCoversEveryControl()
         QVERIFY2(!rows.isEmpty(), qPrintable(name));
         for (const QString& row : rows)
             QVERIFY2(panel.rowKeys().contains(row), qPrintable(row));
+    }
+    // Every row of the parameter table has its control in the panel: a row
+    // of its own, a model's tick box (its section), or the wall switches.
+    panel.setShowAll(true);
+    const QStringList sections = panel.visibleSections();
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = QString::fromUtf8(p.key.data(), static_cast<qsizetype>(p.key.size()));
+        if (key.startsWith(QStringLiteral("world.walls.")))
+            QVERIFY(panel.rowKeys().contains(QStringLiteral("wall_sides")));
+        else if (key.endsWith(QStringLiteral(".enabled"))) // "models.drag.enabled": the "drag" section's tick box
+            QVERIFY2(sections.contains(key.section(QLatin1Char('.'), 1, 1)), qPrintable(key));
+        else
+            QVERIFY2(panel.rowKeys().contains(QString::fromUtf8(p.control.data(), static_cast<qsizetype>(p.control.size()))),
+                     qPrintable(key));
     }
 }
 

@@ -3,6 +3,8 @@
 // allowed, its key and control are unique, and the world's validation refuses
 // exactly what the row's range refuses.
 
+#include "sim_test_util.h"
+
 #include "sim/names.h"
 #include "sim/parameter_reference.h"
 #include "sim/parameters.h"
@@ -16,26 +18,9 @@
 #include <string>
 
 using namespace forcelab::sim;
+using forcelab::test::anotherValue;
 
 namespace {
-
-// A value the row allows that differs from `from`: the other end of its
-// choices or switch, or a point inside its slider range.
-double anotherValue(const Parameter& p, double from)
-{
-    switch (p.type) {
-    case ParameterType::Boolean:
-        return from == 0.0 ? 1.0 : 0.0;
-    case ParameterType::Choice:
-        return from == 0.0 ? 1.0 : 0.0;
-    case ParameterType::Integer:
-        return from == p.lo ? p.lo + 1 : p.lo;
-    case ParameterType::Number:
-        break;
-    }
-    const double mid = p.scale == SliderScale::Log ? std::sqrt(p.sliderLo * p.sliderHi) : 0.5 * (p.sliderLo + p.sliderHi);
-    return mid != from ? mid : 0.25 * p.sliderLo + 0.75 * p.sliderHi;
-}
 
 // Every row's value in a settings struct.
 std::vector<double> allValues(const WorldSettings& s)

@@ -4,6 +4,7 @@
 #include "parameter_commands.h"
 #include "simulation_controller.h"
 
+#include "lessons/lesson_controls.h"
 #include "sim/names.h"
 #include "sim/parameters.h"
 
@@ -28,45 +29,6 @@
 namespace forcelab {
 
 namespace {
-
-// Which rows each lesson `controls` name shows. A name may show rows of
-// several sections ("restitution": the walls' and the balls').
-const QHash<QString, QStringList>& controlRows()
-{
-    static const QHash<QString, QStringList> rows{
-        {QStringLiteral("gravity"), {"gravity_x", "gravity_y"}},
-        {QStringLiteral("drag"), {"drag_law", "drag_k", "drag_scale"}},
-        {QStringLiteral("wind"), {"wind_mode", "wind_strength", "wind_scale", "wind_smoothed_step", "wind_frequency"}},
-        {QStringLiteral("wind_compare"), {"wind_mode", "wind_compare", "wind_strength"}},
-        {QStringLiteral("random_accel"), {"random_fixed", "random_strength"}},
-        {QStringLiteral("point"), {"point_kind", "point_x", "point_y", "point_strength", "point_clamp", "point_scale"}},
-        {QStringLiteral("spring"), {"spring_k", "spring_x", "spring_y"}},
-        {QStringLiteral("mutual_gravity"), {"mutual_g", "mutual_softening"}},
-        {QStringLiteral("homing"), {"homing_strength"}},
-        {QStringLiteral("pointer"), {"pointer_strength", "pointer_clamp"}},
-        {QStringLiteral("speed_limit"), {"speed_limit"}},
-        {QStringLiteral("collisions"), {"detection", "response", "ball_restitution", "continuous", "resting"}},
-        {QStringLiteral("walls"), {"wall_sides", "wall_model", "wall_restitution"}},
-        {QStringLiteral("wall_model"), {"wall_model"}},
-        {QStringLiteral("restitution"), {"wall_restitution", "ball_restitution"}},
-        {QStringLiteral("middle_wall"), {"middle_wall"}},
-        {QStringLiteral("centre_only"), {"centre_only"}},
-        {QStringLiteral("integrator"), {"integrator"}},
-        {QStringLiteral("dt"), {"dt"}},
-        {QStringLiteral("substeps"), {"substeps"}},
-        {QStringLiteral("tolerance"), {"tolerance"}},
-        {QStringLiteral("per_frame"), {"per_frame"}},
-        {QStringLiteral("seed"), {"seed"}},
-        {QStringLiteral("spawn"), {"ball_count"}},
-        {QStringLiteral("fully_inside"), {"fully_inside"}},
-        {QStringLiteral("point_clamp"), {"point_clamp"}},
-        {QStringLiteral("response"), {"response"}},
-        {QStringLiteral("detection"), {"detection"}},
-        {QStringLiteral("resting"), {"resting"}},
-        {QStringLiteral("time_scale"), {"time_scale"}},
-    };
-    return rows;
-}
 
 // Shown whatever the lesson lists: how fast the film runs.
 const QStringList kAlwaysShown{QStringLiteral("time_scale")};
@@ -109,7 +71,9 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     addParameter("models.gravity.x");
     addParameter("models.gravity.y");
 
-    addSection(QStringLiteral("walls"), tr("Walls"));
+    addSection(QStringLiteral("walls"), tr("Box and walls"));
+    addParameter("world.width");
+    addParameter("world.height");
     addWallSides();
     addParameter("world.wall_model");
     addParameter("world.restitution");
@@ -192,14 +156,14 @@ void ParameterPanel::refresh()
 
 QStringList ParameterPanel::rowsForControl(const QString& control)
 {
-    return controlRows().value(control);
+    return lessons::controlRows().value(control);
 }
 
 void ParameterPanel::setLessonControls(const QStringList& controls)
 {
     m_controls.clear();
     for (const QString& name : controls) {
-        if (!controlRows().contains(name)) {
+        if (!lessons::controlRows().contains(name)) {
             qWarning("Parameters: the lesson control \"%s\" has no widgets here; ignored", qPrintable(name));
             continue;
         }
@@ -231,7 +195,7 @@ void ParameterPanel::updateVisibility()
     // The lesson's rows, in the order its controls name them; then the rest.
     QStringList lessonRows;
     for (const QString& control : m_controls)
-        for (const QString& row : controlRows().value(control))
+        for (const QString& row : lessons::controlRows().value(control))
             if (!lessonRows.contains(row))
                 lessonRows.append(row);
     const bool everything = m_showAll || m_controls.isEmpty();
