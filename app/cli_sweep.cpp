@@ -50,24 +50,12 @@ struct Problem {
     std::function<double(const World&)> energyError;      // |E − E_exact| / |E_exact| now; null: none
 };
 
+// The reference problems' balls have mass 1 unless they say otherwise.
 Ball makeBall(double x, double y, double vx, double vy, double r = 10.0, double mass = 1.0)
 {
-    Ball b;
-    b.position = Vec2(x, y);
-    b.velocity = Vec2(vx, vy);
-    b.radius = r;
-    b.mass = mass;
-    return b;
+    return ballAt(x, y, vx, vy, r, mass);
 }
 
-Scene openScene(std::vector<Ball> balls)
-{
-    Scene s;
-    s.settings.walls = WallSettings{false, false, false, false, WallModel::Clamp, 1.0};
-    s.settings.box = BoxSettings{600.0, 400.0};
-    s.balls = std::move(balls);
-    return s;
-}
 
 // Kepler's problem (sim/kepler.h): a = 100 px, period 1 s, starting at
 // periapsis. The end is 5/16 of an orbit past the whole orbits: at whole

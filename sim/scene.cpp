@@ -82,4 +82,22 @@ BallState buildBalls(const Scene& scene)
     return state;
 }
 
+Ball ballAt(double x, double y, double vx, double vy, double r, double mass)
+{
+    Ball b;
+    b.position = Vec2(x, y);
+    b.velocity = Vec2(vx, vy);
+    b.radius = r;
+    b.mass = mass;
+    return b;
+}
+
+Scene openScene(std::vector<Ball> balls)
+{
+    Scene s;
+    s.settings.walls = WallSettings{false, false, false, false, WallModel::Clamp, 1.0};
+    s.balls = std::move(balls);
+    return s;
+}
+
 } // namespace forcelab::sim

@@ -32,6 +32,14 @@ struct Scene {
     SpawnSettings spawn;
 };
 
+/// A ball at (x, y) px with velocity (vx, vy) px/s, radius r px and mass m
+/// (0: the density-1 sphere of its radius): for tests, tools and reference
+/// problems that build scenes in code.
+Ball ballAt(double x, double y, double vx = 0.0, double vy = 0.0, double r = 10.0, double mass = 0.0);
+
+/// A scene with these balls, no walls and no models.
+Scene openScene(std::vector<Ball> balls);
+
 /// The default palette of spawned balls (six colours, readable on a projector).
 const std::vector<Rgb>& defaultPalette();
 

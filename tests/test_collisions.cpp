@@ -7,6 +7,7 @@
 #include "sim/collision/collision_system.h"
 #include "sim/collision/positional_correction.h"
 #include "sim/collision/response.h"
+#include "sim/scene.h"
 
 #include <QTest>
 
@@ -32,12 +33,7 @@ BallState makeBalls(const std::vector<Ball>& balls)
 
 Ball ball(double x, double y, double vx, double vy, double r = 10.0, double mass = 0.0)
 {
-    Ball b;
-    b.position = Vec2(x, y);
-    b.velocity = Vec2(vx, vy);
-    b.radius = r;
-    b.mass = mass;
-    return b;
+    return ballAt(x, y, vx, vy, r, mass);
 }
 
 WallSettings noWalls() { return WallSettings{false, false, false, false, WallModel::Clamp, 1.0}; }
