@@ -10,6 +10,7 @@
 #include "world_settings.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace forcelab::sim {
 
@@ -43,7 +44,12 @@ public:
     double potential(const Matrix2X& x) const;
 
     /// True when no enabled model depends on velocity (drag).
-    bool velocityIndependent() const { return !m_settings.drag.enabled; }
+    bool velocityIndependent() const { return m_velocityIndependent; }
+
+    /// Adds one model's acceleration (it need not be on) with this model's
+    /// scale factors and inputs: for per-source breakdowns. Not counted as an
+    /// evaluation.
+    void addOne(const struct ForceModelInfo& model, const Matrix2X& x, const Matrix2X& v, double t, Matrix2X& a) const;
 
     /// Horizontal wind on a reference ball at time t, px/s².
     double windAt(double t) const;
@@ -57,6 +63,8 @@ private:
     VectorX m_windScale;  // per-ball factor of the wind (none / radius / mass)
     VectorX m_pointScale; // per-ball factor of the point force
     VectorX m_dragScale;  // per-ball factor of the drag (empty: the same for every ball)
+    std::vector<const struct ForceModelInfo*> m_active; // the models that are on, in table order
+    bool m_velocityIndependent = true;
     mutable std::int64_t m_evaluations = 0;
 };
 

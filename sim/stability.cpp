@@ -2,6 +2,7 @@
 
 #include "ball_state.h"
 #include "force_model.h"
+#include "force_models.h"
 #include "integrator_info.h"
 #include "integrators.h"
 #include "names.h"
@@ -25,12 +26,9 @@ struct LinearModel {
 LinearModel linearModel(const WorldSettings& s, double dragFactor)
 {
     LinearModel m;
-    if (s.spring.enabled)
-        m.omega2 += s.spring.k;
-    if (s.homing.enabled)
-        m.omega2 += s.homing.strength;
-    if (s.drag.enabled && s.drag.law == DragLaw::Linear)
-        m.damping = s.drag.k * dragFactor; // the ball that drag slows fastest
+    for (const ForceModelInfo& model : forceModels())
+        if (model.on(s) && model.stiffness)
+            model.stiffness(s, dragFactor, m.omega2, m.damping);
     return m;
 }
 

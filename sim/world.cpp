@@ -1,6 +1,7 @@
 #include "world.h"
 
 #include "close_pass.h"
+#include "force_models.h"
 #include "integrator_info.h"
 #include "names.h"
 #include "parameters.h"
@@ -341,11 +342,9 @@ namespace {
 // acceleration once it is taken away does work that energy() cannot see.
 WorldSettings conservativeOnly(WorldSettings s)
 {
-    s.drag.enabled = false;
-    s.wind.mode = WindMode::Off;
-    s.randomAccel.enabled = false;
-    s.pointer.enabled = false;
-    s.point.maxAccel = 0.0;
+    for (const ForceModelInfo& model : forceModels())
+        if (model.conservativePart)
+            model.conservativePart(s);
     return s;
 }
 
@@ -525,6 +524,25 @@ Matrix2X World::accelerations() const
     Matrix2X a;
     ForceModel(m_settings, m_balls, m_inputs).acceleration(m_balls.position, m_balls.velocity, m_time, a);
     return a;
+}
+
+std::vector<World::SourceAcceleration> World::accelerationBySource(int i) const
+{
+    std::vector<SourceAcceleration> out;
+    if (i < 0 || i >= m_balls.size())
+        return out;
+    // Each model on its own, as the step's force model would add it: the
+    // scale factors come from a ForceModel of the world's own settings.
+    const ForceModel all(m_settings, m_balls, m_inputs);
+    Matrix2X a;
+    for (const ForceModelInfo& model : forceModels()) {
+        if (!model.on(m_settings))
+            continue;
+        a.setZero(2, m_balls.size());
+        all.addOne(model, m_balls.position, m_balls.velocity, m_time, a);
+        out.push_back(SourceAcceleration{model.name, Vec2(a.col(i))});
+    }
+    return out;
 }
 
 } // namespace forcelab::sim

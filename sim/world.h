@@ -13,6 +13,8 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace forcelab::sim {
 
@@ -94,6 +96,15 @@ public:
 
     /// Acceleration of every ball in the current state (for the readout).
     Matrix2X accelerations() const;
+
+    /// Ball i's acceleration from each model that is on, in the order the
+    /// step adds them (sim/force_models.h), with the step's own inputs
+    /// (wind, random values, pointer). They add up to accelerations().col(i).
+    struct SourceAcceleration {
+        std::string_view model;
+        Vec2 acceleration; ///< px/s²
+    };
+    std::vector<SourceAcceleration> accelerationBySource(int i) const;
     /// The wind acting now on a reference ball, px/s² (+ blows right).
     double wind() const;
     /// The comparison wind (settings().wind.compare), px/s²; it acts on nothing.

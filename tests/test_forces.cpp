@@ -71,6 +71,7 @@ private slots:
     void compareWindActsOnNothing();
     void dragIsAForce_data();
     void dragIsAForce();
+    void sourcesAddUpToTheAcceleration();
 };
 
 void TestForces::noModelsNoAcceleration()
@@ -549,6 +550,39 @@ void TestForces::dragIsAForce()
         QVERIFY(speed[1] > 2.0 * speed[0]); // the heavy ball falls faster through air
     else
         QCOMPARE(speed[1], speed[0]); // the tutorial's drag ignores mass
+}
+
+// Every model on at once (wind, random values and the pointer from the
+// world's own inputs after a step): the per-source accelerations the
+// Inspector shows add up to the acceleration the step uses, to rounding, and
+// name each model that is on once.
+void TestForces::sourcesAddUpToTheAcceleration()
+{
+    Scene s = openScene({ballAt(100, 100, 30, -20, 8), ballAt(300, 250, -10, 5, 12), ballAt(450, 120, 0, 40, 5)});
+    WorldSettings& w = s.settings;
+    w.gravity.enabled = true;
+    w.drag = DragSettings{true, DragLaw::Quadratic, 0.01};
+    w.wind.mode = WindMode::Noise;
+    w.randomAccel.enabled = true;
+    w.point = PointForceSettings{true, PointKind::Repel, Vec2(250, 200), 1e5, 500.0, ForceScale::Radius};
+    w.spring = SpringSettings{true, Vec2(300, 200), 2.0};
+    w.homing.enabled = true;
+    w.pointer.enabled = true;
+    w.mutualGravity = MutualGravitySettings{true, 1000.0, 5.0};
+    World world;
+    QVERIFY(!world.reset(s));
+    world.setPointer(PointerInput{true, false, Vec2(200, 150)});
+    world.step();
+    const Matrix2X total = world.accelerations();
+    for (int i = 0; i < world.balls().size(); ++i) {
+        const auto sources = world.accelerationBySource(i);
+        QCOMPARE(sources.size(), std::size_t(9));
+        Vec2 sum = Vec2::Zero();
+        for (const auto& source : sources)
+            sum += source.acceleration;
+        QVERIFY2((sum - total.col(i)).norm() <= 1e-12 * total.col(i).norm(),
+                 qPrintable(QString("ball %1: %2").arg(i).arg((sum - total.col(i)).norm())));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestForces)

@@ -37,73 +37,20 @@ QLabel* valueLabel(const QString& name, QWidget* parent)
     return label;
 }
 
-// All force models off: each one is then switched on alone.
-sim::WorldSettings withoutForces(sim::WorldSettings s)
-{
-    s.gravity.enabled = false;
-    s.drag.enabled = false;
-    s.wind.mode = sim::WindMode::Off;
-    s.randomAccel.enabled = false;
-    s.point.enabled = false;
-    s.spring.enabled = false;
-    s.mutualGravity.enabled = false;
-    s.homing.enabled = false;
-    s.pointer.enabled = false;
-    return s;
-}
-
 } // namespace
 
 std::vector<InspectorDock::ModelForce> InspectorDock::modelForces(const sim::World& world, int i,
-                                                                  const sim::Vec2& acceleration)
+                                                                  const sim::Vec2& /*acceleration*/)
 {
     std::vector<ModelForce> forces;
-    const sim::BallState& balls = world.balls();
-    if (i < 0 || i >= balls.size())
+    if (i < 0 || i >= world.balls().size())
         return forces;
-    const sim::WorldSettings& s = world.settings();
-    const double m = balls.mass[i];
-
-    sim::BallState one;
-    one.assign(std::vector<sim::Ball>{balls.ball(i)});
-    sim::StepInputs inputs;
-    inputs.pointer = world.pointer();
-
-    // a of one model alone, on `state`, column `column`.
-    auto alone = [&](const char* name, auto enable, const sim::BallState& state, int column) {
-        sim::WorldSettings only = withoutForces(s);
-        enable(only);
-        const sim::ForceModel model(only, state, inputs);
-        sim::Matrix2X a(2, state.size());
-        model.acceleration(state.position, state.velocity, world.time(), a);
-        forces.push_back(ModelForce{QString::fromLatin1(name), m * sim::Vec2(a.col(column))});
-    };
-    if (s.gravity.enabled)
-        alone("gravity", [](sim::WorldSettings& o) { o.gravity.enabled = true; }, one, 0);
-    if (s.drag.enabled)
-        alone("drag", [](sim::WorldSettings& o) { o.drag.enabled = true; }, one, 0);
-    if (s.wind.mode != sim::WindMode::Off) {
-        // The wind's value lives in the world's generator: the public wind()
-        // on a reference ball times this ball's scaling factor.
-        const double factor = sim::scaleFactors(s.wind.scale, one)[0];
-        forces.push_back(ModelForce{QStringLiteral("wind"), m * sim::Vec2(world.wind() * factor, 0.0)});
-    }
-    if (s.point.enabled)
-        alone("point force", [](sim::WorldSettings& o) { o.point.enabled = true; }, one, 0);
-    if (s.spring.enabled)
-        alone("spring", [](sim::WorldSettings& o) { o.spring.enabled = true; }, one, 0);
-    if (s.homing.enabled)
-        alone("homing", [](sim::WorldSettings& o) { o.homing.enabled = true; }, one, 0);
-    if (s.pointer.enabled)
-        alone("pointer", [](sim::WorldSettings& o) { o.pointer.enabled = true; }, one, 0);
-    if (s.mutualGravity.enabled)
-        alone("between balls", [](sim::WorldSettings& o) { o.mutualGravity.enabled = true; }, balls, i);
-    if (s.randomAccel.enabled) {
-        sim::Vec2 rest = m * acceleration;
-        for (const ModelForce& f : forces)
-            rest -= f.force;
-        forces.push_back(ModelForce{QStringLiteral("random"), rest});
-    }
+    // F = m a for each model that is on, with the world's own wind, random
+    // values and pointer (sim/force_models.h lists the models).
+    const double m = world.balls().mass[i];
+    for (const sim::World::SourceAcceleration& source : world.accelerationBySource(i))
+        forces.push_back(ModelForce{QString::fromUtf8(source.model.data(), static_cast<qsizetype>(source.model.size())),
+                                    m * source.acceleration});
     return forces;
 }
 
