@@ -43,6 +43,7 @@ inline constexpr Range kBallPosition{-1e7, 1e7, false, false, "px"};
 inline constexpr Range kBallVelocity{-1e7, 1e7, false, false, "px/s"};
 inline constexpr Range kRadius{sim::kMinRadius, sim::kMaxRadius, false, false, "px"};
 inline constexpr Range kMass{sim::kMinMass, sim::kMaxMass, false, false, "mass units"};
+inline constexpr Range kCharge{-sim::kMaxCharge, sim::kMaxCharge, false, false, "charge units"};
 inline constexpr Range kSpawnSpeed{0.0, 1e7, false, false, "px/s"};
 } // namespace range
 

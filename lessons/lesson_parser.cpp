@@ -483,7 +483,7 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
         r.fail(base, QStringLiteral("%1 balls is more than the limit of %2").arg(balls.size()).arg(kMaxBalls));
         return;
     }
-    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "color"};
+    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "q", "color"};
     out.clear();
     out.reserve(static_cast<std::size_t>(balls.size()));
     for (qsizetype i = 0; i < balls.size(); ++i) {
@@ -504,6 +504,7 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
         r.number(o, p, "vy", range::kBallVelocity, b.velocity.y());
         r.number(o, p, "r", range::kRadius, b.radius);
         r.number(o, p, "mass", range::kMass, b.mass);
+        r.number(o, p, "q", range::kCharge, b.charge);
         if (o.contains("color"))
             r.colourValue(o.value("color"), join(p, "color"), b.color);
         out.push_back(b);

@@ -203,6 +203,8 @@ QByteArray ballLine(const sim::Ball& b)
              {"r", num(b.radius)}};
     if (b.mass != 0.0) // 0 means "density 1 sphere": leave the key out
         f.push_back({"mass", num(b.mass)});
+    if (b.charge != 1.0) // 1 is the default
+        f.push_back({"q", num(b.charge)});
     f.push_back({"color", colour(b.color)});
     return inlineObject(f);
 }

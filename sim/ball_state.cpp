@@ -16,6 +16,7 @@ void BallState::clear()
     radius.resize(0);
     mass.resize(0);
     inverseMass.resize(0);
+    charge.resize(0);
     color.clear();
     home.resize(2, 0);
     colliding.clear();
@@ -31,6 +32,7 @@ void BallState::resize(int n)
     radius.conservativeResize(n);
     mass.conservativeResize(n);
     inverseMass.conservativeResize(n);
+    charge.conservativeResize(n);
     color.resize(static_cast<std::size_t>(n), 0);
     colliding.resize(static_cast<std::size_t>(n), 0);
     if (n > old) {
@@ -40,6 +42,7 @@ void BallState::resize(int n)
         radius.tail(n - old).setZero();
         mass.tail(n - old).setZero();
         inverseMass.tail(n - old).setZero();
+        charge.tail(n - old).setZero();
     }
 }
 
@@ -64,6 +67,7 @@ void BallState::set(int i, const Ball& b)
     velocity.col(i) = b.velocity;
     home.col(i) = b.home;
     radius[i] = b.radius;
+    charge[i] = b.charge;
     color[static_cast<std::size_t>(i)] = b.color;
     colliding[static_cast<std::size_t>(i)] = 0;
     setMass(i, b.mass > 0.0 ? b.mass : sphereMass(b.radius));
@@ -82,6 +86,7 @@ Ball BallState::ball(int i) const
     b.velocity = velocity.col(i);
     b.radius = radius[i];
     b.mass = mass[i];
+    b.charge = charge[i];
     b.color = color[static_cast<std::size_t>(i)];
     b.home = home.col(i);
     return b;

@@ -21,6 +21,7 @@ inline constexpr double kMinRadius = 1e-6; ///< px
 inline constexpr double kMaxRadius = 1e4;  ///< px
 inline constexpr double kMinMass = 1e-12;  ///< mass units
 inline constexpr double kMaxMass = 1e15;   ///< mass units
+inline constexpr double kMaxCharge = 1e6;  ///< charge units, either sign
 
 /// Density of the default mass: m = density × (4/3) π r³ (equal-density spheres).
 inline constexpr double kDefaultDensity = 1.0;
@@ -36,6 +37,7 @@ struct Ball {
     double mass = 0.0;       ///< mass units; 0 means sphereMass(radius)
     Rgb color = 0x5080e0;
     Vec2 home{0.0, 0.0};     ///< px, where homing pulls this ball
+    double charge = 1.0;     ///< charge units; what a magnetic field acts on (1: like the 10 px reference ball)
 };
 
 struct BallState {
@@ -46,6 +48,7 @@ struct BallState {
     VectorX inverseMass; ///< 1/mass, kept in step with mass
     std::vector<Rgb> color;
     Matrix2X home;     ///< px, home of each ball's colour (homing)
+    VectorX charge;    ///< charge units, per ball
     /// Set by the collision stage: 1 if the ball touches another ball this step.
     std::vector<unsigned char> colliding;
 

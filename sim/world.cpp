@@ -121,6 +121,7 @@ std::optional<std::string> validateBalls(std::span<const Ball> balls)
         c.range((at + "r").c_str(), b.radius, kMinRadius, kMaxRadius);
         if (b.mass != 0.0) // 0: the density-1 sphere of its radius
             c.range((at + "mass").c_str(), b.mass, kMinMass, kMaxMass);
+        c.range((at + "q").c_str(), b.charge, -kMaxCharge, kMaxCharge);
     }
     return c.result();
 }

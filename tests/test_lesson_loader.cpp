@@ -136,6 +136,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
         COMPARE_BITS(p.velocity.y(), q.velocity.y());
         COMPARE_BITS(p.radius, q.radius);
         COMPARE_BITS(p.mass, q.mass);
+        COMPARE_BITS(p.charge, q.charge);
         QCOMPARE(p.color, q.color);
     }
     const sim::SpawnSettings& u = a.scene.spawn;
@@ -508,6 +509,9 @@ void TestLessonLoader::badInput_data()
     // r³ underflows: the sphere's mass would be exactly 0 (it was accepted).
     QTest::newRow("ball radius whose mass underflows")
         << minimal(R"("balls": [{"x": 1, "y": 2, "r": 1e-110}])") << "t.json: balls.0.r: 1e-110 is outside [1e-06, 10000] px";
+    QTest::newRow("ball charge out of range")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "q": -2e6}])")
+        << "t.json: balls.0.q: -2000000 is outside [-1000000, 1000000] charge units";
     QTest::newRow("ball mass too small to invert safely")
         << minimal(R"("balls": [{"x": 1, "y": 2, "mass": 1e-300}])")
         << "t.json: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
@@ -778,6 +782,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     a.velocity = {-1e7, 1.0 / 7.0};
     a.radius = 1e-3;
     a.mass = 1e15;
+    a.charge = -1.0 / 3.0;
     a.color = 0x0a0b0c;
     sim::Ball b;
     b.radius = 1e4; // mass 0: the sphere mass, written without "mass"
