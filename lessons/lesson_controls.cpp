@@ -1,12 +1,17 @@
 #include "lesson_controls.h"
 
+#include "sim/parameters.h"
+
+#include <QSet>
+
 namespace forcelab::lessons {
 
 // Which rows each lesson `controls` name shows. A name may show rows of
 // several sections ("restitution": the walls' and the balls').
 const QHash<QString, QStringList>& controlRows()
 {
-    static const QHash<QString, QStringList> rows{
+    static const QHash<QString, QStringList> rows = [] {
+    QHash<QString, QStringList> rows{
         {QStringLiteral("gravity"), {"gravity_x", "gravity_y"}},
         {QStringLiteral("drag"), {"drag_law", "drag_k", "drag_scale"}},
         {QStringLiteral("wind"), {"wind_mode", "wind_strength", "wind_scale", "wind_smoothed_step", "wind_frequency"}},
@@ -39,6 +44,21 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("resting"), {"resting"}},
         {QStringLiteral("time_scale"), {"time_scale"}},
     };
+    // A model that has no entry above shows its own rows under its own name
+    // ("models.magnetic.*" → "magnetic"), so a new model needs no entry here.
+    QSet<QString> added;
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = QString::fromUtf8(p.key.data(), static_cast<qsizetype>(p.key.size()));
+        if (!key.startsWith(QStringLiteral("models.")) || key.endsWith(QStringLiteral(".enabled")))
+            continue;
+        const QString model = key.section(QLatin1Char('.'), 1, 1);
+        if (rows.contains(model) && !added.contains(model))
+            continue;
+        added.insert(model);
+        rows[model] << QString::fromUtf8(p.control.data(), static_cast<qsizetype>(p.control.size()));
+    }
+    return rows;
+    }();
     return rows;
 }
 

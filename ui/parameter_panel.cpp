@@ -135,6 +135,23 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
         addParameter(key);
     addSeed();
 
+    // A model the panel does not place above gets a section of its own, with
+    // its rows in table order: a new model needs nothing here.
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = qs(p.key);
+        if (!key.startsWith(QStringLiteral("models.")))
+            continue;
+        const QString model = key.section(QLatin1Char('.'), 1, 1);
+        const bool placed = std::any_of(m_sections.begin(), m_sections.end(),
+                                        [&](const Section& section) { return section.key == model; });
+        if (key.endsWith(QStringLiteral(".enabled"))) {
+            if (!placed)
+                addModelSection(model, qs(p.label));
+        } else if (m_sections.back().key == model && rowIndex(qs(p.control)) < 0) {
+            addParameter(p.key);
+        }
+    }
+
     addSection(QStringLiteral("balls"), tr("Balls"));
     addBallCount();
     addFullyInside();
