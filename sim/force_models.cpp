@@ -114,6 +114,16 @@ double mutualPairPotential(double G, double eps, double m1m2, double r)
 }
 
 
+// Magnetic field B out of the screen: a = (q/m) m₁₀ B (v_y, −v_x). It is
+// always at right angles to v, so it turns the ball and does no work.
+void addMagnetic(const MagneticSettings& s, const BallState& b, const Matrix2X& v, Matrix2X& a)
+{
+    const double m10 = sphereMass(kReferenceRadius);
+    const Eigen::ArrayXd w = (s.B * m10) * (b.charge.array() * b.inverseMass.array()); // ω per ball, rad/s
+    a.row(0).array() += w.transpose() * v.row(1).array();
+    a.row(1).array() -= w.transpose() * v.row(0).array();
+}
+
 // Potential energies: U with −∇U/m = the model's acceleration.
 
 // U = −m g·x: falling along g lowers the energy.
@@ -257,6 +267,16 @@ const ForceModelInfo kModels[] = {
      .conservativePart = &off,
      .switchOff = [](WorldSettings& s) { s.mutualGravity.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "mutual gravity depends on position"; }},
+    // No potential and nothing to book: it does no work, so the energy that
+    // energy() sees must stay as it is, and any change is the integrator's.
+    {.name = "magnetic",
+     .on = [](const WorldSettings& s) { return s.magnetic.enabled; },
+     .add = [](const ForceContext& c, const Matrix2X&, const Matrix2X& v, double, Matrix2X& a) {
+         addMagnetic(c.settings.magnetic, c.balls, v, a);
+     },
+     .switchOff = [](WorldSettings& s) { s.magnetic.enabled = false; },
+     .notConstant = [](const WorldSettings&) -> const char* { return "the magnetic force depends on velocity"; },
+     .velocityDependent = true},
 };
 
 } // namespace

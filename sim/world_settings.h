@@ -117,6 +117,16 @@ struct HomingSettings {
     double strength = 5.0; ///< 1/s², a = strength × (home - x), a spring to the ball's home
 };
 
+/// A uniform magnetic field B out of the screen: F = q v × B, which turns
+/// every moving charge without changing its speed. In the plane, with y down,
+/// a = (q / m) m₁₀ B (v_y, −v_x), scaled like drag so that the 10 px ball
+/// with charge 1 circles at ω = B; a ball of mass m and charge q circles at
+/// ω = q B m₁₀ / m, on a circle of radius r = v / ω = m v / (q B m₁₀).
+struct MagneticSettings {
+    bool enabled = false;
+    double B = 1.0; ///< rad/s, how fast the 10 px reference ball with charge 1 turns
+};
+
 struct PointerSettings {
     bool enabled = false;
     double strength = 2e6; ///< px³/s², inverse-square pull (hover) or push (pressed)
@@ -169,6 +179,7 @@ struct WorldSettings {
     MutualGravitySettings mutualGravity;
     HomingSettings homing;
     PointerSettings pointer;
+    MagneticSettings magnetic;
     SpeedLimitSettings speedLimit;
     CollisionSettings collisions;
 };

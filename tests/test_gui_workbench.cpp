@@ -147,6 +147,8 @@ const std::vector<ControlCase>& controlCases()
         {"pointer", "pointerGroup", true, 1.0, FIELD(s.pointer.enabled)},
         {"pointer_strength", "pointerStrengthSpin", 5e6, 5e6, FIELD(s.pointer.strength)},
         {"pointer_clamp", "pointerClampSpin", 0.0, 0.0, FIELD(s.pointer.maxAccel)},
+        {"magnetic", "magneticGroup", true, 1.0, FIELD(s.magnetic.enabled)},
+        {"magnetic_b", "magneticBSpin", 2.5, 2.5, FIELD(s.magnetic.B)},
         {"speed_limit", "speedLimitGroup", true, 1.0, FIELD(s.speedLimit.enabled)},
         {"speed_limit", "speedLimitSpin", 450.0, 450.0, FIELD(s.speedLimit.max)},
         {"detection", "detectionCombo", "grid", indexOf<sim::Detection>(sim::detectionNames(), "grid"),
@@ -218,7 +220,7 @@ QString settingsDifference(const sim::WorldSettings& a, const sim::WorldSettings
     SAME(point.enabled) SAME(point.kind) SAME(point.position.x()) SAME(point.position.y()) SAME(point.strength)
     SAME(point.maxAccel) SAME(point.scale)
     SAME(spring.enabled) SAME(spring.anchor.x()) SAME(spring.anchor.y()) SAME(spring.k)
-    SAME(mutualGravity.enabled) SAME(mutualGravity.G) SAME(mutualGravity.softening)
+    SAME(mutualGravity.enabled) SAME(mutualGravity.G) SAME(mutualGravity.softening) SAME(magnetic.enabled) SAME(magnetic.B)
     SAME(homing.enabled) SAME(homing.strength)
     SAME(pointer.enabled) SAME(pointer.strength) SAME(pointer.maxAccel)
     SAME(speedLimit.enabled) SAME(speedLimit.max)
