@@ -165,6 +165,7 @@ private slots:
     void orbitEnergyDrift();
     void bouncingExactKeepsHeight();
     void stacksStandWithRestingContacts();
+    void magneticCirclesAndEulersSpiral();
 };
 
 // 00: coloured balls drift towards the home of their colour (colliding on the
@@ -834,6 +835,55 @@ void TestLessonsForcesCollisions::stacksStandWithRestingContacts()
     QCOMPARE(r.sideways, 0.0);
     QVERIFY2(o.big < 0.5 * 360.0, qPrintable(QString::number(o.big)));
     QVERIFY2(o8.big > 0.9 * 360.0, qPrintable(QString::number(o8.big)));
+}
+
+// 36: each ball circles at ω = q B m₁₀ / m on a circle of radius v / ω
+// about x₀ + (v_y, −v_x) / ω; the text names the radii: 50, 50 (the other
+// way round), 25 and 100 px. rk4 at dt = 1/60 keeps every ball on its circle
+// to 0.01 px for 10 s and its speed to 1e-6. With euler the speed grows by
+// √(1 + (ω dt)²) every step: after 600 steps 100 px/s becomes 139.535 px/s for
+// the red ball, exactly as that product says (1e-9).
+void TestLessonsForcesCollisions::magneticCirclesAndEulersSpiral()
+{
+    LOAD_SCENE(scene, "magnetic-field");
+    QVERIFY(scene.settings.magnetic.enabled);
+    const double B = scene.settings.magnetic.B, m10 = sim::sphereMass(10.0);
+    sim::World w(scene);
+    const sim::BallState start = w.balls();
+    const double expectedRadius[] = {50.0, 50.0, 25.0, 100.0};
+    std::vector<sim::Vec2> centre;
+    std::vector<double> omega;
+    for (int i = 0; i < start.size(); ++i) {
+        omega.push_back(start.charge[i] * B * m10 / start.mass[i]);
+        const sim::Vec2 v = start.velocity.col(i);
+        centre.push_back(sim::Vec2(start.position.col(i)) + sim::Vec2(v.y(), -v.x()) / omega.back());
+        QVERIFY(std::abs(v.norm() / std::abs(omega.back()) - expectedRadius[i]) < 1e-9);
+    }
+    double worstRadius = 0.0, worstSpeed = 0.0;
+    for (int k = 0; k < 600; ++k) {
+        w.step();
+        for (int i = 0; i < start.size(); ++i) {
+            worstRadius = std::max(worstRadius, std::abs((sim::Vec2(w.balls().position.col(i)) - centre[i]).norm() -
+                                                         expectedRadius[i]));
+            worstSpeed = std::max(worstSpeed, std::abs(w.balls().velocity.col(i).norm() /
+                                                           start.velocity.col(i).norm() - 1.0));
+        }
+    }
+    qInfo("36: rk4 over 10 s: radius off by at most %.3g px, speed by %.3g", worstRadius, worstSpeed);
+    QVERIFY(worstRadius < 0.01);
+    QVERIFY(worstSpeed < 1e-6);
+
+    LOAD_SCENE(euler, "magnetic-field", Override{"time.integrator", "euler"});
+    sim::World e(euler);
+    for (int k = 0; k < 600; ++k)
+        e.step();
+    const double dt = euler.settings.time.dt;
+    for (int i = 0; i < start.size(); ++i) {
+        const double expected = start.velocity.col(i).norm() * std::pow(1.0 + omega[i] * omega[i] * dt * dt, 300.0);
+        const double got = e.balls().velocity.col(i).norm();
+        QVERIFY2(std::abs(got / expected - 1.0) < 1e-9, qPrintable(QString("ball %1: %2 vs %3").arg(i).arg(got).arg(expected)));
+    }
+    qInfo("36: euler after 10 s: red ball %.6f px/s (started at 100)", e.balls().velocity.col(0).norm());
 }
 
 QTEST_GUILESS_MAIN(TestLessonsForcesCollisions)
