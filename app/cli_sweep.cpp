@@ -7,6 +7,7 @@
 
 #include "cli_commands.h"
 
+#include "sim/integrator_info.h"
 #include "sim/kepler.h"
 #include "sim/names.h"
 #include "sim/work_precision.h"
@@ -424,7 +425,7 @@ void drawPanel(QPainter& p, const QRectF& area, const Problem& problem, const st
         const auto kind = static_cast<IntegratorKind>(k);
         std::vector<const Row*> line;
         // Adaptive methods: their tolerance sweep at the outer step of 1/16 s.
-        const bool adaptive = kind == IntegratorKind::Rk45 || kind == IntegratorKind::Ias15;
+        const bool adaptive = integratorInfo(kind).adaptive;
         for (const Row* r : rows)
             if (r->integrator == kind && (!adaptive || r->dt == 1.0 / 16))
                 line.push_back(r);
@@ -570,7 +571,7 @@ int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     for (const Problem& p : problems) {
         for (std::size_t k = 0; k < integratorNames().size(); ++k) {
             const auto kind = static_cast<IntegratorKind>(k);
-            const bool adaptive = kind == IntegratorKind::Rk45 || kind == IntegratorKind::Ias15;
+            const bool adaptive = integratorInfo(kind).adaptive;
             const auto [from, to] = dtRange(kind);
             for (int e = from; e <= to; ++e)
                 jobs.push_back({&p, kind, std::ldexp(1.0, -e), adaptive ? kDefaultTolerance : 0.0});
@@ -621,8 +622,11 @@ int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     // Fitted orders: slope of log(error) against log(dt).
     out << "\nFitted order (slope of log error against log dt over the runs with 1e-10 < error / size < 1e-2):\n";
     out << std::left << std::setw(20) << "problem";
-    const IntegratorKind fixed[] = {IntegratorKind::Euler, IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet,
-                                    IntegratorKind::Rk4, IntegratorKind::Yoshida4};
+    // Every fixed-step method with an order to fit.
+    std::vector<IntegratorKind> fixed;
+    for (const IntegratorInfo& info : integrators())
+        if (!info.adaptive && info.order > 0.0)
+            fixed.push_back(info.kind);
     for (IntegratorKind k : fixed)
         out << std::right << std::setw(21) << std::string(toString(k)) + " (" +
                                                    std::to_string(int(theoreticalOrder(k))) + ")";
