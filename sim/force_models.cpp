@@ -171,10 +171,6 @@ double mutualPotential(const ForceContext& c, const Matrix2X& x)
     return u;
 }
 
-// The models whose work is not in any potential are switched off for the
-// conservative part; the point force keeps its unclamped pull.
-void off(WorldSettings&) {}
-
 const ForceModelInfo kModels[] = {
     {.name = "gravity",
      .on = [](const WorldSettings& s) { return s.gravity.enabled; },
@@ -182,7 +178,6 @@ const ForceModelInfo kModels[] = {
          addUniformGravity(c.settings.gravity, a);
      },
      .potential = &gravityPotential,
-     .conservativePart = &off,
      .switchOff = [](WorldSettings& s) { s.gravity.enabled = false; }},
     {.name = "drag",
      .on = [](const WorldSettings& s) { return s.drag.enabled; },
@@ -244,7 +239,6 @@ const ForceModelInfo kModels[] = {
          addSpring(c.settings.spring, x, a);
      },
      .potential = &springPotential,
-     .conservativePart = &off,
      .switchOff = [](WorldSettings& s) { s.spring.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "the spring force depends on position"; },
      .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.spring.k; }},
@@ -254,7 +248,6 @@ const ForceModelInfo kModels[] = {
          addHoming(c.settings.homing, c.balls.home, x, a);
      },
      .potential = &homingPotential,
-     .conservativePart = &off,
      .switchOff = [](WorldSettings& s) { s.homing.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "homing depends on position"; },
      .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.homing.strength; }},
@@ -264,7 +257,6 @@ const ForceModelInfo kModels[] = {
          addMutualGravity(c.settings.mutualGravity, c.balls.mass, x, a);
      },
      .potential = &mutualPotential,
-     .conservativePart = &off,
      .switchOff = [](WorldSettings& s) { s.mutualGravity.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "mutual gravity depends on position"; }},
     // No potential and nothing to book: it does no work, so the energy that

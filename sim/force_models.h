@@ -39,8 +39,9 @@ struct ForceModelInfo {
     /// by the accounting instead).
     double (*potential)(const ForceContext&, const Matrix2X& x) = nullptr;
     /// Turns `s` into the settings of the model's conservative part: off when
-    /// it has no potential (drag, wind), unclamped for the point force, as it
-    /// is otherwise. The accounting books what the rest does.
+    /// it has no potential (drag, wind), unclamped for the point force;
+    /// nullptr when the whole model is conservative (or, like the magnetic
+    /// field, does no work). The accounting books what the rest does.
     void (*conservativePart)(WorldSettings& s) = nullptr;
     /// Switches the model off.
     void (*switchOff)(WorldSettings& s);

@@ -6,6 +6,8 @@
 #include "sim/world.h"
 
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace forcelab::test {
@@ -13,6 +15,21 @@ namespace forcelab::test {
 // Scenes built in code: sim's own helpers (sim/scene.h).
 using sim::ballAt;
 using sim::openScene;
+
+/// Starts `world` on the scene with this integrator and step and takes
+/// `steps` steps (fewer if the world halts). Returns why the scene was
+/// refused, or nullopt.
+inline std::optional<std::string> runFor(sim::World& world, sim::Scene scene, sim::IntegratorKind integrator, double dt,
+                                         int steps)
+{
+    scene.settings.time.integrator = integrator;
+    scene.settings.time.dt = dt;
+    if (auto refused = world.reset(scene))
+        return refused;
+    for (int k = 0; k < steps && !world.halted(); ++k)
+        world.step();
+    return std::nullopt;
+}
 
 /// A value the parameter row allows that differs from `from`: the other
 /// choice or switch state, or a point inside its slider range.

@@ -529,12 +529,8 @@ void TestForces::dragIsAForce()
     Scene s = openScene({ballAt(100, 0, 0, 0, 10, 1.0), ballAt(200, 0, 0, 0, 10, 50.0)});
     s.settings.gravity.enabled = true;
     s.settings.drag = DragSettings{true, static_cast<DragLaw>(law), 0.001, static_cast<ForceScale>(scale)};
-    s.settings.time.integrator = IntegratorKind::Rk4;
-    s.settings.time.dt = 1.0 / 600;
     World w;
-    QVERIFY(!w.reset(s));
-    for (int k = 0; k < 1200; ++k)
-        w.step();
+    QVERIFY(!forcelab::test::runFor(w, s, IntegratorKind::Rk4, 1.0 / 600, 1200));
     const double g = 980.0, t = w.time();
     double speed[2];
     for (int i = 0; i < 2; ++i) {

@@ -293,12 +293,8 @@ void TestReferenceIntegrator::springFarFromTheOrigin()
     QFETCH(double, anchor);
     Scene s = openScene({ballAt(anchor + 100.0, 200.0)});
     s.settings.spring = SpringSettings{true, Vec2(anchor, 200.0), 100.0};
-    s.settings.time.integrator = IntegratorKind::Ias15;
-    s.settings.time.dt = 1.0 / 60;
     World world;
-    QVERIFY(!world.reset(s));
-    for (int k = 0; k < 600; ++k)
-        world.step();
+    QVERIFY(!forcelab::test::runFor(world, s, IntegratorKind::Ias15, 1.0 / 60, 600));
     QVERIFY2(!world.halted(), world.halted() ? world.halted()->c_str() : "");
     const double expected = anchor + 100.0 * std::cos(10.0 * world.time());
     const double error = std::abs(world.balls().position(0, 0) - expected);
@@ -317,12 +313,8 @@ void TestReferenceIntegrator::stiffQuadraticDrag()
 {
     Scene s = openScene({ballAt(100.0, 200.0, 1e4, 0.0)});
     s.settings.drag = DragSettings{true, DragLaw::Quadratic, 1.0};
-    s.settings.time.integrator = IntegratorKind::Ias15;
-    s.settings.time.dt = 1.0 / 60;
     World world;
-    QVERIFY(!world.reset(s));
-    for (int k = 0; k < 60; ++k)
-        world.step();
+    QVERIFY(!forcelab::test::runFor(world, s, IntegratorKind::Ias15, 1.0 / 60, 60));
     QVERIFY2(!world.halted(), world.halted() ? world.halted()->c_str() : "");
     const double t = world.time(), kv0 = 1e4;
     const double v = 1e4 / (1.0 + kv0 * t), x = 100.0 + std::log1p(kv0 * t);
