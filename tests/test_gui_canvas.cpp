@@ -16,6 +16,8 @@
 #include <QBuffer>
 #include <QLineSeries>
 #include <QMouseEvent>
+
+#include <cstring>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextStream>
@@ -91,6 +93,7 @@ void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton butto
 class GuiCanvasTest : public QObject {
     Q_OBJECT
 private slots:
+    void clickSelectsWithoutTouchingThePhysics();
     void overlayNamesSwitchOverlays();
     void velocityArrowPointsAlongVelocity();
     void trailRingIsBoundedAndOrdered();
@@ -405,13 +408,20 @@ void GuiCanvasTest::draggingABallThrowsIt()
     // -1.2 widget px every 10 ms is (300, -100) world px/s at scale 1.2.
     const QPointF grab = canvas.worldToWidget({305, 200});
     sendMouse(&canvas, QEvent::MouseButtonPress, grab, Qt::LeftButton, Qt::LeftButton, 1000);
-    QCOMPARE(canvas.draggedBall(), 0);
+    QCOMPARE(canvas.draggedBall(), -1); // a press selects; the ball is taken only once the pointer moves
     QCOMPARE(canvas.selectedBall(), 0);
-    QVERIFY(!controller.world().pointer().inside); // no pointer forces while a ball is held
+    QVERIFY(!controller.world().pointer().inside); // no pointer forces while the button is down on a ball
+    const int grabAfter = QApplication::startDragDistance(); // px, Manhattan, the platform's drag distance
     QPointF at = grab;
     for (int k = 1; k <= 12; ++k) {
         at += QPointF(3.6, -1.2);
         sendMouse(&canvas, QEvent::MouseMove, at, Qt::NoButton, Qt::LeftButton, 1000 + 10 * k);
+        if ((at - grab).manhattanLength() < grabAfter) { // not yet taken: untouched
+            QCOMPARE(canvas.draggedBall(), -1);
+            QCOMPARE(sim::Vec2(balls.velocity.col(0)), sim::Vec2(0, 0));
+            continue;
+        }
+        QCOMPARE(canvas.draggedBall(), 0);
         // The ball follows the pointer, keeping where it was grabbed, at rest.
         const sim::Vec2 want = canvas.widgetToWorld(at) - sim::Vec2(5, 0);
         QVERIFY((sim::Vec2(balls.position.col(0)) - want).norm() < 1e-9);
@@ -444,6 +454,45 @@ void GuiCanvasTest::draggingABallThrowsIt()
     sendMouse(&canvas, QEvent::MouseMove, c + QPointF(12, 0), Qt::NoButton, Qt::LeftButton, 2020);
     sendMouse(&canvas, QEvent::MouseButtonRelease, c + QPointF(12, 0), Qt::LeftButton, Qt::NoButton, 2120);
     QCOMPARE(sim::Vec2(balls.velocity.col(0)), sim::Vec2(0, 0));
+}
+
+// A click on a moving ball (press and release without moving) selects it and
+// leaves the world alone: velocity and position bit for bit, and the next
+// steps give the same state as a twin world nobody clicked. Before, a click
+// counted as a throw at no speed and stopped the ball (the Moon in lesson 19).
+void GuiCanvasTest::clickSelectsWithoutTouchingThePhysics()
+{
+    sim::Scene scene = box({ball({200, 150}, {120, -80}, 25), ball({420, 260}, {-60, 10}, 15, 0xd08020)});
+    scene.settings.gravity.enabled = true;
+    scene.settings.pointer.enabled = true; // a press on empty space would push: not on a ball
+    SimulationController controller, twin;
+    QVERIFY(!controller.setScene(scene));
+    QVERIFY(!twin.setScene(scene));
+    controller.stepOnce();
+    twin.stepOnce();
+    Canvas canvas(&controller);
+    canvas.resize(900, 500);
+    canvas.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&canvas));
+    const sim::BallState& balls = controller.world().balls();
+    const sim::Matrix2X v = balls.velocity, x = balls.position;
+    const QPointF at = canvas.worldToWidget(balls.position.col(0)) + QPointF(2, 1);
+    sendMouse(&canvas, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton, 1000);
+    sendMouse(&canvas, QEvent::MouseMove, at + QPointF(1, 0), Qt::NoButton, Qt::LeftButton, 1040); // a hand's tremble
+    sendMouse(&canvas, QEvent::MouseButtonRelease, at + QPointF(1, 0), Qt::LeftButton, Qt::NoButton, 1090);
+    QCOMPARE(canvas.selectedBall(), 0);
+    QCOMPARE(canvas.draggedBall(), -1);
+    QVERIFY(std::memcmp(balls.velocity.data(), v.data(), sizeof(double) * v.size()) == 0);
+    QVERIFY(std::memcmp(balls.position.data(), x.data(), sizeof(double) * x.size()) == 0);
+    // The pointer sits on the canvas again (inside, not pressed); the twin's too.
+    twin.setPointer(controller.world().pointer());
+    for (int k = 0; k < 30; ++k) {
+        controller.stepOnce();
+        twin.stepOnce();
+    }
+    const sim::BallState& b = twin.world().balls();
+    QVERIFY(std::memcmp(balls.velocity.data(), b.velocity.data(), sizeof(double) * v.size()) == 0);
+    QVERIFY(std::memcmp(balls.position.data(), b.position.data(), sizeof(double) * x.size()) == 0);
 }
 
 void GuiCanvasTest::renderImageMatchesTheCanvas()

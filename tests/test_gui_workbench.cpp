@@ -698,6 +698,7 @@ void GuiWorkbenchTest::inspectorShowsTheSelectedBall()
     scene.settings.gravity.g = {30.0, 700.0};
     scene.settings.drag.enabled = true;
     scene.settings.drag.k = 0.5;
+    scene.settings.drag.scale = sim::ForceScale::None; // a = -k v for this ball of mass 3.5: F = -m k v
     scene.settings.spring.enabled = true;
     scene.settings.spring.k = 2.0;
     scene.settings.spring.anchor = {300.0, 200.0};

@@ -1,5 +1,7 @@
 #include "canvas.h"
 
+#include <QApplication>
+
 #include "simulation_controller.h"
 
 #include <QElapsedTimer>
@@ -148,6 +150,12 @@ void Canvas::paintEvent(QPaintEvent*)
 
 void Canvas::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_press.ball >= 0) { // pressed on a ball: taken once the pointer has moved far enough
+        if ((event->buttons() & Qt::LeftButton) &&
+            (event->position() - m_press.at).manhattanLength() >= QApplication::startDragDistance())
+            startDrag(event->position(), static_cast<qint64>(event->timestamp()));
+        return;
+    }
     if (m_drag.ball >= 0) {
         dragTo(event->position(), static_cast<qint64>(event->timestamp()));
         return;
@@ -161,14 +169,10 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         const int ball = ballAt(event->position());
         setSelectedBall(ball);
         if (ball >= 0) {
-            // Hold the ball: pointer forces stay off while it is held, so
-            // only the hand moves it.
-            const sim::Vec2 at = widgetToWorld(event->position());
-            m_drag.ball = ball;
-            m_drag.offset = sim::Vec2(m_controller->world().balls().position.col(ball)) - at;
-            m_drag.samples.clear();
+            // Select it and arm a grab; pointer forces stay off while the
+            // button is down on a ball, so only the hand may move it.
+            m_press = Press{ball, event->position(), static_cast<qint64>(event->timestamp())};
             sendPointer(event->position(), false, false);
-            dragTo(event->position(), static_cast<qint64>(event->timestamp()));
             return;
         }
     }
@@ -177,6 +181,11 @@ void Canvas::mousePressEvent(QMouseEvent* event)
 
 void Canvas::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && m_press.ball >= 0) { // a click: it selected, nothing else
+        m_press = Press();
+        sendPointer(event->position(), true, false);
+        return;
+    }
     if (event->button() == Qt::LeftButton && m_drag.ball >= 0) {
         const qint64 now = static_cast<qint64>(event->timestamp());
         dragTo(event->position(), now);
@@ -206,6 +215,21 @@ void Canvas::leaveEvent(QEvent*)
     // Pointer wind and pointer forces stop when the pointer leaves (a held
     // ball stays held: the pointer is grabbed while a button is down).
     sendPointer(QPointF(), false, false);
+}
+
+void Canvas::startDrag(const QPointF& widget, qint64 timestampMs)
+{
+    // Take the ball where it was pressed: it keeps its offset from that point
+    // and catches up with the pointer.
+    const Press press = m_press;
+    m_press = Press();
+    if (press.ball >= m_controller->world().balls().size())
+        return;
+    m_drag.ball = press.ball;
+    m_drag.offset = sim::Vec2(m_controller->world().balls().position.col(press.ball)) - widgetToWorld(press.at);
+    m_drag.samples.clear();
+    dragTo(press.at, press.ms);
+    dragTo(widget, timestampMs);
 }
 
 void Canvas::dragTo(const QPointF& widget, qint64 timestampMs)
@@ -249,6 +273,7 @@ void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
 void Canvas::onSceneChanged()
 {
     m_drag = Drag();
+    m_press = Press();
     m_trails.clear();
     resetCollision();
     if (m_options.selected >= m_controller->world().balls().size())

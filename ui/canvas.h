@@ -90,6 +90,14 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
+    // A press on a ball selects it and only arms a grab: the ball is taken
+    // (held, then thrown or dropped) once the pointer has moved the platform's
+    // drag distance, so a click never touches the physics.
+    struct Press {
+        int ball = -1;     // the ball under the press, or −1
+        QPointF at;        // widget px
+        qint64 ms = 0;     // event time
+    };
     struct Drag {
         int ball = -1;
         sim::Vec2 offset{0, 0}; // ball centre minus pointer, world px
@@ -103,6 +111,7 @@ private:
     void trackCollision();
     void holdDraggedBall();
     void dragTo(const QPointF& widget, qint64 timestampMs);
+    void startDrag(const QPointF& widget, qint64 timestampMs);
     void resetCollision();
 
     SimulationController* m_controller; // not owned
@@ -114,6 +123,7 @@ private:
     double m_previousTime = -1.0;
     int m_previousPartner = -1;
     Drag m_drag;
+    Press m_press;
     qint64 m_frames = 0;
     double m_lastPaintMs = 0.0;
 };
