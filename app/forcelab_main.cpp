@@ -15,15 +15,10 @@
 
 int main(int argc, char* argv[])
 {
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("ForceLab"));
-    QApplication::setApplicationName(QStringLiteral("ForceLab"));
-    QApplication::setApplicationVersion(QStringLiteral("0.1"));
-
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("A workbench for forces and collisions of 2D balls."));
-    parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("lesson"), QStringLiteral("Lesson file or built-in lesson id."),
                                  QStringLiteral("[lesson]"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
@@ -38,7 +33,42 @@ int main(int argc, char* argv[])
                                     QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
     parser.addOptions({screenshot, after, select, benchRender});
-    parser.process(app);
+
+    // Read the arguments before any window system is needed: --help and
+    // --version work without a display, and a picture or a benchmark is
+    // drawn offscreen when there is none.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    if (!parser.parse(arguments)) {
+        std::fprintf(stderr, "forcelab: %s (forcelab --help lists the options)\n", qPrintable(parser.errorText()));
+        return 2;
+    }
+    if (parser.isSet(help)) {
+        // No application object yet, so Qt cannot know the program's name.
+        std::fputs(qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"), QStringLiteral("forcelab"))),
+                   stdout);
+        return 0;
+    }
+    if (parser.isSet(version)) {
+        std::printf("ForceLab 0.1\n");
+        return 0;
+    }
+    const bool display = !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
+                         !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+    if (!display) {
+        if (!parser.isSet(screenshot) && !parser.isSet(benchRender)) {
+            std::fprintf(stderr, "forcelab: there is no display to open the window on (DISPLAY is not set); start it "
+                                 "on a desktop, or draw a picture offscreen with --screenshot FILE.png\n");
+            return 2;
+        }
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("ForceLab"));
+    QApplication::setApplicationName(QStringLiteral("ForceLab"));
+    QApplication::setApplicationVersion(QStringLiteral("0.1"));
 
     if (parser.isSet(benchRender)) {
         const forcelab::RenderBenchOptions options;

@@ -2,6 +2,8 @@
 // output. Numbers are checked against closed forms.
 
 #include <QDir>
+#include <QFile>
+#include <QProcessEnvironment>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -51,6 +53,7 @@ private slots:
     void everyCommandHasHelp();
     void aFolderIsNamedAsOne();
     void toleranceBelowRoundingIsSaid();
+    void workbenchHelpNeedsNoDisplay();
 
 private:
     QTemporaryDir m_dir;
@@ -210,6 +213,39 @@ void TestCli::toleranceBelowRoundingIsSaid()
     QCOMPARE(usual.exitCode, 0);
     QVERIFY(usual.err.isEmpty());
     QCOMPARE(QJsonDocument::fromJson(usual.out.toUtf8()).object()["tolerance_floor"].toDouble(), 0.0);
+}
+
+// The workbench itself, on a machine with no display: --help prints its
+// options (before: Qt aborted, looking for a display); a plain start says in
+// one line why it cannot open a window; --screenshot draws offscreen.
+void TestCli::workbenchHelpNeedsNoDisplay()
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        env.remove(QString::fromLatin1(name));
+    auto run = [&](const QStringList& args) {
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(FORCELAB_APP_PATH), args);
+        if (!p.waitForFinished(60000))
+            qFatal("forcelab did not finish");
+        return CliResult{p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+                         QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+    };
+    const CliResult help = run({"--help"});
+    QCOMPARE(help.exitCode, 0);
+    QVERIFY2(help.out.startsWith("Usage: forcelab [options] [lesson]") && help.out.contains("--screenshot"),
+             qPrintable(help.out + help.err));
+    const CliResult plain = run({});
+    QCOMPARE(plain.exitCode, 2);
+    QVERIFY2(plain.err.startsWith("forcelab: there is no display"), qPrintable(plain.err));
+    const QString picture = m_dir.filePath("offscreen.png");
+    const CliResult shot = run({"--screenshot", picture, "--after", "0.2", "gravity"});
+    QCOMPARE(shot.exitCode, 0);
+    QFile png(picture);
+    QVERIFY(png.open(QIODevice::ReadOnly));
+    const QByteArray bytes = png.readAll();
+    QVERIFY(bytes.startsWith("\x89PNG") && bytes.size() > 10000); // a real picture of the window
 }
 
 void TestCli::stepsZeroPrintsInitialState()
