@@ -519,19 +519,27 @@ void GuiWorkbenchTest::shortcutsAct()
     SimulationController* controller = window.controller();
     controller->pause();
 
-    // [ and ]: half and double speed, within 0.05 … 4.
+    // [ and ]: down and up the ladder 1/16, 1/8, 1/4, 1/2, 1, 2, 4, 8, 16.
     QCOMPARE(controller->timeScale(), 1.0);
     QTest::keyClick(&window, Qt::Key_BracketLeft);
     QCOMPARE(controller->timeScale(), 0.5);
     QTest::keyClick(&window, Qt::Key_BracketRight);
     QTest::keyClick(&window, Qt::Key_BracketRight);
     QCOMPARE(controller->timeScale(), 2.0);
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 6; ++k)
         QTest::keyClick(&window, Qt::Key_BracketRight);
-    QCOMPARE(controller->timeScale(), SimulationController::kMaxTimeScale);
-    for (int k = 0; k < 10; ++k)
+    QCOMPARE(controller->timeScale(), 16.0);
+    for (int k = 0; k < 12; ++k)
         QTest::keyClick(&window, Qt::Key_BracketLeft);
-    QCOMPARE(controller->timeScale(), SimulationController::kMinTimeScale);
+    QCOMPARE(controller->timeScale(), 1.0 / 16);
+    // From a speed typed between rungs (0.05×), Faster goes to the next rung
+    // and on through 1× (before: 0.1, 0.2, 0.4, 0.8, 1.6, never 1).
+    controller->setTimeScale(0.05);
+    const double ladder[] = {1.0 / 16, 1.0 / 8, 0.25, 0.5, 1.0};
+    for (const double rung : ladder) {
+        QTest::keyClick(&window, Qt::Key_BracketRight);
+        QCOMPARE(controller->timeScale(), rung);
+    }
 
     // Ctrl+Z / Ctrl+Shift+Z: undo and redo a parameter edit.
     auto* gy = window.parameterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
@@ -547,8 +555,8 @@ void GuiWorkbenchTest::shortcutsAct()
     QCOMPARE(controller->world().settings().gravity.g.y(), 321.0);
     // The speed changes were undo steps too: undo the last one.
     QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); // gravity
-    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); // the last "[": 0.0625 → 0.05
-    QCOMPARE(controller->timeScale(), 0.0625);
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier); // the last "]": 0.5 → 1
+    QCOMPARE(controller->timeScale(), 0.5);
 
     // Space plays, → steps, R resets (the lesson's own values).
     QTest::keyClick(&window, Qt::Key_Space);

@@ -123,7 +123,7 @@ void MainWindow::createActions()
     m_slowerAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("S&lower"), this);
     m_slowerAction->setObjectName(QStringLiteral("slowerAction"));
     m_slowerAction->setShortcut(Qt::Key_BracketLeft);
-    m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to %1× ([)").arg(SimulationController::kMinTimeScale));
+    m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to 1/16× ([)"));
     connect(m_slowerAction, &QAction::triggered, this, &MainWindow::slower);
 
     m_fasterAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Faster"), this);
@@ -510,9 +510,24 @@ void MainWindow::resetLesson()
 void MainWindow::scaleTime(double factor)
 {
     const double now = m_controller->timeScale();
-    // Halving from 0.1 gives 0.05; doubling from 3 stops at 4, the limit, not beyond.
-    const double wanted = std::clamp(now * factor, SimulationController::kMinTimeScale,
-                                     SimulationController::kMaxTimeScale);
+    // Slower and Faster climb a fixed ladder of speeds that passes through 1×:
+    // 1/16, 1/8, 1/4, 1/2, 1, 2, 4, 8, 16. From a speed typed in between,
+    // the next rung up or down (from 0.05× Faster gives 1/16×, not 0.1×).
+    static constexpr double kLadder[] = {1.0 / 16, 1.0 / 8, 1.0 / 4, 1.0 / 2, 1.0, 2.0, 4.0, 8.0, 16.0};
+    double wanted = now;
+    if (factor > 1.0) {
+        for (const double rung : kLadder)
+            if (rung > now * (1.0 + 1e-9)) {
+                wanted = rung;
+                break;
+            }
+    } else {
+        for (auto it = std::rbegin(kLadder); it != std::rend(kLadder); ++it)
+            if (*it < now * (1.0 - 1e-9)) {
+                wanted = *it;
+                break;
+            }
+    }
     if (wanted == now) {
         statusBar()->showMessage(factor < 1.0 ? tr("Already the slowest speed, %1×").arg(now)
                                               : tr("Already the fastest speed, %1×").arg(now), 3000);

@@ -56,7 +56,7 @@ public:
     /// Simulated seconds per real second (slow motion < 1 < fast forward).
     double timeScale() const { return m_timeScale; }
     static constexpr double kMinTimeScale = 0.05;
-    static constexpr double kMaxTimeScale = 4.0;
+    static constexpr double kMaxTimeScale = 16.0;
 
     /// Most steps one frame may take; the rest of the frame's time is dropped.
     int maxStepsPerFrame() const { return m_maxStepsPerFrame; }
