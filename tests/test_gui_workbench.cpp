@@ -256,6 +256,7 @@ private slots:
     void lessonControlsComeFirst();
     void switchingLessonsUpdatesTheDocks();
     void shortcutsAct();
+    void lessonChangeGivesTheStageTheKeyboard();
     void saveThenOpenGivesTheSameScene();
     void lessonsTreeFollowsTheCourse();
     void inspectorShowsTheSelectedBall();
@@ -507,6 +508,27 @@ void GuiWorkbenchTest::switchingLessonsUpdatesTheDocks()
         QCOMPARE(gy->value(), lesson.scene.settings.gravity.g.y());
         QCOMPARE(window.windowTitle(), QStringLiteral("%1 — ForceLab").arg(lesson.title));
     }
+}
+
+// With the keyboard in the Speed field, a lesson change hands it to the
+// canvas, so Space pauses instead of being typed into the field.
+void GuiWorkbenchTest::lessonChangeGivesTheStageTheKeyboard()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(plainScene())));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    auto* speed = window.parameterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("timeScaleSpin"));
+    QVERIFY(speed);
+    speed->setFocus();
+    QTRY_VERIFY(speed->hasFocus());
+    QVERIFY(window.openLesson(QStringLiteral("gravity")));
+    QTRY_VERIFY(window.canvas()->hasFocus());
+    SimulationController* controller = window.controller();
+    QVERIFY(controller->isPlaying());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(!controller->isPlaying());
+    QCOMPARE(controller->timeScale(), 1.0); // the Speed field was not typed into
 }
 
 void GuiWorkbenchTest::shortcutsAct()

@@ -477,6 +477,9 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_parameters->setLessonControls(lesson.controls);
     // Undo steps belong to the lesson they were made in.
     m_parameters->undoStack()->clear();
+    // The keyboard goes to the stage, not to whatever field had it in the
+    // last lesson (a Speed field with the focus took Space as text).
+    m_canvas->setFocus(Qt::OtherFocusReason);
     m_controller->play();
     return true;
 }
