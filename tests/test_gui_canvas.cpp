@@ -94,6 +94,7 @@ class GuiCanvasTest : public QObject {
     Q_OBJECT
 private slots:
     void clickSelectsWithoutTouchingThePhysics();
+    void middleWallIsDrawn();
     void overlayNamesSwitchOverlays();
     void velocityArrowPointsAlongVelocity();
     void trailRingIsBoundedAndOrdered();
@@ -493,6 +494,28 @@ void GuiCanvasTest::clickSelectsWithoutTouchingThePhysics()
     const sim::BallState& b = twin.world().balls();
     QVERIFY(std::memcmp(balls.velocity.data(), b.velocity.data(), sizeof(double) * v.size()) == 0);
     QVERIFY(std::memcmp(balls.position.data(), b.position.data(), sizeof(double) * x.size()) == 0);
+}
+
+// Stage 3's middle wall is drawn where it stands, x = width / 2, in the
+// frame's colour (before: the lesson talked about a wall nobody could see).
+void GuiCanvasTest::middleWallIsDrawn()
+{
+    for (const bool middle : {true, false}) {
+        sim::Scene scene = box({ball({100, 100}, {0, 0}, 10)});
+        scene.settings.walls.middle = middle;
+        SimulationController controller;
+        QVERIFY(!controller.setScene(scene));
+        Canvas canvas(&controller);
+        canvas.resize(700, 420);
+        const QImage shot = canvas.renderImage();
+        const QPointF top = canvas.worldToWidget({300, 100}), bottom = canvas.worldToWidget({300, 300});
+        int dark = 0;
+        for (int y = int(top.y()); y <= int(bottom.y()); ++y)
+            dark += QColor(shot.pixel(int(std::lround(top.x())), y)).lightness() < 100 ? 1 : 0;
+        const int rows = int(bottom.y()) - int(top.y()) + 1;
+        qInfo("middle wall %s: %d of %d pixels down x = 300 are dark", middle ? "on" : "off", dark, rows);
+        QVERIFY(middle ? dark == rows : dark == 0);
+    }
 }
 
 void GuiCanvasTest::renderImageMatchesTheCanvas()

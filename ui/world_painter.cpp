@@ -156,6 +156,10 @@ void WorldPainter::paintBox(QPainter& p, const ViewTransform& view, const sim::W
     side(walls.right, box.topRight() + QPointF(h, 0), box.bottomRight() + QPointF(h, 0));
     side(walls.top, box.topLeft() - QPointF(0, h), box.topRight() - QPointF(0, h));
     side(walls.bottom, box.bottomLeft() + QPointF(0, h), box.bottomRight() + QPointF(0, h));
+    if (walls.middle) { // stage 3's wall down the middle, as solid as the others
+        const double x = box.left() + view.toWidget(0.5 * size.width);
+        side(true, QPointF(x, box.top()), QPointF(x, box.bottom()));
+    }
 }
 
 void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
