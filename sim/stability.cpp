@@ -6,6 +6,7 @@
 #include "integrator_info.h"
 #include "integrators.h"
 #include "names.h"
+#include "parameters.h"
 
 #include <cmath>
 #include <complex>
@@ -60,17 +61,28 @@ Growth growth(IntegratorKind kind, const LinearModel& model, double h, double to
     integrator.advance(kind, forces, balls.position, balls.velocity, 0.0, h, tolerance, stats);
     const double a = balls.position(0, 0), b = balls.position(0, 1);
     const double c = balls.velocity(0, 0), d = balls.velocity(0, 1);
-    // Eigenvalues of [[a, b], [c, d]]: (tr ± √(tr² − 4 det)) / 2.
-    const double tr = a + d, det = a * d - b * c;
-    const double disc = tr * tr - 4.0 * det;
+    // Eigenvalues of [[a, b], [c, d]]: (tr ± √(tr² − 4 det)) / 2, with
+    // tr² − 4 det written as (a − d)² + 4bc: near a double eigenvalue 1 (weak
+    // drag, short steps) tr² and 4 det are both about 4, and their difference
+    // would be rounding noise that looks like growth.
+    const double tr = a + d;
+    const double disc = (a - d) * (a - d) + 4.0 * b * c;
     const std::complex<double> root = std::sqrt(std::complex<double>(disc, 0.0));
     Growth g;
     g.rho = std::max(std::abs(0.5 * (tr + root)), std::abs(0.5 * (tr - root)));
     // A double root λ = tr/2 has one eigenvector only when N = A − λ I is not
     // zero (then N is nilpotent). disc = (a − d)² + 4bc = −4 det N is measured
-    // against 4 |N|², so "zero" means zero to rounding.
-    const double n2 = 0.5 * (a - d) * (a - d) + b * b + c * c; // |N|², Frobenius
-    g.linear = n2 > 0.0 && std::abs(disc) <= 4e-9 * n2 && g.rho >= 1.0 - 1e-9;
+    // against 4 |N|², so "zero" means zero to rounding. N is measured in the
+    // variables (x, v/ω), where every entry is of order ω h whatever the units:
+    // a soft spring's two eigenvalues e^(±iωh) are then as far apart as N is
+    // large, and are not taken for one. Without a spring (ω = 0) a double
+    // eigenvalue can only be 1, the drift x + v t of the motion itself, which
+    // is no fault of the method.
+    if (model.omega2 > 0.0) {
+        const double omega = std::sqrt(model.omega2);
+        const double n2 = 0.5 * (a - d) * (a - d) + b * omega * b * omega + c / omega * c / omega; // |N|², Frobenius
+        g.linear = n2 > 0.0 && std::abs(disc) <= 4e-9 * n2 && g.rho >= 1.0 - 1e-9;
+    }
     return g;
 }
 
@@ -151,30 +163,51 @@ std::optional<std::string> stabilityProblem(const WorldSettings& s, double dragF
         const double mid = std::sqrt(lo * hi);
         (growsAt(mid) ? hi : lo) = mid;
     }
-    const double safeDt = lo * s.time.substeps;
     const Growth g = growth(kind, model, h, s.time.tolerance);
     const double perSecond = std::exp(std::log(g.rho) / h);
-    const std::string safe = formatBelow(safeDt);
+    const std::string safe = formatBelow(lo * s.time.substeps); // the dt of that sub-step
 
     std::string what = model.omega2 > 0.0 && model.damping > 0.0 ? "this spring with drag"
                        : model.omega2 > 0.0                      ? "this spring"
                                                                  : "this drag";
-    std::string message = std::string(toString(kind)) + " is unstable for " + what + " at dt = " +
-                          formatApart(s.time.dt, safe) + " s";
+    // Per-frame steps ignore dt, so the message names the frame instead, and
+    // the fix is more sub-steps per frame: dt would change nothing.
+    std::string message = std::string(toString(kind)) + " is unstable for " + what +
+                          (s.time.perFrame ? " with per-frame steps of 1/60 s (dt is ignored)"
+                                           : " at dt = " + formatApart(s.time.dt, safe) + " s");
     if (model.omega2 > 0.0)
         message += " (ω = √k = " + format(std::sqrt(model.omega2)) + " rad/s)";
     if (model.damping > 0.0) {
+        // The number that decides is k times the sub-step h, which is dt only
+        // without sub-steps and per-frame steps.
+        const bool wholeStep = s.time.substeps == 1 && !s.time.perFrame;
+        const std::string step = wholeStep ? "dt" : "h";
+        const std::string ofStep = wholeStep ? "" : ", h the sub-step";
         if (std::abs(dragFactor - 1.0) <= 1e-12)
-            message += " (k·dt = " + format(model.damping * h) + ")";
+            message += " (k·" + step + " = " + format(model.damping * h) + ofStep + ")";
+        else if (s.drag.scale == ForceScale::Radius) // c = k r₁₀ / r: the smallest ball is slowed fastest
+            message += " (c·" + step + " = " + format(model.damping * h) +
+                       " for the smallest ball, c = k × 10 px / r = " + format(model.damping) + "/s" + ofStep + ")";
         else // drag as a force slows the lightest ball fastest: c = k m₁₀ / m
-            message += " (c·dt = " + format(model.damping * h) + " for the lightest ball, c = k × m₁₀ / m = " +
-                       format(model.damping) + "/s)";
+            message += " (c·" + step + " = " + format(model.damping * h) +
+                       " for the lightest ball, c = k × m₁₀ / m = " + format(model.damping) + "/s" + ofStep + ")";
     }
     const std::string grows = g.linear && g.rho <= 1.0 + 1e-9
                                   ? std::string("a little more every step, without end")
                               : perSecond > 1e6 ? std::string("more than a million times every second")
                                                 : format(perSecond) + " times every second";
-    message += ": the motion grows " + grows + ". Lower dt below " + safe + " s";
+    message += ": the motion grows " + grows + ". ";
+    if (!s.time.perFrame) {
+        message += "Lower dt below " + safe + " s";
+    } else {
+        // frame / n ≤ lo: n sub-steps of the frame do not grow.
+        const double substeps = std::ceil(kFrameSeconds / lo);
+        const Parameter* row = findParameter("time.substeps");
+        if (row && substeps <= row->hi)
+            message += "Raise substeps to " + std::to_string(static_cast<long long>(substeps)) + " or more";
+        else
+            message += "Switch per-frame steps off and lower dt below " + safe + " s";
+    }
     if (kind == IntegratorKind::Euler && model.omega2 > 0.0)
         message += " or pick verlet";
     else if (model.damping > 0.0)

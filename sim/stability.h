@@ -22,7 +22,8 @@ double linearGrowthPerStep(const WorldSettings& settings, double h, double dragF
 /// A plain-words explanation with the fix when the settings make the
 /// integrator blow up within 10 s of simulated time (the motion doubling in
 /// less than that, or growing without end), or nullopt. The safe dt it names
-/// is rounded down, so it is really safe.
+/// is rounded down, so it is really safe; with per-frame steps, which ignore
+/// dt, it names the number of sub-steps instead.
 std::optional<std::string> stabilityProblem(const WorldSettings& settings, double dragFactor = 1.0);
 
 } // namespace forcelab::sim
