@@ -90,6 +90,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
     QCOMPARE(s.drag.enabled, t.drag.enabled);
     COMPARE_ENUM(s.drag.law, t.drag.law);
     COMPARE_BITS(s.drag.k, t.drag.k);
+    COMPARE_ENUM(s.drag.scale, t.drag.scale);
     COMPARE_ENUM(s.wind.mode, t.wind.mode);
     COMPARE_BITS(s.wind.strength, t.wind.strength);
     COMPARE_ENUM(s.wind.scale, t.wind.scale);
@@ -288,7 +289,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
   "time": {"integrator": "rk45", "dt": 0.004, "substeps": 3, "tolerance": 1e-7, "seed": 12345, "per_frame": true},
   "models": {
     "gravity": {"x": 1.5, "y": 900},
-    "drag": {"law": "quadratic", "k": 0.002},
+    "drag": {"law": "quadratic", "k": 0.002, "scale": "radius"},
     "wind": {"mode": "noise", "strength": 40, "scale": "mass", "smoothed_step": 0.25, "frequency": 2,
              "compare": "smoothed"},
     "random_accel": {"fixed": true, "strength": 75},
@@ -341,6 +342,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     QVERIFY(s.drag.enabled);
     COMPARE_ENUM(s.drag.law, sim::DragLaw::Quadratic);
     QCOMPARE(s.drag.k, 0.002);
+    COMPARE_ENUM(s.drag.scale, sim::ForceScale::Radius);
     COMPARE_ENUM(s.wind.mode, sim::WindMode::Noise);
     QCOMPARE(s.wind.strength, 40.0);
     COMPARE_ENUM(s.wind.scale, sim::ForceScale::Mass);
@@ -541,6 +543,8 @@ void TestLessonLoader::badInput_data()
                                             << R"(t.json: world.centre_only: expected true or false, got the string "yes")";
     QTest::newRow("random_accel strength") << minimal(R"("models": {"random_accel": {"strength": -1}})")
                                            << "t.json: models.random_accel.strength: -1 is outside [0, 10000000] px/s²";
+    QTest::newRow("drag scale") << minimal(R"("models": {"drag": {"scale": "heavy"}})")
+                                << R"(t.json: models.drag.scale: "heavy" is not one of none, radius, mass)";
     QTest::newRow("wind compare") << minimal(R"("models": {"wind": {"compare": "gusty"}})")
                                   << R"(t.json: models.wind.compare: "gusty" is not one of off, random, smoothed, noise, pointer)";
     QTest::newRow("misspelt per_frame") << minimal(R"("time": {"perframe": true})")
@@ -766,7 +770,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     s.walls = {false, true, false, true, sim::WallModel::Reverse, 0.1 + 0.7, true, true};
     s.time = {sim::IntegratorKind::Yoshida4, 1.0 / 97.0, 7, 3.3e-11, (std::uint64_t{1} << 60) + 12345, true};
     s.gravity = {true, sim::Vec2(-0.0001234567890123, 979.99999999999989)};
-    s.drag = {false, sim::DragLaw::Quadratic, 2.0 / 3.0}; // off but not default: kept with "enabled": false
+    s.drag = {false, sim::DragLaw::Quadratic, 2.0 / 3.0, sim::ForceScale::None}; // off but not default: kept with "enabled": false
     s.wind = {sim::WindMode::Off, 12.345678901234567, sim::ForceScale::Radius, 0.123456789, 0.7,
               sim::WindMode::Noise};
     s.randomAccel = {true, true, 1.0 / 3.0};
@@ -797,6 +801,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     QCOMPARE(saveLesson(*r.lesson), saved);
     QVERIFY(saved.contains("\"x\": 0.30000000000000004"));
     QVERIFY(saved.contains("\"drag\": {\"enabled\": false, \"law\": \"quadratic\""));
+    QVERIFY2(saved.contains("\"scale\": \"none\"}"), saved.constData()); // drag's scale, the last of its keys
     QVERIFY(saved.contains("\"pointer\": {\"enabled\": false"));
     QVERIFY(saved.contains("\"random_accel\": {\"fixed\": true"));
     QVERIFY(saved.contains("\"wall_model\": \"reverse\""));
