@@ -183,14 +183,15 @@ std::optional<std::string> stabilityProblem(const WorldSettings& s, double dragF
         const bool wholeStep = s.time.substeps == 1 && !s.time.perFrame;
         const std::string step = wholeStep ? "dt" : "h";
         const std::string ofStep = wholeStep ? "" : ", h the sub-step";
-        if (std::abs(dragFactor - 1.0) <= 1e-12)
+        if (std::abs(dragFactor - 1.0) <= 1e-12) {
             message += " (k·" + step + " = " + format(model.damping * h) + ofStep + ")";
-        else if (s.drag.scale == ForceScale::Radius) // c = k r₁₀ / r: the smallest ball is slowed fastest
+        } else { // the ball drag slows fastest: the lightest (c = k m₁₀ / m) or, by radius, the smallest (c = k r₁₀ / r)
+            const bool byRadius = s.drag.scale == ForceScale::Radius;
             message += " (c·" + step + " = " + format(model.damping * h) +
-                       " for the smallest ball, c = k × 10 px / r = " + format(model.damping) + "/s" + ofStep + ")";
-        else // drag as a force slows the lightest ball fastest: c = k m₁₀ / m
-            message += " (c·" + step + " = " + format(model.damping * h) +
-                       " for the lightest ball, c = k × m₁₀ / m = " + format(model.damping) + "/s" + ofStep + ")";
+                       (byRadius ? " for the smallest ball, c = k × 10 px / r = "
+                                 : " for the lightest ball, c = k × m₁₀ / m = ") +
+                       format(model.damping) + "/s" + ofStep + ")";
+        }
     }
     const std::string grows = g.linear && g.rho <= 1.0 + 1e-9
                                   ? std::string("a little more every step, without end")

@@ -290,6 +290,14 @@ void TestStability::dragAsAForceLimitsTheLightestBall()
     s.balls.push_back(ballAt(200, 100, 50, 0, 10, sphereMass(10) / 10));
     QVERIFY(!w.reset(s));
     QVERIFY(!w.halted());
+    // Scaled by radius, c = k × 10 px / r: a 1 px ball has c = 10 k, and the
+    // message names it by its size, not its mass.
+    s.settings.drag.scale = ForceScale::Radius;
+    s.balls.back() = ballAt(200, 100, 50, 0, 1);
+    QVERIFY(!w.reset(s));
+    QVERIFY(w.halted());
+    QVERIFY2(QString::fromStdString(*w.halted()).contains("(c·dt = 3.2 for the smallest ball, c = k × 10 px / r = 200/s)"),
+             w.halted()->c_str());
 }
 
 // Weak drag and soft springs barely change the motion in a step, and no
