@@ -68,9 +68,10 @@ namespace {
 // One open object or array while scanning.
 struct Frame {
     bool object = false;
-    bool expectKey = false;
-    int index = 0;           // arrays: index of the current element
-    QByteArray key;          // objects: the current key (decoded)
+    bool expectKey = false;     // objects: the next string is a key
+    bool expectElement = false; // arrays: the next value starts an element
+    int index = 0;              // arrays: index of the current element
+    QByteArray key;             // objects: the current key (decoded)
     QHash<QByteArray, int> lines; // objects: key -> line of its first occurrence
 };
 
@@ -83,31 +84,42 @@ QByteArray decodeString(const QByteArray& raw)
     return doc.array().at(0).toString().toUtf8();
 }
 
-QString pathOf(const std::vector<Frame>& frames, int depth, const QByteArray& lastKey)
+bool isSpace(char c)
 {
-    QStringList parts;
-    for (int d = 0; d < depth; ++d) {
-        const Frame& f = frames[static_cast<std::size_t>(d)];
-        if (d == depth - 1 && f.object) {
-            parts << QString::fromUtf8(lastKey);
-            break;
-        }
-        parts << (f.object ? QString::fromUtf8(f.key) : QString::number(f.index));
-    }
-    return parts.join('.');
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
 
-} // namespace
-
-QList<StructureProblem> scanStructure(const QByteArray& text, int maxDepth, int maxProblems)
+/// Walks text that QJsonDocument has already accepted, keeping the stack of
+/// open objects and arrays. `visit` is called where each member's key and
+/// each array element starts, with the byte offset, the line, and the key
+/// path of that member or element; it returns false to stop the walk. The
+/// walk stops before nesting deeper than `maxDepth`, and returns the offset
+/// where that happened (or nullopt).
+template<typename Visit>
+std::optional<qsizetype> walk(const QByteArray& text, int maxDepth, Visit&& visit)
 {
-    QList<StructureProblem> problems;
     std::vector<Frame> frames(static_cast<std::size_t>(maxDepth) + 1);
     int depth = 0;
     int line = 1;
+    const auto pathTo = [&](int upTo) {
+        QStringList parts;
+        for (int d = 0; d < upTo; ++d) {
+            const Frame& f = frames[static_cast<std::size_t>(d)];
+            parts << (f.object ? QString::fromUtf8(f.key) : QString::number(f.index));
+        }
+        return parts.join('.');
+    };
     const qsizetype n = text.size();
     for (qsizetype i = 0; i < n; ++i) {
         const char c = text[i];
+        if (depth > 0 && !isSpace(c) && c != ']') {
+            Frame& top = frames[static_cast<std::size_t>(depth - 1)];
+            if (!top.object && top.expectElement) {
+                top.expectElement = false;
+                if (!visit(i, line, pathTo(depth), frames[static_cast<std::size_t>(depth - 1)]))
+                    return std::nullopt;
+            }
+        }
         switch (c) {
         case '\n':
             ++line;
@@ -123,29 +135,19 @@ QList<StructureProblem> scanStructure(const QByteArray& text, int maxDepth, int 
             if (!f.object || !f.expectKey)
                 break;
             f.expectKey = false;
-            const QByteArray key = decodeString(text.mid(start, i - start + 1));
-            const auto it = f.lines.constFind(key);
-            if (it != f.lines.cend()) {
-                if (problems.size() < maxProblems)
-                    problems.append({positionOf(text, start), pathOf(frames, depth, key),
-                                     QStringLiteral("duplicate key (first given on line %1); give each key once")
-                                         .arg(it.value())});
-            } else {
-                f.lines.insert(key, line);
-            }
-            f.key = key;
+            f.key = decodeString(text.mid(start, i - start + 1));
+            if (!visit(start, line, pathTo(depth), f))
+                return std::nullopt;
             break;
         }
         case '{':
         case '[': {
-            if (depth == maxDepth) {
-                problems.append({positionOf(text, i), pathOf(frames, depth, frames[static_cast<std::size_t>(depth - 1)].key),
-                                 QStringLiteral("nested deeper than %1 levels").arg(maxDepth)});
-                return problems;
-            }
+            if (depth == maxDepth)
+                return i;
             Frame& f = frames[static_cast<std::size_t>(depth++)];
             f.object = c == '{';
             f.expectKey = f.object;
+            f.expectElement = !f.object;
             f.index = 0;
             f.key.clear();
             f.lines.clear();
@@ -159,17 +161,62 @@ QList<StructureProblem> scanStructure(const QByteArray& text, int maxDepth, int 
         case ',':
             if (depth > 0) {
                 Frame& f = frames[static_cast<std::size_t>(depth - 1)];
-                if (f.object)
+                if (f.object) {
                     f.expectKey = true;
-                else
+                } else {
                     ++f.index;
+                    f.expectElement = true;
+                }
             }
             break;
         default:
             break;
         }
     }
+    return std::nullopt;
+}
+
+} // namespace
+
+QList<StructureProblem> scanStructure(const QByteArray& text, int maxDepth, int maxProblems)
+{
+    QList<StructureProblem> problems;
+    QString deepest; // the path of the last member or element seen, for the depth problem
+    const auto tooDeep = walk(text, maxDepth, [&](qsizetype at, int line, const QString& path, Frame& f) {
+        deepest = path;
+        if (!f.object)
+            return true;
+        const auto it = f.lines.constFind(f.key);
+        if (it == f.lines.cend()) {
+            f.lines.insert(f.key, line);
+        } else if (problems.size() < maxProblems) {
+            problems.append({positionOf(text, at), path,
+                             QStringLiteral("duplicate key (first given on line %1); give each key once").arg(it.value())});
+        }
+        return true;
+    });
+    if (tooDeep)
+        problems.append({positionOf(text, *tooDeep), deepest, QStringLiteral("nested deeper than %1 levels").arg(maxDepth)});
     return problems;
+}
+
+std::optional<TextPosition> positionOfKeyPath(const QByteArray& text, const QString& keyPath, int maxDepth)
+{
+    if (keyPath.isEmpty())
+        return std::nullopt;
+    std::optional<qsizetype> best;
+    qsizetype bestLength = 0;
+    walk(text, maxDepth, [&](qsizetype at, int, const QString& path, Frame&) {
+        const bool prefix = keyPath == path || (keyPath.startsWith(path) && keyPath[path.size()] == QLatin1Char('.'));
+        if (prefix && path.size() > bestLength) {
+            best = at;
+            bestLength = path.size();
+        }
+        return path != keyPath; // the whole path found: done
+    });
+    if (!best)
+        return std::nullopt;
+    return positionOf(text, *best);
 }
 
 } // namespace forcelab::lessons

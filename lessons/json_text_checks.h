@@ -36,4 +36,10 @@ struct StructureProblem {
 /// object (all of them, up to `maxProblems`).
 QList<StructureProblem> scanStructure(const QByteArray& text, int maxDepth, int maxProblems);
 
+/// Where `keyPath` ("models.drag.k", "balls.3.r") is written in text that
+/// QJsonDocument has already accepted: at its key, or at the start of the
+/// array element; for a path that is not written (a missing key), where its
+/// longest written parent is. Nullopt when no part of the path is written.
+std::optional<TextPosition> positionOfKeyPath(const QByteArray& text, const QString& keyPath, int maxDepth);
+
 } // namespace forcelab::lessons

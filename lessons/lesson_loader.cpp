@@ -22,25 +22,37 @@ namespace {
 
 const QString kResourceDir = QStringLiteral(":/lessons");
 
-QString tooLarge(const QString& source, qint64 bytes)
+/// A problem with the input as a whole, or at a key path (no line known).
+sim::Error problem(const QString& source, const QString& message, const QString& keyPath = {})
 {
-    return QStringLiteral("%1: the file has %2 bytes, more than the limit of %3 bytes (16 MiB)")
-        .arg(source)
-        .arg(bytes)
-        .arg(kMaxFileBytes);
+    sim::Error e = sim::keyError(keyPath.toStdString(), message.toStdString());
+    e.source = source.toStdString();
+    return e;
 }
 
-LoadResult failure(QStringList errors)
+/// A problem at a place in the text.
+sim::Error problemAt(const QString& source, TextPosition p, const QString& keyPath, const QString& message)
+{
+    sim::Error e = problem(source, message, keyPath);
+    e.line = p.line;
+    e.column = p.column;
+    return e;
+}
+
+sim::Error tooLarge(const QString& source, qint64 bytes)
+{
+    return problem(source, QStringLiteral("the file has %1 bytes, more than the limit of %2 bytes (16 MiB)")
+                               .arg(bytes)
+                               .arg(kMaxFileBytes));
+}
+
+LoadResult failure(QList<sim::Error> problems)
 {
     LoadResult r;
-    r.errors = std::move(errors);
+    for (const sim::Error& e : problems)
+        r.errors << errorLine(e);
+    r.problems = std::move(problems);
     return r;
-}
-
-QString at(const QString& source, const QByteArray& text, qsizetype offset)
-{
-    const TextPosition p = positionOf(text, offset);
-    return QStringLiteral("%1:%2:%3").arg(source).arg(p.line).arg(p.column);
 }
 
 /// Qt's parse errors in words that point at the usual cause.
@@ -72,16 +84,28 @@ QString syntaxProblem(const QJsonParseError& e)
     }
 }
 
-/// The source an error on `keyPath` belongs to: the last override that set
-/// this path, a path inside it, or a path on the way to it; else the file.
-QString sourceFor(const QString& keyPath, const QString& fileSource, const QList<Override>& overrides)
+/// The override that an error on `keyPath` belongs to: the last one that set
+/// this path, a path inside it, or a path on the way to it; else none (the file).
+const Override* overrideFor(const QString& keyPath, const QList<Override>& overrides)
 {
     for (qsizetype i = overrides.size() - 1; i >= 0; --i) {
         const QString& p = overrides[i].keyPath;
         if (p == keyPath || p.startsWith(keyPath + QLatin1Char('.')) || keyPath.startsWith(p + QLatin1Char('.')))
-            return overrideSource(overrides[i]);
+            return &overrides[i];
     }
-    return fileSource;
+    return nullptr;
+}
+
+/// A problem found at a key path of the lesson: it belongs to the override
+/// that set the path, or else to the file, where it is located in the text.
+sim::Error problemAtKey(const QString& keyPath, const QString& message, const QString& source, const QByteArray& json,
+                        const QList<Override>& overrides)
+{
+    if (const Override* o = overrideFor(keyPath, overrides))
+        return problem(overrideSource(*o), message, keyPath);
+    if (const auto p = positionOfKeyPath(json, keyPath, kMaxDepth))
+        return problemAt(source, *p, keyPath, message);
+    return problem(source, message, keyPath);
 }
 
 /// The JSON of a built-in lesson, for matching its id without a full load.
@@ -94,6 +118,11 @@ QString builtInId(const QString& resource)
 }
 
 } // namespace
+
+QString errorLine(const sim::Error& error)
+{
+    return QString::fromStdString(sim::toString(error));
+}
 
 LoadResult LessonLoader::load(const QString& pathOrId, const QList<Override>& overrides)
 {
@@ -112,10 +141,10 @@ LoadResult LessonLoader::load(const QString& pathOrId, const QList<Override>& ov
     for (const QString& resource : builtIn)
         ids << builtInId(resource);
     const bool looksLikePath = pathOrId.contains(QLatin1Char('/')) || pathOrId.endsWith(QStringLiteral(".json"));
-    return failure({QStringLiteral("%1: %2; built-in lessons: %3")
-                        .arg(pathOrId,
-                             looksLikePath ? QStringLiteral("no such file") : QStringLiteral("no such file or built-in lesson"),
-                             ids.join(QStringLiteral(", ")))});
+    return failure({problem(pathOrId, QStringLiteral("%1; built-in lessons: %2")
+                                          .arg(looksLikePath ? QStringLiteral("no such file")
+                                                             : QStringLiteral("no such file or built-in lesson"),
+                                               ids.join(QStringLiteral(", "))))});
 }
 
 LoadResult LessonLoader::loadFile(const QString& path, const QList<Override>& overrides)
@@ -123,17 +152,17 @@ LoadResult LessonLoader::loadFile(const QString& path, const QList<Override>& ov
     QFile file(path);
     const QFileInfo info(path);
     if (info.isDir())
-        return failure({path + QStringLiteral(": is a folder, not a lesson file; give one of the .json files in it")});
+        return failure({problem(path, QStringLiteral("is a folder, not a lesson file; give one of the .json files in it"))});
     if (info.exists() && !info.isFile())
-        return failure({path + QStringLiteral(": is not a file")});
+        return failure({problem(path, QStringLiteral("is not a file"))});
     if (!file.open(QIODevice::ReadOnly))
-        return failure({path + QStringLiteral(": cannot open: ") + file.errorString()});
+        return failure({problem(path, QStringLiteral("cannot open: ") + file.errorString())});
     // Check the size before reading so a huge file costs nothing.
     if (file.size() > kMaxFileBytes)
         return failure({tooLarge(path, file.size())});
     const QByteArray bytes = file.read(kMaxFileBytes + 1);
     if (file.error() != QFileDevice::NoError)
-        return failure({path + QStringLiteral(": cannot read: ") + file.errorString()});
+        return failure({problem(path, QStringLiteral("cannot read: ") + file.errorString())});
     return loadBytes(bytes, path, overrides);
 }
 
@@ -142,8 +171,8 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
     if (json.size() > kMaxFileBytes)
         return failure({tooLarge(source, json.size())});
     if (const auto bad = firstInvalidUtf8(json))
-        return failure({at(source, json, *bad) +
-                        QStringLiteral(": bytes that are not UTF-8 text; save the file as UTF-8")});
+        return failure({problemAt(source, positionOf(json, *bad), {},
+                                  QStringLiteral("bytes that are not UTF-8 text; save the file as UTF-8"))});
 
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
@@ -153,13 +182,9 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
         if (parseError.error == QJsonParseError::DeepNesting) {
             const QList<StructureProblem> deep = scanStructure(json, kMaxDepth, 1);
             if (!deep.isEmpty())
-                return failure({QStringLiteral("%1:%2:%3: %4: %5")
-                                    .arg(source)
-                                    .arg(deep.first().position.line)
-                                    .arg(deep.first().position.column)
-                                    .arg(deep.first().keyPath, deep.first().problem)});
-            return failure({at(source, json, parseError.offset) +
-                            QStringLiteral(": nested deeper than %1 levels").arg(kMaxDepth)});
+                return failure({problemAt(source, deep.first().position, deep.first().keyPath, deep.first().problem)});
+            return failure({problemAt(source, positionOf(json, parseError.offset), {},
+                                      QStringLiteral("nested deeper than %1 levels").arg(kMaxDepth))});
         }
         // Qt's offset lies just past the offending token, except for trailing garbage.
         // Qt's offset lies just past the offending token, except for trailing
@@ -172,54 +197,44 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
             offset = std::max<qsizetype>(0, offset - 1);
         }
         const QString what = syntaxProblem(parseError);
-        return failure({at(source, json, offset) + QStringLiteral(": syntax error: ") + what});
+        return failure({problemAt(source, positionOf(json, offset), {}, QStringLiteral("syntax error: ") + what)});
     }
 
-    QStringList errors;
+    QList<sim::Error> errors;
     for (const StructureProblem& p : scanStructure(json, kMaxDepth, kMaxErrors))
-        errors << QStringLiteral("%1:%2:%3: %4: %5")
-                      .arg(source)
-                      .arg(p.position.line)
-                      .arg(p.position.column)
-                      .arg(p.keyPath, p.problem);
+        errors << problemAt(source, p.position, p.keyPath, p.problem);
     if (!errors.isEmpty())
         return failure(errors);
     if (!doc.isObject())
-        return failure({source + QStringLiteral(": the lesson must be one JSON object { … }")});
+        return failure({problem(source, QStringLiteral("the lesson must be one JSON object { … }"))});
 
     QJsonObject root = doc.object();
     for (const Override& o : overrides) {
-        QString problem;
-        const auto value = overrideValue(o, &problem);
+        QString why;
+        const auto value = overrideValue(o, &why);
         if (!value) {
-            errors << overrideSource(o) + QStringLiteral(": ") + o.keyPath + QStringLiteral(": ") + problem;
+            errors << problem(overrideSource(o), why, o.keyPath);
             continue;
         }
         if (const auto e = applyOverride(root, o.keyPath, *value))
-            errors << overrideSource(o) + QStringLiteral(": ") + *e;
+            errors << problem(overrideSource(o), e->problem, e->keyPath);
     }
     if (!errors.isEmpty())
         return failure(errors);
 
     ParseResult parsed = parseLesson(root);
     for (const KeyProblem& p : parsed.problems)
-        errors << sourceFor(p.keyPath, source, overrides) + QStringLiteral(": ") +
-                      (p.keyPath.isEmpty() ? p.problem : p.keyPath + QStringLiteral(": ") + p.problem);
+        errors << problemAtKey(p.keyPath, p.problem, source, json, overrides);
     if (parsed.unlisted > 0)
-        errors << source + QStringLiteral(": %1 more problems not listed").arg(parsed.unlisted);
+        errors << problem(source, QStringLiteral("%1 more problems not listed").arg(parsed.unlisted));
     if (!errors.isEmpty())
         return failure(errors);
 
     // Checks across fields (e.g. the exact integrator with drag) live in the
     // simulation core, so the workbench and the loader agree on them.
-    std::optional<std::string> problem = sim::validateSettings(parsed.lesson.scene.settings);
-    if (!problem)
-        problem = sim::validateSpawn(parsed.lesson.scene.spawn);
-    if (problem) {
-        const QString text = QString::fromStdString(*problem);
-        const QString keyPath = text.section(QStringLiteral(": "), 0, 0);
-        return failure({sourceFor(keyPath, source, overrides) + QStringLiteral(": ") + text});
-    }
+    if (const std::optional<sim::Error> e = sim::validateScene(parsed.lesson.scene))
+        return failure({problemAtKey(QString::fromStdString(e->keyPath), QString::fromStdString(e->message), source,
+                                     json, overrides)});
 
     parsed.lesson.source = source;
     LoadResult result;

@@ -4,6 +4,7 @@
 // resources under ":/lessons/".
 
 #include "lesson.h"
+#include "sim/error.h"
 
 #include <QByteArray>
 #include <QList>
@@ -21,10 +22,14 @@ struct Override {
 };
 
 struct LoadResult {
-    std::optional<Lesson> lesson; ///< set when there was no error
-    QStringList errors;           ///< one line each: "<source>: <key.path>: <what is wrong>"
+    std::optional<Lesson> lesson;  ///< set when there was no error
+    QList<sim::Error> problems;    ///< what is wrong: source, key path, line and column (in a file), message
+    QStringList errors;            ///< the same problems as the lines a user reads ("file:line:column: key.path: what")
     bool ok() const { return lesson.has_value(); }
 };
+
+/// The line a user reads for a problem (sim::toString, as a QString).
+QString errorLine(const sim::Error& error);
 
 class LessonLoader {
 public:

@@ -74,7 +74,7 @@ QString typeWord(const QJsonValue& v)
 
 // Returns `node` with the value set at segments[i..]; `path` is the key path of
 // `node` for messages.
-std::optional<QString> setIn(QJsonValue& node, const QStringList& segments, qsizetype i, const QString& path,
+std::optional<KeyProblem> setIn(QJsonValue& node, const QStringList& segments, qsizetype i, const QString& path,
                              const QJsonValue& value)
 {
     if (i == segments.size()) {
@@ -85,12 +85,12 @@ std::optional<QString> setIn(QJsonValue& node, const QStringList& segments, qsiz
     const QString here = path.isEmpty() ? seg : path + QLatin1Char('.') + seg;
     if (node.isArray()) {
         if (!isIndex(seg))
-            return here + QStringLiteral(": ") + path + QStringLiteral(" is an array; expected an index such as ") +
-                   path + QStringLiteral(".0");
+            return KeyProblem{here, path + QStringLiteral(" is an array; expected an index such as ") + path +
+                                        QStringLiteral(".0")};
         QJsonArray a = node.toArray();
         const qsizetype k = seg.toLongLong();
         if (k > a.size())
-            return here + QStringLiteral(": index %1 is past the end (the array has %2 entries)").arg(k).arg(a.size());
+            return KeyProblem{here, QStringLiteral("index %1 is past the end (the array has %2 entries)").arg(k).arg(a.size())};
         QJsonValue child = k < a.size() ? a.at(k) : QJsonValue(QJsonObject{});
         if (auto e = setIn(child, segments, i + 1, here, value))
             return e;
@@ -104,7 +104,7 @@ std::optional<QString> setIn(QJsonValue& node, const QStringList& segments, qsiz
     if (node.isUndefined() || node.isNull())
         node = QJsonObject{}; // create the missing object: enabling a model by setting one of its keys
     if (!node.isObject())
-        return path + QStringLiteral(": is %1, so it has no key \"%2\"").arg(typeWord(node), seg);
+        return KeyProblem{path, QStringLiteral("is %1, so it has no key \"%2\"").arg(typeWord(node), seg)};
     QJsonObject o = node.toObject();
     QJsonValue child = o.value(seg);
     if (auto e = setIn(child, segments, i + 1, here, value))
@@ -116,11 +116,11 @@ std::optional<QString> setIn(QJsonValue& node, const QStringList& segments, qsiz
 
 } // namespace
 
-std::optional<QString> applyOverride(QJsonObject& root, const QString& keyPath, const QJsonValue& value)
+std::optional<KeyProblem> applyOverride(QJsonObject& root, const QString& keyPath, const QJsonValue& value)
 {
     const QStringList segments = keyPath.split(QLatin1Char('.'));
     if (segments.size() > kMaxDepth)
-        return keyPath + QStringLiteral(": nested deeper than %1 levels").arg(kMaxDepth);
+        return KeyProblem{keyPath, QStringLiteral("nested deeper than %1 levels").arg(kMaxDepth)};
     QJsonValue node(root);
     if (auto e = setIn(node, segments, 0, QString(), value))
         return e;

@@ -4,6 +4,7 @@
 // in the file.
 
 #include "lesson_loader.h"
+#include "lesson_parser.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -22,8 +23,8 @@ std::optional<QJsonValue> overrideValue(const Override& o, QString* problem);
 
 /// Sets the value at the key path, creating missing objects on the way
 /// ("models.drag.k" creates "drag"). A numeric segment indexes an array
-/// ("balls.0.vx"); index == size appends. On failure returns
-/// "key.path: problem" and leaves `root` unchanged.
-std::optional<QString> applyOverride(QJsonObject& root, const QString& keyPath, const QJsonValue& value);
+/// ("balls.0.vx"); index == size appends. On failure returns the problem with
+/// the key path where the path could not go on, and leaves `root` unchanged.
+std::optional<KeyProblem> applyOverride(QJsonObject& root, const QString& keyPath, const QJsonValue& value);
 
 } // namespace forcelab::lessons

@@ -56,32 +56,33 @@ public:
     void fail(const char* key, const std::string& what)
     {
         if (!m_error)
-            m_error = std::string(key) + ": " + what;
+            m_error = keyError(key, what);
     }
-    std::optional<std::string> result() const { return m_error; }
+    std::optional<Error> result() const { return m_error; }
 
 private:
-    std::optional<std::string> m_error;
+    std::optional<Error> m_error;
 };
 
 } // namespace
 
-std::optional<std::string> validateSettings(const WorldSettings& s)
+std::optional<Error> validateSettings(const WorldSettings& s)
 {
     // Every row of the parameter table: its range, whole numbers, choices.
     for (const Parameter& p : parameters())
         if (auto problem = checkValue(p, p.get(s)))
-            return std::string(p.key) + ": " + *problem;
+            return keyError(std::string(p.key), *problem);
     // What no single row can say.
     if (s.time.integrator == IntegratorKind::Exact) {
         if (const char* why = nonConstantAccelerationReason(s))
-            return std::string("time.integrator: exact needs a constant acceleration, but ") + why +
-                   "; pick another integrator or switch that model off";
+            return keyError("time.integrator", std::string("exact needs a constant acceleration, but ")
+                                                   .append(why)
+                                                   .append("; pick another integrator or switch that model off"));
     }
     return std::nullopt;
 }
 
-std::optional<std::string> validateSpawn(const SpawnSettings& s)
+std::optional<Error> validateSpawn(const SpawnSettings& s)
 {
     Checker c;
     c.range("spawn.count", s.count, 0, kMaxBalls);
@@ -103,11 +104,12 @@ World::World()
 
 World::World(const Scene& scene)
 {
-    if (auto error = reset(scene))
-        reset(Scene{}); // an invalid scene leaves an empty default world
+    if (auto error = validateScene(scene))
+        throw InvalidInput(*error);
+    reset(scene);
 }
 
-std::optional<std::string> validateBalls(std::span<const Ball> balls)
+std::optional<Error> validateBalls(std::span<const Ball> balls)
 {
     Checker c;
     for (std::size_t i = 0; i < balls.size() && !c.result(); ++i) {
@@ -125,14 +127,19 @@ std::optional<std::string> validateBalls(std::span<const Ball> balls)
     return c.result();
 }
 
-std::optional<std::string> World::reset(const Scene& scene)
+std::optional<Error> validateScene(const Scene& scene)
 {
     if (auto error = validateSettings(scene.settings))
         return error;
     if (auto error = validateSpawn(scene.spawn))
         return error;
-    if (auto error = validateBalls(scene.balls))
-        return error;
+    return validateBalls(scene.balls);
+}
+
+std::optional<std::string> World::reset(const Scene& scene)
+{
+    if (auto error = validateScene(scene))
+        return toString(*error);
     m_settings = scene.settings;
     m_balls = buildBalls(scene);
     m_spawn = scene.spawn;
@@ -155,7 +162,7 @@ std::optional<std::string> World::reset(const Scene& scene)
 std::optional<std::string> World::setSettings(const WorldSettings& settings)
 {
     if (auto error = validateSettings(settings))
-        return error;
+        return toString(*error);
     m_settings = settings;
     m_integrator.invalidate();
     m_halted = stabilityProblem(m_settings, largestDragFactor());

@@ -4,6 +4,7 @@
 #include "ball_state.h"
 #include "close_pass.h"
 #include "collision/collision_system.h"
+#include "error.h"
 #include "force_model.h"
 #include "integrators.h"
 #include "scene.h"
@@ -43,6 +44,8 @@ struct StepStats {
 class World {
 public:
     World();
+    /// A world running `scene`. An invalid scene is refused: it throws
+    /// InvalidInput naming the field (reset() returns the problem instead).
     explicit World(const Scene& scene);
 
     /// Replaces settings and balls and restarts time at 0. Returns an error
@@ -159,15 +162,18 @@ private:
 
 
 /// Checks the spawn settings ("spawn.count: …").
-std::optional<std::string> validateSpawn(const SpawnSettings& spawn);
+std::optional<Error> validateSpawn(const SpawnSettings& spawn);
 
 /// Checks listed balls: finite position and velocity, radius in
 /// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass]
 /// ("balls.3.r: …").
-std::optional<std::string> validateBalls(std::span<const Ball> balls);
+std::optional<Error> validateBalls(std::span<const Ball> balls);
 
-/// Checks a full settings struct. Returns the first problem as
-/// "key.path: what is wrong" using the lesson file's key paths.
-std::optional<std::string> validateSettings(const WorldSettings& settings);
+/// Checks a full settings struct. Returns the first problem, with the lesson
+/// file's key path of the field ("models.drag.k") and what is wrong.
+std::optional<Error> validateSettings(const WorldSettings& settings);
+
+/// Settings, spawn and listed balls together: the first problem, or nullopt.
+std::optional<Error> validateScene(const Scene& scene);
 
 } // namespace forcelab::sim

@@ -476,84 +476,84 @@ void TestLessonLoader::badInput_data()
         << QByteArray("[1, 2]") << "t.json: the lesson must be one JSON object { … }";
     QTest::newRow("bad enum lists the allowed values")
         << minimal(R"("models": {"wind": {"mode": "gust"}})")
-        << R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
+        << R"(t.json:1:46: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
     QTest::newRow("bad integrator")
         << minimal(R"("time": {"integrator": "rk5"})")
-        << R"(t.json: time.integrator: "rk5" is not one of euler, semi-implicit-euler, verlet, rk4, yoshida4, rk45, exact, ias15)";
+        << R"(t.json:1:35: time.integrator: "rk5" is not one of euler, semi-implicit-euler, verlet, rk4, yoshida4, rk45, exact, ias15)";
     QTest::newRow("unknown key with suggestion")
         << minimal(R"("models": {"gravty": {"y": 1}})")
-        << R"(t.json: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
+        << R"(t.json:1:37: models.gravty: unknown key "gravty"; did you mean "gravity"?)";
     QTest::newRow("unknown key without a close match lists the keys")
         << minimal(R"("world": {"colour": 1})")
-        << R"(t.json: world.colour: unknown key "colour"; known keys here: width, height, wall_model, restitution, middle_wall, centre_only, walls)";
+        << R"(t.json:1:36: world.colour: unknown key "colour"; known keys here: width, height, wall_model, restitution, middle_wall, centre_only, walls)";
     QTest::newRow("unknown top-level key") << minimal(R"("titel": "x")")
-                                           << R"(t.json: titel: unknown key "titel"; did you mean "title"?)";
+                                           << R"(t.json:1:26: titel: unknown key "titel"; did you mean "title"?)";
     QTest::newRow("wrong type: string for a number")
-        << minimal(R"("time": {"dt": "fast"})") << R"(t.json: time.dt: expected a number in (0, 1] s, got the string "fast")";
+        << minimal(R"("time": {"dt": "fast"})") << R"(t.json:1:35: time.dt: expected a number in (0, 1] s, got the string "fast")";
     QTest::newRow("wrong type: number for an object")
-        << minimal(R"("models": 3)") << "t.json: models: expected an object { … }, got the number 3";
+        << minimal(R"("models": 3)") << "t.json:1:26: models: expected an object { … }, got the number 3";
     QTest::newRow("wrong type: bool")
         << minimal(R"("models": {"collisions": {"continuous": 1}})")
-        << "t.json: models.collisions.continuous: expected true or false, got the number 1";
+        << "t.json:1:52: models.collisions.continuous: expected true or false, got the number 1";
     QTest::newRow("wrong type: resting")
         << minimal(R"("models": {"collisions": {"resting": "yes"}})")
-        << "t.json: models.collisions.resting: expected true or false, got the string \"yes\"";
+        << "t.json:1:52: models.collisions.resting: expected true or false, got the string \"yes\"";
     QTest::newRow("wrong type: whole number") << minimal(R"("time": {"substeps": 1.5})")
-                                              << "t.json: time.substeps: expected a whole number, got 1.5";
+                                              << "t.json:1:35: time.substeps: expected a whole number, got 1.5";
     QTest::newRow("out of range, open bound") << minimal(R"("time": {"dt": 0})")
-                                              << "t.json: time.dt: 0 is outside (0, 1] s";
+                                              << "t.json:1:35: time.dt: 0 is outside (0, 1] s";
     QTest::newRow("out of range, closed bound") << minimal(R"("world": {"restitution": 1.5})")
-                                                << "t.json: world.restitution: 1.5 is outside [0, 1]";
+                                                << "t.json:1:36: world.restitution: 1.5 is outside [0, 1]";
     QTest::newRow("out of range, integer") << minimal(R"("time": {"substeps": 1001})")
-                                           << "t.json: time.substeps: 1001 is outside [1, 1000]";
+                                           << "t.json:1:35: time.substeps: 1001 is outside [1, 1000]";
     QTest::newRow("out of range, ball radius")
-        << minimal(R"("balls": [{"x": 1, "y": 2, "r": -4}])") << "t.json: balls.0.r: -4 is outside [1e-06, 10000] px";
+        << minimal(R"("balls": [{"x": 1, "y": 2, "r": -4}])") << "t.json:1:53: balls.0.r: -4 is outside [1e-06, 10000] px";
     // r³ underflows: the sphere's mass would be exactly 0 (it was accepted).
     QTest::newRow("ball radius whose mass underflows")
-        << minimal(R"("balls": [{"x": 1, "y": 2, "r": 1e-110}])") << "t.json: balls.0.r: 1e-110 is outside [1e-06, 10000] px";
+        << minimal(R"("balls": [{"x": 1, "y": 2, "r": 1e-110}])") << "t.json:1:53: balls.0.r: 1e-110 is outside [1e-06, 10000] px";
     QTest::newRow("ball charge out of range")
         << minimal(R"("balls": [{"x": 1, "y": 2, "q": -2e6}])")
-        << "t.json: balls.0.q: -2000000 is outside [-1000000, 1000000] charge units";
+        << "t.json:1:53: balls.0.q: -2000000 is outside [-1000000, 1000000] charge units";
     QTest::newRow("ball mass too small to invert safely")
         << minimal(R"("balls": [{"x": 1, "y": 2, "mass": 1e-300}])")
-        << "t.json: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
+        << "t.json:1:53: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
     QTest::newRow("spawn radius whose mass underflows")
         << minimal(R"("spawn": {"count": 3, "radius": [1e-200, 5]})")
-        << "t.json: spawn.radius.0: 1e-200 is outside [1e-06, 10000] px";
+        << "t.json:1:59: spawn.radius.0: 1e-200 is outside [1e-06, 10000] px";
     QTest::newRow("missing ball position") << minimal(R"("balls": [{"x": 1}])")
-                                           << "t.json: balls.0.y: missing; give the ball's centre y in px";
+                                           << "t.json:1:36: balls.0.y: missing; give the ball's centre y in px";
     QTest::newRow("bad colour") << minimal(R"("balls": [{"x": 1, "y": 2, "color": "red"}])")
-                                << R"(t.json: balls.0.color: expected a colour written "#rrggbb" (e.g. "#e05050"), got the string "red")";
+                                << R"(t.json:1:53: balls.0.color: expected a colour written "#rrggbb" (e.g. "#e05050"), got the string "red")";
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
-                                   << R"(t.json: world.walls.1: "floor" is not one of left, right, top, bottom)";
+                                   << R"(t.json:1:54: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
-                                     << R"(t.json: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals)";
+                                     << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals)";
     QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
-                                     << "t.json: controls.1: \"gravity.y\" is not one of " +
+                                     << "t.json:1:50: controls.1: \"gravity.y\" is not one of " +
                                             LessonLoader::controlNames().join(", ");
     QTest::newRow("spawn min above max") << minimal(R"("spawn": {"radius": [9, 3]})")
-                                         << "t.json: spawn.radius: the minimum 9 is larger than the maximum 3";
+                                         << "t.json:1:36: spawn.radius: the minimum 9 is larger than the maximum 3";
     QTest::newRow("reverse is a wall model") << minimal(R"("world": {"wall_model": "bounce"})")
-                                             << R"(t.json: world.wall_model: "bounce" is not one of clamp, mirror, exact, reverse)";
+                                             << R"(t.json:1:36: world.wall_model: "bounce" is not one of clamp, mirror, exact, reverse)";
     QTest::newRow("per_step above 1") << minimal(R"("spawn": {"per_step": 1.5})")
-                                      << "t.json: spawn.per_step: 1.5 is outside [0, 1]";
+                                      << "t.json:1:36: spawn.per_step: 1.5 is outside [0, 1]";
     QTest::newRow("max_count fractional") << minimal(R"("spawn": {"max_count": 2.5})")
-                                          << "t.json: spawn.max_count: expected a whole number, got 2.5";
+                                          << "t.json:1:36: spawn.max_count: expected a whole number, got 2.5";
     QTest::newRow("centre_only not a bool") << minimal(R"("world": {"centre_only": "yes"})")
-                                            << R"(t.json: world.centre_only: expected true or false, got the string "yes")";
+                                            << R"(t.json:1:36: world.centre_only: expected true or false, got the string "yes")";
     QTest::newRow("random_accel strength") << minimal(R"("models": {"random_accel": {"strength": -1}})")
-                                           << "t.json: models.random_accel.strength: -1 is outside [0, 10000000] px/s²";
+                                           << "t.json:1:54: models.random_accel.strength: -1 is outside [0, 10000000] px/s²";
     QTest::newRow("drag scale") << minimal(R"("models": {"drag": {"scale": "heavy"}})")
-                                << R"(t.json: models.drag.scale: "heavy" is not one of none, radius, mass)";
+                                << R"(t.json:1:46: models.drag.scale: "heavy" is not one of none, radius, mass)";
     QTest::newRow("wind compare") << minimal(R"("models": {"wind": {"compare": "gusty"}})")
-                                  << R"(t.json: models.wind.compare: "gusty" is not one of off, random, smoothed, noise, pointer)";
+                                  << R"(t.json:1:46: models.wind.compare: "gusty" is not one of off, random, smoothed, noise, pointer)";
     QTest::newRow("misspelt per_frame") << minimal(R"("time": {"perframe": true})")
-                                        << R"(t.json: time.perframe: unknown key "perframe"; did you mean "per_frame"?)";
+                                        << R"(t.json:1:35: time.perframe: unknown key "perframe"; did you mean "per_frame"?)";
     QTest::newRow("missing format") << QByteArray(R"({"id": "t"})") << "t.json: format: missing; give \"format\": 1";
     QTest::newRow("unsupported format") << QByteArray(R"({"format": 2, "id": "t"})")
-                                        << "t.json: format: 2 is not a format this version reads; it reads format 1";
+                                        << "t.json:1:2: format: 2 is not a format this version reads; it reads format 1";
     QTest::newRow("bad id") << QByteArray(R"({"format": 1, "id": "a b"})")
-                            << R"(t.json: id: "a b" is not a valid id; use 1 to 64 letters, digits, '-' or '_')";
+                            << R"(t.json:1:15: id: "a b" is not a valid id; use 1 to 64 letters, digits, '-' or '_')";
     QTest::newRow("duplicate key")
         << QByteArray("{\"format\": 1,\n \"id\": \"t\",\n \"models\": {\"gravity\": {\"y\": 1, \"y\": 2}}}")
         << "t.json:3:33: models.gravity.y: duplicate key (first given on line 3); give each key once";
@@ -575,10 +575,10 @@ void TestLessonLoader::badInput_data()
         << minimal("\"text\": " + QByteArray(1500, '[') + QByteArray(1500, ']'))
         << "t.json:1:65: text" + QString(".0").repeated(31) + ": nested deeper than 32 levels";
     QTest::newRow("spawn count over the limit") << minimal(R"("balls": [{"x": 1, "y": 1}], "spawn": {"count": 200000})")
-                                                << "t.json: spawn.count: 200000 spawned + 1 listed balls is more than "
+                                                << "t.json:1:65: spawn.count: 200000 spawned + 1 listed balls is more than "
                                                    "the limit of 200000";
     QTest::newRow("seed not a whole number") << minimal(R"("time": {"seed": -1})")
-                                             << "t.json: time.seed: expected a whole number in [0, 9007199254740992], "
+                                             << "t.json:1:35: time.seed: expected a whole number in [0, 9007199254740992], "
                                                 "or a string of digits up to 18446744073709551615, got the number -1";
 }
 
@@ -599,12 +599,12 @@ void TestLessonLoader::everyProblemIsReported()
         R"("time": {"dt": -1, "substeps": "two"}, "models": {"wind": {"mode": "gust"}, "drag": {"k": 1e9}}, "balls": [{"x": 1, "y": 2, "r": 0}, 5])"));
     QVERIFY(!r.ok());
     const QStringList expected{
-        "t.json: time.dt: -1 is outside (0, 1] s",
-        R"(t.json: time.substeps: expected a whole number in [1, 1000], got the string "two")",
-        "t.json: models.drag.k: 1000000000 is outside [0, 1000000] 1/s (linear) or 1/px (quadratic)",
-        R"(t.json: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)",
-        "t.json: balls.0.r: 0 is outside [1e-06, 10000] px",
-        R"(t.json: balls.1: expected a ball object {"x": …, "y": …}, got the number 5)",
+        "t.json:1:35: time.dt: -1 is outside (0, 1] s",
+        R"(t.json:1:45: time.substeps: expected a whole number in [1, 1000], got the string "two")",
+        "t.json:1:111: models.drag.k: 1000000000 is outside [0, 1000000] 1/s (linear) or 1/px (quadratic)",
+        R"(t.json:1:85: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)",
+        "t.json:1:150: balls.0.r: 0 is outside [1e-06, 10000] px",
+        R"(t.json:1:159: balls.1: expected a ball object {"x": …, "y": …}, got the number 5)",
     };
     QCOMPARE(r.errors, expected);
 }
@@ -640,7 +640,7 @@ void TestLessonLoader::tooManyBalls()
     balls += "]";
     const LoadResult r = loadText(minimal("\"balls\": " + balls));
     QVERIFY(!r.ok());
-    QCOMPARE(r.errors, QStringList{"t.json: balls: 200001 balls is more than the limit of 200000"});
+    QCOMPARE(r.errors, QStringList{"t.json:1:26: balls: 200001 balls is more than the limit of 200000"});
 
     // Many bad balls: the list stops at 100 lines and counts the rest.
     const LoadResult many = loadText(minimal("\"balls\": [" + QByteArray("{}").repeated(150).replace("}{", "},{") + "]"));
@@ -650,11 +650,19 @@ void TestLessonLoader::tooManyBalls()
 
 void TestLessonLoader::semanticCheckFromTheCore()
 {
-    // The exact integrator needs a constant acceleration: sim::validateSettings says so, with the source in front.
-    const LoadResult r = loadText(minimal(R"("time": {"integrator": "exact"}, "models": {"drag": {"k": 0.1}})"));
+    // The exact integrator needs a constant acceleration: sim::validateSettings says so with the key path,
+    // and the loader adds the file and where in it the key is written (line 2, column 10 below).
+    const LoadResult r = loadText(minimal("\n\"time\": {\"integrator\": \"exact\"}, \"models\": {\"drag\": {\"k\": 0.1}}"));
     QVERIFY(!r.ok());
-    QCOMPARE(r.errors.size(), 1);
-    QVERIFY2(r.errors.first().startsWith("t.json: time.integrator: "), qPrintable(r.errors.first()));
+    QCOMPARE(r.problems.size(), 1);
+    const sim::Error& e = r.problems.first();
+    QCOMPARE(e.source, std::string("t.json"));
+    QCOMPARE(e.keyPath, std::string("time.integrator"));
+    QCOMPARE(e.line, 2);
+    QCOMPARE(e.column, 10);
+    QVERIFY2(e.message.starts_with("exact needs a constant acceleration"), e.message.c_str());
+    QCOMPARE(r.errors, QStringList{errorLine(e)});
+    QVERIFY2(r.errors.first().startsWith("t.json:2:10: time.integrator: exact needs"), qPrintable(r.errors.first()));
 }
 
 void TestLessonLoader::overrides()

@@ -870,11 +870,6 @@ void TestLessons::stage15DragDecaysExponentially()
 // ---------------------------------------------------------------------------
 // forcelab-cli validate, as a process.
 
-namespace {
-
-
-} // namespace
-
 void TestLessons::validateCli_data()
 {
     QTest::addColumn<QByteArray>("json");
@@ -890,12 +885,12 @@ void TestLessons::validateCli_data()
   "models": {"random_accel": {"strength": -5}},
   "spawn": {"per_step": 2}})")
         << QStringList{
-               R"(FILE: world.wall_model: "bounce" is not one of clamp, mirror, exact, reverse)",
-               "FILE: world.centre_only: expected true or false, got the number 1",
-               R"(FILE: time.per_frme: unknown key "per_frme"; did you mean "per_frame"?)",
-               "FILE: time.dt: 0 is outside (0, 1] s",
-               "FILE: models.random_accel.strength: -5 is outside [0, 10000000] px/s²",
-               "FILE: spawn.per_step: 2 is outside [0, 1]",
+               R"(FILE:2:13: world.wall_model: "bounce" is not one of clamp, mirror, exact, reverse)",
+               "FILE:2:37: world.centre_only: expected true or false, got the number 1",
+               R"(FILE:3:21: time.per_frme: unknown key "per_frme"; did you mean "per_frame"?)",
+               "FILE:3:12: time.dt: 0 is outside (0, 1] s",
+               "FILE:4:31: models.random_accel.strength: -5 is outside [0, 10000000] px/s²",
+               "FILE:5:13: spawn.per_step: 2 is outside [0, 1]",
            };
 }
 

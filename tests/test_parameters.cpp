@@ -105,11 +105,11 @@ void TestParameters::validationFollowsTheRanges()
             WorldSettings s;
             p.set(s, end + outward * step);
             const auto refused = validateSettings(s);
-            QVERIFY2(refused && refused->rfind(std::string(p.key) + ":", 0) == 0,
+            QVERIFY2(refused && refused->keyPath == p.key,
                      qPrintable(QString("%1 = %2: %3")
                                     .arg(p.key.data())
                                     .arg(end + outward * step)
-                                    .arg(refused ? refused->c_str() : "accepted")));
+                                    .arg(refused ? toString(*refused).c_str() : "accepted")));
             WorldSettings t;
             p.set(t, end);
             QCOMPARE(bool(validateSettings(t)), open);
