@@ -17,6 +17,7 @@
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"
 #include "sim/parameters.h"
+#include "tests/sim_test_util.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -249,6 +250,7 @@ private slots:
     void tableCoversEveryControl();
     void eachControlEditsItsFieldAndUndoes_data();
     void eachControlEditsItsFieldAndUndoes();
+    void everyRowRoundTripsThroughItsWidget();
     void sliderDragIsOneUndoStep();
     void logSliderSpansDecades();
     void outOfRangeIsReportedNotClamped();
@@ -341,6 +343,65 @@ void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes()
 
     if (QString::fromLatin1(c.row) == QStringLiteral("ball_count"))
         QCOMPARE(controller.world().balls().size(), 2 + 12); // the listed two and twelve placed at random
+}
+
+// The third text-free path of every row of the parameter table (the loader
+// test walks the file and --set): its widget in the panel, found by the name
+// the panel gives it, edited as a user would, lands in the row's field; one
+// undo puts the default back. Number fields show a rounded value, so the
+// field must equal what the spin box shows, and that must be within half a
+// shown digit of the value asked for.
+void GuiWorkbenchTest::everyRowRoundTripsThroughItsWidget()
+{
+    // Every model on, so that no row's widget is greyed out by its model's tick box.
+    sim::Scene scene = plainScene();
+    for (const sim::Parameter& p : sim::parameters())
+        if (p.key.ends_with(".enabled"))
+            p.set(scene.settings, 1.0);
+    SimulationController controller;
+    QVERIFY(!controller.setScene(scene));
+    ParameterPanel panel(&controller);
+    panel.setShowAll(true);
+    QSignalSpy errors(&controller, &SimulationController::errorOccurred);
+    int checked = 0;
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = QString::fromUtf8(p.key.data(), static_cast<qsizetype>(p.key.size()));
+        if (key.startsWith(QStringLiteral("world.walls.")) || key.endsWith(QStringLiteral(".enabled")))
+            continue; // the wall switches and the model tick boxes: see tableCoversEveryControl
+        const QString stem = ParameterPanel::objectStem(p.control);
+        const double before = p.get(controller.world().settings());
+        const double wanted = forcelab::test::anotherValue(p, before);
+        const int steps = panel.undoStack()->index();
+        if (p.type == sim::ParameterType::Boolean) {
+            auto* box = panel.findChild<QCheckBox*>(stem + QStringLiteral("Check"));
+            QVERIFY2(box, qPrintable(key));
+            box->click();
+            QVERIFY2(p.get(controller.world().settings()) == wanted, qPrintable(key));
+        } else if (p.type == sim::ParameterType::Choice) {
+            auto* combo = panel.findChild<QComboBox*>(stem + QStringLiteral("Combo"));
+            QVERIFY2(combo, qPrintable(key));
+            combo->setCurrentIndex(static_cast<int>(wanted));
+            QVERIFY2(p.get(controller.world().settings()) == wanted, qPrintable(key));
+        } else {
+            auto* control = panel.findChild<NumberControl*>(stem + QStringLiteral("Control"));
+            QVERIFY2(control, qPrintable(key));
+            const double toShown = key == QStringLiteral("time.dt") ? 1e3 : 1.0; // dt is shown in ms
+            control->spinBox()->setValue(wanted * toShown);
+            const double shown = control->spinBox()->value() / toShown;
+            QVERIFY2(sameBits(p.get(controller.world().settings()), shown), qPrintable(key));
+            const double digit = std::pow(10.0, -control->spinBox()->decimals()) / toShown;
+            const double significant = std::abs(wanted) * 5e-4; // four significant figures on log rows
+            QVERIFY2(std::abs(shown - wanted) <= std::max(0.5 * digit, significant) * (1 + 1e-12),
+                     qPrintable(QStringLiteral("%1: asked %2, shown %3").arg(key).arg(wanted).arg(shown)));
+        }
+        QVERIFY2(panel.undoStack()->index() == steps + 1, qPrintable(key + QStringLiteral(": not one undo step")));
+        panel.undoStack()->undo();
+        QVERIFY2(sameBits(p.get(controller.world().settings()), before), qPrintable(key));
+        ++checked;
+    }
+    QVERIFY2(errors.isEmpty(), errors.isEmpty() ? "" : qPrintable(errors.first().first().toString()));
+    qInfo("%d rows edited through their widgets", checked);
+    QVERIFY(checked >= 40);
 }
 
 void GuiWorkbenchTest::sliderDragIsOneUndoStep()

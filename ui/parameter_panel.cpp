@@ -377,10 +377,7 @@ QGroupBox* ParameterPanel::addModelSection(const QString& model, const QString& 
                       [on](Settings& s, bool enabled) { on->set(s, enabled ? 1.0 : 0.0); });
 }
 
-namespace {
-
-// "wind_smoothed_step" → "windSmoothedStep": the objectName stem of a row's widget.
-QString camelCase(std::string_view control)
+QString ParameterPanel::objectStem(std::string_view control)
 {
     QString out;
     bool upper = false;
@@ -395,15 +392,13 @@ QString camelCase(std::string_view control)
     return out;
 }
 
-} // namespace
-
 QWidget* ParameterPanel::addParameterWidget(std::string_view key)
 {
     const sim::Parameter* row = sim::findParameter(key);
     Q_ASSERT_X(row, "ParameterPanel", "a key that is not in sim/parameters.cpp");
     const sim::Parameter& p = *row;
     const QString control = qs(p.control);
-    const QString stem = camelCase(p.control);
+    const QString stem = objectStem(p.control);
     const QString label = qs(p.label);
     auto get = [&p](const Settings& s) { return p.get(s); };
     switch (p.type) {

@@ -58,6 +58,9 @@ public:
     QStringList visibleSections() const;
     /// The rows a control name shows (empty for an unknown name).
     static QStringList rowsForControl(const QString& control);
+    /// The objectName stem of a row's widgets: "wind_smoothed_step" gives
+    /// "windSmoothedStep", then "…Check", "…Combo", "…Control", "…Spin", "…Slider".
+    static QString objectStem(std::string_view control);
 
 public slots:
     /// Shows the world's current values (after a new scene, a reset, an undo or a refused edit).
