@@ -625,13 +625,16 @@ void GuiCanvasTest::plotsSampleOncePerStepAndNotWhilePaused()
     dock.refreshCharts();
     const sim::Energy e = controller.world().energy();
     QCOMPARE(dock.series(PlotsDock::Series::Kinetic)->count(), 11);
-    QCOMPARE(dock.series(PlotsDock::Series::Kinetic)->at(10), QPointF(controller.world().time(), e.kinetic));
-    QCOMPARE(dock.series(PlotsDock::Series::Potential)->at(10).y(), e.potential);
-    QCOMPARE(dock.series(PlotsDock::Series::Total)->at(10).y(), e.total());
+    // The points are the values over the factor the axis names (×10⁶ …).
+    auto value = [&dock](PlotsDock::Series s, int k) { return dock.series(s)->at(k).y() * dock.shownFactor(s); };
+    QCOMPARE(dock.series(PlotsDock::Series::Kinetic)->at(10).x(), controller.world().time());
+    QCOMPARE(value(PlotsDock::Series::Kinetic, 10), e.kinetic);
+    QCOMPARE(value(PlotsDock::Series::Potential, 10), e.potential);
+    QCOMPARE(value(PlotsDock::Series::Total, 10), e.total());
     QVERIFY(e.potential != 0.0);
-    QCOMPARE(dock.series(PlotsDock::Series::MomentumMagnitude)->at(10).y(), controller.world().momentum().norm());
-    QCOMPARE(dock.series(PlotsDock::Series::MomentumX)->at(10).y(), controller.world().momentum().x());
-    QCOMPARE(dock.series(PlotsDock::Series::StepCost)->at(10).y(), controller.world().lastStep().seconds * 1e6);
+    QCOMPARE(value(PlotsDock::Series::MomentumMagnitude, 10), controller.world().momentum().norm());
+    QCOMPARE(value(PlotsDock::Series::MomentumX, 10), controller.world().momentum().x());
+    QCOMPARE(value(PlotsDock::Series::StepCost, 10), controller.world().lastStep().seconds * 1e6);
 
     // A rolling window of 10 s, drawn with at most kMaxPoints points.
     for (int k = 0; k < 1500; ++k)

@@ -1,6 +1,7 @@
 #include "accuracy_dock.h"
 
 #include "canvas.h"
+#include "readable_numbers.h"
 #include "simulation_controller.h"
 
 #include "sim/integrator_info.h"
@@ -312,9 +313,9 @@ void AccuracyDock::updateNumbers()
     }
     m_evaluationsPerSecond->setText(
         w.time() > 0.0 ? QString::number(std::llround(double(w.totals().forceEvaluations) / w.time())) : QStringLiteral("—"));
-    m_stepCost->setText(tr("%1 ms, %2 evaluations")
+    m_stepCost->setText(tr("%1 ms, %2")
                             .arg(w.lastStep().seconds * 1e3, 0, 'f', 3)
-                            .arg(w.lastStep().forceEvaluations));
+                            .arg(countText(w.lastStep().forceEvaluations, tr("force evaluation"), tr("force evaluations"))));
 }
 
 void AccuracyDock::applyGhost()

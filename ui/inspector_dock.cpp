@@ -1,5 +1,6 @@
 #include "inspector_dock.h"
 
+#include "readable_numbers.h"
 #include "simulation_controller.h"
 
 #include "sim/force_model.h"
@@ -11,6 +12,7 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace forcelab {
@@ -149,12 +151,16 @@ void InspectorDock::refresh()
     m_massLabel->setText(tr("m = %1, r = %2 px").arg(r.mass, 0, 'g', 5).arg(r.radius, 0, 'f', 2));
 
     QString html = QStringLiteral("<b>%1</b><table cellspacing='0' cellpadding='2'>").arg(tr("Forces F = m a"));
-    auto row = [&html](const QString& name, const sim::Vec2& f, bool bold) {
+    // Four digits of the largest force in the table: a component far below
+    // that is rounding noise (1.4e-09 next to 2000) and shows as 0.
+    double scale = r.totalForce.cwiseAbs().maxCoeff();
+    for (const ModelForce& f : r.forces)
+        scale = std::max(scale, f.force.cwiseAbs().maxCoeff());
+    auto row = [&html, scale](const QString& name, const sim::Vec2& f, bool bold) {
         const QString b = bold ? QStringLiteral("<b>") : QString(), e = bold ? QStringLiteral("</b>") : QString();
         html += QStringLiteral("<tr><td>%1%2%3</td><td align='right'>&nbsp;%1%4%3</td><td align='right'>&nbsp;%1%5%3</td></tr>")
                     .arg(b, name.toHtmlEscaped(), e)
-                    .arg(f.x(), 0, 'g', 4)
-                    .arg(f.y(), 0, 'g', 4);
+                    .arg(rounded(f.x(), scale), rounded(f.y(), scale));
     };
     html += QStringLiteral("<tr><td></td><td align='right'>F<sub>x</sub></td><td align='right'>F<sub>y</sub></td></tr>");
     for (const ModelForce& f : r.forces)

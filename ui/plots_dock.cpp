@@ -1,5 +1,6 @@
 #include "plots_dock.h"
 
+#include "readable_numbers.h"
 #include "simulation_controller.h"
 
 #include <QChart>
@@ -38,22 +39,41 @@ QList<QPointF> decimated(const std::deque<PlotsDock::Sample>& samples, std::size
     return points;
 }
 
-// y range of some series with a 5% margin; a flat line gets ±1 (or ±5%).
-void fitY(QValueAxis* axis, const QList<QList<QPointF>>& lists)
+// The y axis over the points of some series: round ticks, the common factor
+// divided out of the points and named once in the title ("energy (×10⁶
+// mass·px²/s²)"). `fromZero` keeps the axis at or above 0 (costs, counts).
+// Returns the factor.
+double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit,
+                  const QList<std::pair<QLineSeries*, QList<QPointF>>>& data, bool fromZero)
 {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const QList<QPointF>& points : lists)
+    for (const auto& [series, points] : data)
         for (const QPointF& p : points)
             if (std::isfinite(p.y())) {
                 lo = std::min(lo, p.y());
                 hi = std::max(hi, p.y());
             }
-    if (!(lo <= hi)) {
-        axis->setRange(0.0, 1.0);
-        return;
+    if (!(lo <= hi))
+        lo = hi = 0.0;
+    if (fromZero)
+        lo = std::max(0.0, lo), hi = std::max(hi, lo);
+    NiceAxis nice = niceAxis(lo, hi);
+    if (fromZero)
+        nice.min = std::max(0.0, nice.min);
+    applyNiceAxis(axis, nice);
+    axis->setTitleText(QStringLiteral("%1 (%2%3)").arg(quantity, nice.factorText(), unit));
+    const double f = nice.factor();
+    for (const auto& [series, points] : data) {
+        if (f == 1.0) {
+            series->replace(points);
+            continue;
+        }
+        QList<QPointF> shown = points;
+        for (QPointF& p : shown)
+            p.setY(p.y() / f);
+        series->replace(shown);
     }
-    const double margin = hi > lo ? 0.05 * (hi - lo) : std::max(1.0, 0.05 * std::abs(hi));
-    axis->setRange(lo - margin, hi + margin);
+    return f;
 }
 
 } // namespace
@@ -72,11 +92,11 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
     m_p = new QLineSeries(this);
     m_p->setName(tr("|p|"));
     m_px = new QLineSeries(this);
-    m_px->setName(tr("px"));
+    m_px->setName(tr("p_x"));
     m_py = new QLineSeries(this);
-    m_py->setName(tr("py"));
+    m_py->setName(tr("p_y"));
     m_cost = new QLineSeries(this);
-    m_cost->setName(tr("step"));
+    m_cost->setName(tr("one step"));
     m_histogram = new QLineSeries(this);
     m_histogram->setName(tr("balls"));
     m_maxwell = new QLineSeries(this);
@@ -84,14 +104,10 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
 
     m_tabs = new QTabWidget(this);
     m_tabs->setDocumentMode(true);
-    m_tabs->addTab(makeChart(tr("Energy"), tr("energy (mass·px²/s²)"), {m_kinetic, m_potential, m_total}, &m_energyX,
-                             &m_energyY),
-                   tr("Energy"));
-    m_tabs->addTab(makeChart(tr("Momentum"), tr("momentum (mass·px/s)"), {m_p, m_px, m_py}, &m_momentumX,
-                             &m_momentumY),
-                   tr("Momentum"));
-    m_tabs->addTab(makeChart(tr("Cost of a step"), tr("µs"), {m_cost}, &m_costX, &m_costY), tr("Step cost"));
-    m_histogramView = makeChart(tr("Speeds"), tr("share per px/s"), {m_histogram, m_maxwell}, &m_speedX, &m_speedY);
+    m_tabs->addTab(makeChart(tr("Energy"), {m_kinetic, m_potential, m_total}, &m_energyX, &m_energyY), tr("Energy"));
+    m_tabs->addTab(makeChart(tr("Momentum"), {m_p, m_px, m_py}, &m_momentumX, &m_momentumY), tr("Momentum"));
+    m_tabs->addTab(makeChart(tr("Cost of a step"), {m_cost}, &m_costX, &m_costY), tr("Step cost"));
+    m_histogramView = makeChart(tr("Speeds"), {m_histogram, m_maxwell}, &m_speedX, &m_speedY);
     m_speedX->setTitleText(tr("speed (px/s)"));
     m_histogramView->setParent(this);
     m_histogramView->hide();
@@ -115,19 +131,16 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
 
 PlotsDock::~PlotsDock() = default;
 
-QChartView* PlotsDock::makeChart(const QString& title, const QString& yTitle, const QList<QLineSeries*>& series,
-                                 QValueAxis** xAxis, QValueAxis** yAxis)
+QChartView* PlotsDock::makeChart(const QString& title, const QList<QLineSeries*>& series, QValueAxis** xAxis,
+                                 QValueAxis** yAxis)
 {
     auto* chart = new QChart();
     chart->setTitle(title);
     chart->legend()->setAlignment(Qt::AlignBottom);
     chart->setMargins(QMargins(4, 4, 4, 4));
     *xAxis = new QValueAxis(chart);
-    (*xAxis)->setTitleText(tr("t (s)"));
-    (*xAxis)->setLabelFormat(QStringLiteral("%.1f"));
+    (*xAxis)->setTitleText(tr("time (s)"));
     *yAxis = new QValueAxis(chart);
-    (*yAxis)->setTitleText(yTitle);
-    (*yAxis)->setLabelFormat(QStringLiteral("%.3g"));
     chart->addAxis(*xAxis, Qt::AlignBottom);
     chart->addAxis(*yAxis, Qt::AlignLeft);
     for (QLineSeries* s : series) {
@@ -138,8 +151,29 @@ QChartView* PlotsDock::makeChart(const QString& title, const QString& yTitle, co
     }
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumSize(240, 160);
+    // Tall enough that the longest y-axis title ("momentum (×10¹² mass·px/s)")
+    // fits beside the plot uncut: its length plus the chart title, the x axis
+    // and the legend.
+    const QFontMetrics axisFont((*yAxis)->titleFont());
+    const int longest = axisFont.horizontalAdvance(tr("momentum (×10¹² mass·px²/s²)"));
+    view->setMinimumSize(240, longest + 5 * axisFont.height() + 40);
     return view;
+}
+
+double PlotsDock::shownFactor(Series which) const
+{
+    switch (which) {
+    case Series::Kinetic:
+    case Series::Potential:
+    case Series::Total: return m_energyFactor;
+    case Series::MomentumMagnitude:
+    case Series::MomentumX:
+    case Series::MomentumY: return m_momentumFactor;
+    case Series::StepCost: return m_costFactor;
+    case Series::Histogram:
+    case Series::MaxwellBoltzmann: return m_speedFactor;
+    }
+    return 1.0;
 }
 
 QLineSeries* PlotsDock::series(Series which) const
@@ -218,29 +252,27 @@ void PlotsDock::refreshCharts()
     m_redraw.stop();
     const double end = m_samples.empty() ? 0.0 : m_samples.back().t;
     const double start = std::max(0.0, end - kWindowSeconds);
-    for (QValueAxis* x : {m_energyX, m_momentumX, m_costX})
-        x->setRange(start, std::max(start + kWindowSeconds, end));
+    const NiceAxis time = niceAxis(start, std::max(start + kWindowSeconds, end));
+    for (QValueAxis* x : {m_energyX, m_momentumX, m_costX}) {
+        applyNiceAxis(x, time);
+        x->setRange(start, std::max(start + kWindowSeconds, end)); // the window itself, ticks at round times
+    }
 
     auto points = [this](auto value) { return decimated(m_samples, 0, kMaxPoints, value); };
     const QList<QPointF> kinetic = points([](const Sample& s) { return s.kinetic; });
     const QList<QPointF> potential = points([](const Sample& s) { return s.potential; });
     const QList<QPointF> total = points([](const Sample& s) { return s.total; });
-    m_kinetic->replace(kinetic);
-    m_potential->replace(potential);
-    m_total->replace(total);
-    fitY(m_energyY, {kinetic, potential, total});
+    m_energyFactor = showOnAxis(m_energyY, tr("energy"), tr("mass·px²/s²"),
+                                            {{m_kinetic, kinetic}, {m_potential, potential}, {m_total, total}}, false);
 
     const QList<QPointF> p = points([](const Sample& s) { return s.p; });
     const QList<QPointF> px = points([](const Sample& s) { return s.px; });
     const QList<QPointF> py = points([](const Sample& s) { return s.py; });
-    m_p->replace(p);
-    m_px->replace(px);
-    m_py->replace(py);
-    fitY(m_momentumY, {p, px, py});
+    m_momentumFactor =
+        showOnAxis(m_momentumY, tr("momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false);
 
     const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
-    m_cost->replace(cost);
-    fitY(m_costY, {cost, {QPointF(0.0, 0.0)}});
+    m_costFactor = showOnAxis(m_costY, tr("time per step"), tr("µs"), {{m_cost, cost}}, true);
 
     if (m_histogramShown)
         refreshHistogram();
@@ -259,12 +291,11 @@ void PlotsDock::refreshHistogram()
     }
     if (!h.density.isEmpty())
         steps.append(QPointF(static_cast<double>(h.density.size()) * h.binWidth, 0.0));
-    m_histogram->replace(steps);
-    m_maxwell->replace(h.curve);
     const double top = static_cast<double>(h.density.size()) * h.binWidth;
+    applyNiceAxis(m_speedX, niceAxis(0.0, top > 0.0 ? top : 1.0));
     m_speedX->setRange(0.0, top > 0.0 ? top : 1.0);
-    fitY(m_speedY, {steps, h.curve});
-    m_speedY->setMin(0.0);
+    m_speedFactor =
+        showOnAxis(m_speedY, tr("share"), tr("per px/s"), {{m_histogram, steps}, {m_maxwell, h.curve}}, true);
 }
 
 PlotsDock::Histogram PlotsDock::speedHistogram(const sim::BallState& balls, int bins, int curvePoints)

@@ -57,8 +57,10 @@ public:
 
     enum class Series { Kinetic, Potential, Total, MomentumMagnitude, MomentumX, MomentumY, StepCost,
                         Histogram, MaxwellBoltzmann };
-    /// The chart series (for tests and screenshots).
+    /// The chart series (for tests and screenshots). Their points are the
+    /// values divided by shownFactor(), the common factor the axis names.
     QLineSeries* series(Series which) const;
+    double shownFactor(Series which) const;
 
     /// The speed histogram of the current balls as a density (bins of width
     /// `binWidth` from 0; the areas sum to 1) and the 2D Maxwell–Boltzmann
@@ -82,14 +84,16 @@ private:
     void onStepped();
     void scheduleRefresh();
     void refreshHistogram();
-    QChartView* makeChart(const QString& title, const QString& yTitle, const QList<QLineSeries*>& series,
-                          QValueAxis** xAxis, QValueAxis** yAxis);
+    QChartView* makeChart(const QString& title, const QList<QLineSeries*>& series, QValueAxis** xAxis,
+                          QValueAxis** yAxis);
 
     SimulationController* m_controller; // not owned
     std::deque<Sample> m_samples;
     double m_lastTime = -1.0;
     bool m_histogramShown = false;
     QTimer m_redraw;
+    // The common factor divided out of each chart's points.
+    double m_energyFactor = 1.0, m_momentumFactor = 1.0, m_costFactor = 1.0, m_speedFactor = 1.0;
 
     QTabWidget* m_tabs = nullptr;
     QLineSeries* m_kinetic = nullptr;

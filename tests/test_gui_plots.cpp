@@ -1,0 +1,164 @@
+// Plots and readouts a student can read: round ticks (1, 2 or 5 × 10^k), one
+// common factor named in an axis title that is never cut, no negative cost
+// axis, legends that say p_x and p_y, counts with the right plural, and
+// readout numbers without rounding noise.
+
+#include "ui/plots_dock.h"
+#include "ui/readable_numbers.h"
+#include "ui/simulation_controller.h"
+
+#include "sim/scene.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QLineSeries>
+#include <QTest>
+#include <QValueAxis>
+
+#include <cmath>
+
+using namespace forcelab;
+
+namespace {
+
+// The step's mantissa: 1, 2 or 5 (times a power of ten) for a round tick.
+bool isRoundStep(double step)
+{
+    const double m = step / std::pow(10.0, std::floor(std::log10(step) + 1e-12));
+    return std::abs(m - 1.0) < 1e-9 || std::abs(m - 2.0) < 1e-9 || std::abs(m - 5.0) < 1e-9;
+}
+
+QValueAxis* yAxisOf(QLineSeries* series)
+{
+    for (QAbstractAxis* a : series->attachedAxes())
+        if (a->orientation() == Qt::Vertical)
+            return qobject_cast<QValueAxis*>(a);
+    return nullptr;
+}
+
+} // namespace
+
+class GuiPlotsTest : public QObject {
+    Q_OBJECT
+private slots:
+    void niceAxisHasRoundTicksAndOneFactor_data();
+    void niceAxisHasRoundTicksAndOneFactor();
+    void roundedDropsNoiseBelowTheScale();
+    void countsHaveTheRightPlural();
+    void bigEnergiesAreReadable();
+};
+
+void GuiPlotsTest::niceAxisHasRoundTicksAndOneFactor_data()
+{
+    QTest::addColumn<double>("lo");
+    QTest::addColumn<double>("hi");
+    QTest::addColumn<int>("exponent");
+    QTest::newRow("the issue's energies") << -1.02e10 << 8.87e10 << 9;
+    QTest::newRow("small and positive") << 0.013 << 0.047 << 0;
+    QTest::newRow("tiny") << 1.2e-7 << 3.9e-7 << -9;
+    QTest::newRow("a few hundred") << -250.0 << 730.0 << 0;
+    QTest::newRow("flat line") << 4.2e6 << 4.2e6 << 6;
+    QTest::newRow("flat zero") << 0.0 << 0.0 << 0;
+    QTest::newRow("thousands stay plain") << 1200.0 << 7900.0 << 0;
+    QTest::newRow("ten thousand takes a factor") << 1200.0 << 9900.0 << 3;
+}
+
+// Ticks at 1, 2 or 5 × 10^k that cover the data with 3 to 7 intervals; the
+// factor is a power of 1000, so labels show at most four digits before the
+// point; the decimals tell two neighbouring ticks apart.
+void GuiPlotsTest::niceAxisHasRoundTicksAndOneFactor()
+{
+    QFETCH(double, lo);
+    QFETCH(double, hi);
+    QFETCH(int, exponent);
+    const NiceAxis a = niceAxis(lo, hi);
+    QVERIFY2(isRoundStep(a.step), qPrintable(QString::number(a.step)));
+    QVERIFY(a.min <= lo && a.max >= hi);
+    const double intervals = (a.max - a.min) / a.step;
+    QVERIFY2(intervals >= 2.5 && intervals <= 7.5, qPrintable(QString::number(intervals)));
+    QCOMPARE(std::remainder(a.min, a.step), 0.0);
+    QCOMPARE(a.exponent, exponent);
+    const double biggestLabel = std::max(std::abs(a.min), std::abs(a.max)) / a.factor();
+    QVERIFY2(biggestLabel < 1e4, qPrintable(QString::number(biggestLabel)));
+    const QString first = QString::number(a.min / a.factor(), 'f', a.decimals);
+    const QString second = QString::number((a.min + a.step) / a.factor(), 'f', a.decimals);
+    QVERIFY2(first != second, qPrintable(first));
+    QVERIFY(!first.contains(QLatin1Char('e')));
+}
+
+void GuiPlotsTest::roundedDropsNoiseBelowTheScale()
+{
+    QCOMPARE(rounded(1.39698e-09, 1000.0), QStringLiteral("0"));
+    QCOMPARE(rounded(-12.34567, 1000.0), QStringLiteral("-12")); // four digits of 1000: whole numbers
+    QCOMPARE(rounded(-12.34567, 100.0), QStringLiteral("-12.3"));
+    QCOMPARE(rounded(-1.4e-12, 0.0), QStringLiteral("-1.4e-12")); // alone, a small value keeps its digits
+    QCOMPARE(rounded(-1e-13, 1.0), QStringLiteral("0.000"));      // no "-0.000"
+    QCOMPARE(rounded(2.5e7, 2.5e7), QStringLiteral("2.5e+07"));
+    QCOMPARE(rounded(std::nan(""), 1.0), QStringLiteral("—"));
+}
+
+void GuiPlotsTest::countsHaveTheRightPlural()
+{
+    QCOMPARE(countText(1, QStringLiteral("evaluation"), QStringLiteral("evaluations")), QStringLiteral("1 evaluation"));
+    QCOMPARE(countText(0, QStringLiteral("evaluation"), QStringLiteral("evaluations")), QStringLiteral("0 evaluations"));
+    QCOMPARE(countText(4, QStringLiteral("ball"), QStringLiteral("balls")), QStringLiteral("4 balls"));
+}
+
+// A heavy ball falling fast: energies near 1e10 as in the issue. The axis
+// shows small round numbers and names ×10⁹ once; the legends say p_x and
+// p_y; the cost axis starts at 0; each y-axis title fits beside its plot.
+void GuiPlotsTest::bigEnergiesAreReadable()
+{
+    sim::Scene scene;
+    scene.settings.box = {600.0, 400.0};
+    scene.settings.gravity.enabled = true;
+    sim::Ball heavy;
+    heavy.position = {300.0, 100.0};
+    heavy.velocity = {500.0, 0.0};
+    heavy.radius = 60.0; // mass 4/3 π 60³ ≈ 9.0e5
+    scene.balls = {heavy};
+    SimulationController controller;
+    QVERIFY(!controller.setScene(scene));
+    PlotsDock dock(&controller);
+    for (int k = 0; k < 30; ++k)
+        controller.advance(controller.world().settings().time.dt);
+    dock.resize(dock.minimumSizeHint().width() + 40, 400);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    dock.refreshCharts();
+
+    const double kinetic = controller.world().energy().kinetic;
+    QVERIFY2(kinetic > 1e10, qPrintable(QString::number(kinetic)));
+    QValueAxis* energy = yAxisOf(dock.series(PlotsDock::Series::Kinetic));
+    QVERIFY(energy);
+    QCOMPARE(dock.shownFactor(PlotsDock::Series::Kinetic), 1e9);
+    QVERIFY2(energy->titleText() == QStringLiteral("energy (×10⁹ mass·px²/s²)"), qPrintable(energy->titleText()));
+    QVERIFY(isRoundStep(energy->tickInterval()));
+    QCOMPARE(energy->tickType(), QValueAxis::TicksDynamic);
+    QVERIFY2(!energy->labelFormat().contains(QLatin1Char('e')) && !energy->labelFormat().contains(QLatin1Char('g')),
+             qPrintable(energy->labelFormat()));
+
+    QCOMPARE(dock.series(PlotsDock::Series::MomentumX)->name(), QStringLiteral("p_x"));
+    QCOMPARE(dock.series(PlotsDock::Series::MomentumY)->name(), QStringLiteral("p_y"));
+    QValueAxis* cost = yAxisOf(dock.series(PlotsDock::Series::StepCost));
+    QVERIFY(cost && cost->min() >= 0.0);
+
+    // Each chart, at the size the dock gives it, has room for its axis title.
+    for (auto* view : dock.findChildren<QChartView*>()) {
+        if (!view->isVisible())
+            continue;
+        QValueAxis* y = nullptr;
+        for (QAbstractAxis* a : view->chart()->axes(Qt::Vertical))
+            y = qobject_cast<QValueAxis*>(a);
+        QVERIFY(y);
+        const double needed = QFontMetricsF(y->titleFont()).horizontalAdvance(y->titleText());
+        QVERIFY2(view->chart()->plotArea().height() >= needed,
+                 qPrintable(QStringLiteral("%1: %2 px of plot for a %3 px title")
+                                .arg(y->titleText())
+                                .arg(view->chart()->plotArea().height())
+                                .arg(needed)));
+    }
+}
+
+QTEST_MAIN(GuiPlotsTest)
+#include "test_gui_plots.moc"
