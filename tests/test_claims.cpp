@@ -1,0 +1,163 @@
+// Claims against closed forms: each measurement of sim/claims.h on a scene
+// whose answer is known, and the verdicts (holds, fails, cannot be measured).
+
+#include "sim/claims.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace forcelab::sim;
+
+namespace {
+
+// A ball of radius 10 dropped from rest with its bottom 300 px above the floor
+// of a 600 × 400 box; g = 1000 px/s², the exact integrator and exact walls,
+// so every bounce and apex is the closed form's to rounding.
+Scene drop(double restitution)
+{
+    Scene s = openScene({ballAt(300, 400 - 10 - 300)});
+    s.settings.walls = WallSettings{};
+    s.settings.walls.model = WallModel::Exact;
+    s.settings.walls.restitution = restitution;
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = {0.0, 1000.0};
+    s.settings.time.integrator = IntegratorKind::Exact;
+    return s;
+}
+
+Claim near(std::string measure, double value, double tolerance, double at = 10.0)
+{
+    Claim c;
+    c.text = "test";
+    c.measure = std::move(measure);
+    c.value = value;
+    c.tolerance = tolerance;
+    c.at = at;
+    return c;
+}
+
+} // namespace
+
+class TestClaims : public QObject {
+    Q_OBJECT
+private slots:
+    void everyMeasureIsDocumented();
+    void apexAfterABounceIsESquaredTimesTheDrop();
+    void turnTimeOfAThrowIsVOverG();
+    void springPeriodIsTwoPiOverRootK();
+    void elasticCollisionKeepsMomentum();
+    void positionAtATime();
+    void boundsAndFailures();
+};
+
+void TestClaims::everyMeasureIsDocumented()
+{
+    for (const ClaimMeasure& m : claimMeasures()) {
+        QVERIFY(!m.name.empty() && !m.unit.empty() && m.doc.size() > 20);
+        QCOMPARE(findClaimMeasure(m.name), &m);
+    }
+    QVERIFY(!findClaimMeasure("apogee"));
+}
+
+// h₁ = e² h₀: the speed at the floor is √(2 g h₀), e times that after the
+// bounce, and it rises (e v)²/(2g) = e² h₀. Apex n is e^(2n) h₀.
+void TestClaims::apexAfterABounceIsESquaredTimesTheDrop()
+{
+    for (const double e : {0.8, 0.5, 1.0}) {
+        Claim c = near("apex", e * e * 300.0, 1e-6);
+        const ClaimResult first = checkClaim(drop(e), c);
+        QVERIFY2(first.holds, first.explanation.c_str());
+        c.occurrence = 3;
+        c.value = std::pow(e, 6) * 300.0;
+        const ClaimResult third = checkClaim(drop(e), c);
+        QVERIFY2(third.holds, third.explanation.c_str());
+    }
+}
+
+// Thrown up at 600 px/s from the floor: it turns after v/g = 0.6 s, at
+// v²/(2g) = 180 px.
+void TestClaims::turnTimeOfAThrowIsVOverG()
+{
+    Scene s = drop(1.0);
+    s.balls[0].position.y() = 400 - 10;
+    s.balls[0].velocity.y() = -600.0;
+    const ClaimResult t = checkClaim(s, near("turn_time", 0.6, 1e-12, 2.0));
+    QVERIFY2(t.holds, t.explanation.c_str());
+    const ClaimResult h = checkClaim(s, near("max_height", 180.0, 1.0 / 60 * 600, 2.0)); // sampled once a step
+    QVERIFY2(h.holds, h.explanation.c_str());
+    const ClaimResult apex = checkClaim(s, near("apex", 180.0, 1e-9, 2.0)); // found between two steps
+    QVERIFY2(apex.holds, apex.explanation.c_str());
+}
+
+// a = −k (x − anchor): a swing lasts T = 2π/√k; rk4 at dt = 1/600 s keeps
+// it to far better than 1e-6 over ten swings.
+void TestClaims::springPeriodIsTwoPiOverRootK()
+{
+    for (const double k : {4.0, 25.0}) {
+        Scene s = openScene({ballAt(400, 200)});
+        s.settings.spring.enabled = true;
+        s.settings.spring.k = k;
+        s.settings.time.integrator = IntegratorKind::Rk4;
+        s.settings.time.dt = 1.0 / 600;
+        Claim c = near("period", 2.0 * std::numbers::pi / std::sqrt(k), 1e-6, 60.0);
+        c.relative = true;
+        c.axis = 'x';
+        c.occurrence = 10;
+        const ClaimResult r = checkClaim(s, c);
+        QVERIFY2(r.holds, r.explanation.c_str());
+    }
+}
+
+// Two balls meeting head on, elastic: Σ m v is kept to rounding.
+void TestClaims::elasticCollisionKeepsMomentum()
+{
+    Scene s = openScene({ballAt(100, 200, 300, 0, 20), ballAt(400, 200, -100, 0, 10)});
+    s.settings.collisions.response = Response::Impulse2D;
+    Claim c = near("momentum_drift", 0.0, 1e-12, 3.0);
+    ClaimResult r = checkClaim(s, c);
+    QVERIFY2(r.holds, r.explanation.c_str());
+    // And they did meet: the gap between their surfaces reached 0 (within a step's travel).
+    c = near("min_gap", 0.0, 400.0 / 60, 3.0);
+    r = checkClaim(s, c);
+    QVERIFY2(r.holds, r.explanation.c_str());
+}
+
+void TestClaims::positionAtATime()
+{
+    // Free flight at 120 px/s: x = 100 + 120 t, at t = 1.5 s x = 280.
+    Scene s = openScene({ballAt(100, 200, 120, 0)});
+    Claim c = near("position", 280.0, 1e-9, 1.5);
+    c.axis = 'x';
+    const ClaimResult r = checkClaim(s, c);
+    QVERIFY2(r.holds, r.explanation.c_str());
+}
+
+void TestClaims::boundsAndFailures()
+{
+    // A wrong number fails and says what was measured.
+    ClaimResult r = checkClaim(drop(0.8), near("apex", 250.0, 1.0));
+    QVERIFY(!r.holds);
+    QVERIFY2(r.explanation.starts_with("measured 192 px, stated 250 px ± 1 px"), r.explanation.c_str());
+    // Bounds.
+    Claim below = near("apex", 200.0, 0.0);
+    below.test = ClaimTest::Below;
+    QVERIFY(checkClaim(drop(0.8), below).holds);
+    below.test = ClaimTest::Above;
+    QVERIFY(!checkClaim(drop(0.8), below).holds);
+    // An event that does not come before `at` cannot be measured.
+    r = checkClaim(drop(0.8), near("apex", 192.0, 1.0, 0.5));
+    QVERIFY(!r.holds && std::isnan(r.measured));
+    QVERIFY2(r.explanation.find("did not happen before t = 0.5 s") != std::string::npos, r.explanation.c_str());
+    // A ball that is not there.
+    Claim missing = near("speed", 0.0, 1.0);
+    missing.ball = 3;
+    r = checkClaim(drop(0.8), missing);
+    QVERIFY(!r.holds);
+    QVERIFY2(r.explanation == "the scene has 1 ball, so there is no ball 3", r.explanation.c_str());
+    QVERIFY(!checkClaim(drop(0.8), near("apogee", 0.0, 1.0)).holds);
+}
+
+QTEST_APPLESS_MAIN(TestClaims)
+#include "test_claims.moc"
