@@ -3,6 +3,7 @@
 // Plain data: the loader fills it from a lesson file, the writer turns it back
 // into one, the workbench and the CLI read it.
 
+#include "sim/claims.h"
 #include "sim/scene.h"
 
 #include <QString>
@@ -19,6 +20,9 @@ struct Lesson {
     QStringList challenges;
     QStringList controls; ///< parameter names shown first in the Parameters dock
     QStringList overlays; ///< overlays switched on, e.g. "velocity", "readout"
+    /// What the text says about the scene, as measurements `forcelab-cli
+    /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
+    std::vector<sim::Claim> claims;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")
     sim::Scene scene;
 };

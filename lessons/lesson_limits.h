@@ -45,6 +45,10 @@ inline constexpr Range kRadius{sim::kMinRadius, sim::kMaxRadius, false, false, "
 inline constexpr Range kMass{sim::kMinMass, sim::kMaxMass, false, false, "mass units"};
 inline constexpr Range kCharge{-sim::kMaxCharge, sim::kMaxCharge, false, false, "charge units"};
 inline constexpr Range kSpawnSpeed{0.0, 1e7, false, false, "px/s"};
+inline constexpr Range kClaimTime{0.0, 3600.0, false, false, "s"};       ///< a claim's `at`
+inline constexpr Range kClaimNumber{-1e15, 1e15, false, false, ""};     ///< a claim's stated value
+inline constexpr Range kClaimTolerance{0.0, 1e15, false, false, ""};    ///< a claim's `within`
+inline constexpr Range kPercent{0.0, 100.0, false, false, "%"};
 } // namespace range
 
 namespace intrange {

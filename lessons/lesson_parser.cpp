@@ -549,6 +549,124 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
     }
 }
 
+/// One claim: {"says": "…", "measure": "apex", "ball": 0, "n": 1, "at": 10,
+/// "near": 192, "within": 1} (or "within_percent", or "below"/"above" instead
+/// of "near"), optionally "axis", "other", "distance" and "set": {key: value}.
+void parseClaim(Reader& r, const QJsonObject& o, const QString& p, int balls, sim::Claim& c)
+{
+    r.checkKeys(o, p,
+                {"says", "measure", "ball", "other", "at", "n", "axis", "distance", "near", "within", "within_percent",
+                 "below", "above", "set"});
+    QString text;
+    if (r.require(o, p, "says", QStringLiteral("the sentence of the text this claim checks")) &&
+        r.string(o, p, "says", text))
+        c.text = text.toStdString();
+    QString measure;
+    QStringList measures;
+    for (const sim::ClaimMeasure& m : sim::claimMeasures())
+        measures << qs(m.name);
+    if (r.require(o, p, "measure", QStringLiteral("one of ") + measures.join(", ")) &&
+        r.string(o, p, "measure", measure)) {
+        if (!sim::findClaimMeasure(measure.toStdString()))
+            r.fail(join(p, "measure"), QStringLiteral("%1 is not one of %2").arg(quoted(measure), measures.join(", ")));
+        c.measure = measure.toStdString();
+    }
+    const int lastBall = std::max(0, balls - 1);
+    r.integer(o, p, "ball", 0, lastBall, c.ball);
+    r.integer(o, p, "other", 0, lastBall, c.other);
+    r.require(o, p, "at", QStringLiteral("the time in s it is measured at (or the run's length, or the latest time "
+                                         "for the event)"));
+    r.number(o, p, "at", range::kClaimTime, c.at);
+    r.integer(o, p, "n", 1, 1000, c.occurrence);
+    QString axis;
+    if (r.string(o, p, "axis", axis)) {
+        if (axis != QStringLiteral("x") && axis != QStringLiteral("y"))
+            r.fail(join(p, "axis"), QStringLiteral("%1 is not one of x, y").arg(quoted(axis)));
+        else
+            c.axis = axis == QStringLiteral("x") ? 'x' : 'y';
+    }
+    r.number(o, p, "distance", range::kClaimNumber, c.distance);
+    const int tests = int(o.contains("near")) + int(o.contains("below")) + int(o.contains("above"));
+    if (tests != 1)
+        r.fail(p, QStringLiteral("give exactly one of \"near\" (with \"within\" or \"within_percent\"), "
+                                 "\"below\" or \"above\""));
+    if (r.number(o, p, "below", range::kClaimNumber, c.value))
+        c.test = sim::ClaimTest::Below;
+    if (r.number(o, p, "above", range::kClaimNumber, c.value))
+        c.test = sim::ClaimTest::Above;
+    if (r.number(o, p, "near", range::kClaimNumber, c.value)) {
+        c.test = sim::ClaimTest::Near;
+        double percent = 0.0;
+        if (o.contains("within") == o.contains("within_percent"))
+            r.fail(p, QStringLiteral("give \"near\" one tolerance: \"within\" (in the measurement's unit) or "
+                                     "\"within_percent\""));
+        else if (r.number(o, p, "within_percent", range::kPercent, percent))
+            c.relative = true, c.tolerance = percent / 100.0;
+        else
+            r.number(o, p, "within", range::kClaimTolerance, c.tolerance);
+    }
+    if (const auto set = r.object(o, p, "set")) {
+        const QString sp = join(p, "set");
+        for (auto it = set->begin(); it != set->end(); ++it) {
+            const QString key = it.key();
+            const sim::Parameter* row = sim::findParameter(key.toStdString());
+            if (!row) {
+                r.fail(join(sp, key), QStringLiteral("not a parameter key path (docs/parameters.md lists them)"));
+                continue;
+            }
+            const QJsonValue v = it.value();
+            double value = 0.0;
+            switch (row->type) {
+            case sim::ParameterType::Boolean:
+                if (!v.isBool()) {
+                    r.fail(join(sp, key), QStringLiteral("expected true or false, got ") + describe(v));
+                    continue;
+                }
+                value = v.toBool() ? 1.0 : 0.0;
+                break;
+            case sim::ParameterType::Choice: {
+                const int i = v.isString() ? sim::choiceIndex(*row, v.toString().toStdString()) : -1;
+                if (i < 0) {
+                    r.fail(join(sp, key), QStringLiteral("%1 is not one of %2").arg(describe(v), names(row->choices())));
+                    continue;
+                }
+                value = i;
+                break;
+            }
+            case sim::ParameterType::Number:
+            case sim::ParameterType::Integer:
+                if (!v.isDouble() || sim::checkValue(*row, v.toDouble())) {
+                    r.fail(join(sp, key), QStringLiteral("expected a number allowed for %1, got %2").arg(key, describe(v)));
+                    continue;
+                }
+                value = v.toDouble();
+                break;
+            }
+            c.set.emplace_back(key.toStdString(), value);
+        }
+    }
+}
+
+void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Claim>& out)
+{
+    const QString base = QStringLiteral("claims");
+    if (a.size() > kMaxListEntries) {
+        r.fail(base, QStringLiteral("%1 entries is more than the limit of %2").arg(a.size()).arg(kMaxListEntries));
+        return;
+    }
+    out.clear();
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        const QString p = join(base, i);
+        if (!a.at(i).isObject()) {
+            r.fail(p, QStringLiteral("expected a claim object {\"says\": …, \"measure\": …}, got ") + describe(a.at(i)));
+            continue;
+        }
+        sim::Claim c;
+        parseClaim(r, a.at(i).toObject(), p, balls, c);
+        out.push_back(std::move(c));
+    }
+}
+
 /// A list of names each of which must be one of `allowed`.
 void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStringList& allowed, QStringList& out)
 {
@@ -583,7 +701,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays"});
+                 "controls", "overlays", "claims"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -620,6 +738,8 @@ ParseResult parseLesson(const QJsonObject& root)
         parseBalls(r, *a, scene.balls);
     if (const auto o = r.object(root, top, "spawn"))
         parseSpawn(r, *o, static_cast<int>(scene.balls.size()), scene.spawn);
+    if (const auto a = r.array(root, top, "claims", QStringLiteral("an array of claim objects")))
+        parseClaims(r, *a, static_cast<int>(scene.balls.size()) + scene.spawn.count, lesson.claims);
     return result;
 }
 

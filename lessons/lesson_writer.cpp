@@ -152,6 +152,52 @@ QByteArray rowValue(const sim::Parameter& p, const sim::WorldSettings& s)
     return num(v);
 }
 
+/// One claim on one line, with only the keys that differ from a claim's
+/// defaults (apart from says, measure, at and the test, which are always there).
+QByteArray claimLine(const sim::Claim& c)
+{
+    const sim::Claim d;
+    Fields f{{"says", str(c.text)}, {"measure", str(c.measure)}};
+    if (c.ball != d.ball)
+        f.push_back({"ball", num(c.ball)});
+    if (c.other != d.other)
+        f.push_back({"other", num(c.other)});
+    f.push_back({"at", num(c.at)});
+    if (c.occurrence != d.occurrence)
+        f.push_back({"n", num(c.occurrence)});
+    if (c.axis != d.axis)
+        f.push_back({"axis", c.axis == 'x' ? QByteArray("\"x\"") : QByteArray("\"y\"")});
+    if (c.distance != d.distance)
+        f.push_back({"distance", num(c.distance)});
+    switch (c.test) {
+    case sim::ClaimTest::Near:
+        f.push_back({"near", num(c.value)});
+        f.push_back(c.relative ? std::pair{"within_percent", num(100.0 * c.tolerance)} : std::pair{"within", num(c.tolerance)});
+        break;
+    case sim::ClaimTest::Below:
+        f.push_back({"below", num(c.value)});
+        break;
+    case sim::ClaimTest::Above:
+        f.push_back({"above", num(c.value)});
+        break;
+    }
+    if (!c.set.empty()) {
+        sim::WorldSettings values;
+        QByteArray set = "{";
+        for (const auto& [key, value] : c.set) {
+            const sim::Parameter* p = sim::findParameter(key);
+            if (!p)
+                continue;
+            p->set(values, value);
+            if (set.size() > 1)
+                set += ", ";
+            set += str(key) + ": " + rowValue(*p, values);
+        }
+        f.push_back({"set", set + '}'});
+    }
+    return inlineObject(f);
+}
+
 /// The rows of a section as fields, leaving out `enabled` (a model's switch
 /// is written by addModel).
 Fields sectionFields(std::string_view section, const sim::WorldSettings& s)
@@ -268,6 +314,12 @@ QByteArray saveLesson(const Lesson& lesson)
         {"controls", strings(lesson.controls, false)},
         {"overlays", strings(lesson.overlays, false)},
     };
+    if (!lesson.claims.empty()) {
+        QList<QByteArray> claims;
+        for (const sim::Claim& c : lesson.claims)
+            claims << claimLine(c);
+        top.push_back({"claims", blockArray(claims, 2)});
+    }
 
     QByteArray out = "{\n";
     for (std::size_t i = 0; i < top.size(); ++i) {

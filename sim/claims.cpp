@@ -1,6 +1,7 @@
 #include "claims.h"
 
 #include "error.h"
+#include "parameters.h"
 #include "world.h"
 
 #include <algorithm>
@@ -266,9 +267,16 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
         return refused(cat({"no measurement called \"", claim.measure, "\""}));
     if (!(claim.at >= 0.0) || !std::isfinite(claim.at))
         return refused("the time `at` must be a number of seconds ≥ 0");
+    Scene changed = scene;
+    for (const auto& [key, value] : claim.set) {
+        const Parameter* p = findParameter(key);
+        if (!p)
+            return refused(cat({"no parameter called \"", key, "\" to set"}));
+        p->set(changed.settings, value);
+    }
     std::optional<World> world;
     try {
-        world.emplace(scene);
+        world.emplace(changed);
     } catch (const InvalidInput& e) {
         return refused(cat({"the scene is invalid: ", e.what()}));
     }

@@ -10,6 +10,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace forcelab::sim {
 
@@ -40,6 +42,12 @@ struct Claim {
     double value = 0.0;     ///< the number the text states, in the measurement's unit
     double tolerance = 0.0; ///< Near: the allowed difference (the measurement's unit, or a fraction when relative)
     bool relative = false;  ///< Near: tolerance is a fraction of |value|
+    /// Changes to the scene's settings before it runs ("with resting contacts
+    /// off, …"): key paths of sim/parameters.h and their values (a choice by
+    /// its index, a switch as 0 or 1).
+    std::vector<std::pair<std::string, double>> set;
+
+    friend bool operator==(const Claim&, const Claim&) = default;
 };
 
 /// One row of the measurement table.

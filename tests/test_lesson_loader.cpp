@@ -65,6 +65,9 @@ void compareLessons(const Lesson& a, const Lesson& b)
     QCOMPARE(a.challenges, b.challenges);
     QCOMPARE(a.controls, b.controls);
     QCOMPARE(a.overlays, b.overlays);
+    QCOMPARE(a.claims.size(), b.claims.size());
+    for (std::size_t i = 0; i < a.claims.size(); ++i)
+        QVERIFY2(a.claims[i] == b.claims[i], a.claims[i].text.c_str());
 
     const sim::WorldSettings& s = a.scene.settings;
     const sim::WorldSettings& t = b.scene.settings;
@@ -166,6 +169,7 @@ class TestLessonLoader : public QObject {
     Q_OBJECT
 
 private slots:
+    void claimsAreReadCheckedAndWritten();
     void builtInFilesAreCompiledIn();
     void everyBuiltInLessonLoads();
     void builtInByIdAndStem();
@@ -187,6 +191,52 @@ private slots:
     void builtInLessonsRoundTrip();
     void everyParameterRoundTrips();
 };
+
+// A lesson's claims: every key read into its member, a wrong one named with
+// its key path, and the same claims back after save and load.
+void TestLessonLoader::claimsAreReadCheckedAndWritten()
+{
+    const LoadResult r = loadText(minimal(R"("balls": [{"x": 100, "y": 90}, {"x": 300, "y": 90}], "claims": [
+        {"says": "After one bounce it rises to 192 px.", "measure": "apex", "ball": 1, "n": 2, "at": 10, "near": 192, "within": 1},
+        {"says": "The period is 3.14 s.", "measure": "period", "axis": "x", "at": 60, "near": 3.14, "within_percent": 1},
+        {"says": "Without resting contacts the top falls below 200 px.", "measure": "top_height", "at": 1, "below": 200,
+         "set": {"models.collisions.resting": false, "world.wall_model": "exact", "time.dt": 0.001}},
+        {"says": "Many balls end at a wall.", "measure": "near_wall", "distance": 5, "other": 0, "at": 5, "above": 30}])"));
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    const std::vector<sim::Claim>& c = r.lesson->claims;
+    QCOMPARE(c.size(), std::size_t{4});
+    QCOMPARE(c[0].text, std::string("After one bounce it rises to 192 px."));
+    QCOMPARE(c[0].measure, std::string("apex"));
+    QCOMPARE(c[0].ball, 1);
+    QCOMPARE(c[0].occurrence, 2);
+    QCOMPARE(c[0].at, 10.0);
+    QVERIFY(c[0].test == sim::ClaimTest::Near && c[0].value == 192.0 && c[0].tolerance == 1.0 && !c[0].relative);
+    QVERIFY(c[1].axis == 'x' && c[1].relative && c[1].tolerance == 0.01);
+    QVERIFY(c[2].test == sim::ClaimTest::Below && c[2].value == 200.0);
+    QCOMPARE(c[2].set.size(), std::size_t{3});
+    QCOMPARE(c[2].set[0], (std::pair<std::string, double>{"models.collisions.resting", 0.0}));
+    QCOMPARE(c[2].set[1], (std::pair<std::string, double>{"time.dt", 0.001})); // in key order, as JSON objects are
+    QCOMPARE(c[2].set[2], (std::pair<std::string, double>{"world.wall_model", double(sim::WallModel::Exact)}));
+    QVERIFY(c[3].test == sim::ClaimTest::Above && c[3].distance == 5.0 && c[3].other == 0);
+
+    const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
+    QVERIFY2(back.ok(), qPrintable(back.errors.join(" | ")));
+    compareLessons(*r.lesson, *back.lesson);
+
+    // Wrong claims, each named by its key path.
+    const LoadResult bad = loadText(minimal(R"("balls": [{"x": 100, "y": 90}], "claims": [
+        {"says": "x", "measure": "apogee", "at": 1, "near": 1, "within": 1},
+        {"says": "x", "measure": "apex", "ball": 3, "at": 1, "below": 1},
+        {"says": "x", "measure": "apex", "at": 1, "near": 1},
+        {"says": "x", "measure": "apex", "at": 1, "below": 1, "set": {"models.drag.kk": 1}},
+        {"measure": "apex", "at": 1, "above": 1, "below": 2}])"));
+    QVERIFY(!bad.ok());
+    const QString all = bad.errors.join(" | ");
+    for (const char* expected : {"claims.0.measure: \"apogee\" is not one of position", "claims.1.ball: 3 is outside [0, 0]",
+                                 "claims.2: give \"near\" one tolerance", "claims.3.set.models.drag.kk: not a parameter",
+                                 "claims.4.says: missing", "claims.4: give exactly one of"})
+        QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
+}
 
 void TestLessonLoader::builtInFilesAreCompiledIn()
 {
