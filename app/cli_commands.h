@@ -27,6 +27,11 @@ int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::o
 /// lesson at simulated time T with the canvas's painter. Needs a QGuiApplication.
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+/// forcelab-cli check [LESSON...]: runs every claim of the lessons (all
+/// built-in ones by default); 0 when all hold, 1 when one does not, 2 when a
+/// lesson does not load.
+int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
 } // namespace forcelab::cli
 
 /// forcelab-cli bench [options]: collision and step benchmarks.

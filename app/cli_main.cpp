@@ -43,6 +43,10 @@ const Command kCommands[] = {
      "             [--steps N | --time T] [--seed S] [--set KEY.PATH=VALUE]... [--json]",
      "run a lesson (a file, or a built-in id such as 'gravity') headless; --time T ends at T",
      &forcelab::cli::runCommand},
+    {"check", "check [LESSON...]",
+     "run the claims lessons make about their scenes (every built-in lesson when none is named):\n"
+     "      exit 0 when all hold, 1 when one does not",
+     &forcelab::cli::checkCommand},
     {"validate", "validate FILE...",
      "check lesson files and list every problem (exit 0 when all are valid, 2 otherwise)",
      &forcelab::cli::validateCommand},
