@@ -6,6 +6,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 using namespace forcelab::sim;
@@ -52,11 +54,18 @@ private slots:
     void boundsAndFailures();
 };
 
+// Each row has its line in docs/lessons.md's table, word for word.
 void TestClaims::everyMeasureIsDocumented()
 {
+    std::ifstream doc(FORCELAB_SOURCE_DIR "/docs/lessons.md");
+    QVERIFY(doc);
+    const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
     for (const ClaimMeasure& m : claimMeasures()) {
         QVERIFY(!m.name.empty() && !m.unit.empty() && m.doc.size() > 20);
         QCOMPARE(findClaimMeasure(m.name), &m);
+        std::string row = "| `";
+        row.append(m.name).append("` | ").append(m.unit).append(" | ").append(m.doc).append(" |");
+        QVERIFY2(text.find(row) != std::string::npos, ("docs/lessons.md lacks the row\n" + row).c_str());
     }
     QVERIFY(!findClaimMeasure("apogee"));
 }
