@@ -11,12 +11,15 @@ namespace {
 // Each model adds its acceleration to `a`. x, v are 2×N, like a.
 
 
+// [code gravity if models.gravity.enabled=true: Gravity]
 // Uniform gravity: the same acceleration g for every ball.
 void addUniformGravity(const GravitySettings& s, Matrix2X& a)
 {
     a.colwise() += s.g;
 }
+// [/code]
 
+// [code drag if models.drag.enabled=true: Drag]
 // Drag opposes the velocity. Linear: a = −c v with c = k × the ball's scale
 // factor (m_ref / m for a force), so dv/dt = −c v decays as e^(−ct).
 // Quadratic: a = −c |v| v, which matters more at high speed. `scale` is empty
@@ -36,6 +39,7 @@ void addDrag(const DragSettings& s, const VectorX& scale, const Matrix2X& v, Mat
     else
         a -= (v.array().rowwise() * (c * v.colwise().norm().transpose().array()).transpose()).matrix();
 }
+// [/code]
 
 // Wind blows along x: the reference ball gets w, the others w × its factor.
 void addWind(double w, const VectorX& scale, Matrix2X& a)
@@ -65,11 +69,13 @@ void addInverseSquare(const Vec2& p, double strength, bool attract, double maxAc
     }
 }
 
+// [code spring if models.spring.enabled=true: A spring to the anchor]
 // Hooke's law per unit mass: a = −k (x − anchor), an oscillation with ω = √k.
 void addSpring(const SpringSettings& s, const Matrix2X& x, Matrix2X& a)
 {
     a -= s.k * (x.colwise() - s.anchor);
 }
+// [/code]
 
 // Homing: a spring of stiffness `strength` to each ball's own home.
 void addHoming(const HomingSettings& s, const Matrix2X& home, const Matrix2X& x, Matrix2X& a)
@@ -114,6 +120,7 @@ double mutualPairPotential(double G, double eps, double m1m2, double r)
 }
 
 
+// [code magnetic if models.magnetic.enabled=true: A magnetic field]
 // Magnetic field B out of the screen: a = (q/m) m₁₀ B (v_y, −v_x). It is
 // always at right angles to v, so it turns the ball and does no work.
 void addMagnetic(const MagneticSettings& s, const BallState& b, const Matrix2X& v, Matrix2X& a)
@@ -123,6 +130,7 @@ void addMagnetic(const MagneticSettings& s, const BallState& b, const Matrix2X& 
     a.row(0).array() += w.transpose() * v.row(1).array();
     a.row(1).array() -= w.transpose() * v.row(0).array();
 }
+// [/code]
 
 // Potential energies: U with −∇U/m = the model's acceleration.
 

@@ -49,26 +49,32 @@ void Integrator::advance(IntegratorKind kind, const ForceModel& forces, Matrix2X
 {
     switch (kind) {
     case IntegratorKind::Euler: {
+        // [code step.euler if time.integrator=euler: One step of explicit Euler]
         // Both updates use the old state: x_{n+1} = x_n + v_n h, v_{n+1} = v_n + a_n h.
         forces.acceleration(x, v, t, m_a);
         x.noalias() += h * v;
         v.noalias() += h * m_a;
+        // [/code]
         m_aValid = false;
         break;
     }
     case IntegratorKind::SemiImplicitEuler: {
+        // [code step.semi-implicit-euler if time.integrator=semi-implicit-euler: One step of semi-implicit Euler]
         // The velocity is updated first and the position uses the new velocity.
         forces.acceleration(x, v, t, m_a);
         v.noalias() += h * m_a;
         x.noalias() += h * v;
+        // [/code]
         m_aValid = false;
         break;
     }
     case IntegratorKind::Exact: {
+        // [code step.exact if time.integrator=exact: One step of the exact parabola]
         // With a constant acceleration the motion is a parabola: exact in closed form.
         forces.acceleration(x, v, t, m_a);
         x.noalias() += h * v + (0.5 * h * h) * m_a;
         v.noalias() += h * m_a;
+        // [/code]
         m_aValid = false;
         break;
     }

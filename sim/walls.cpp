@@ -246,10 +246,12 @@ std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, Integ
         if (!on[d][0] && !on[d][1] && !middleHere)
             continue;
         for (Eigen::Index i = 0; i < x.cols(); ++i) {
+            // [code walls.test if world.walls.bottom=true: Where a wall stops a ball]
             // With centreOnly the wall test ignores the radius: the ball sinks
             // into the wall up to its centre before it turns.
-            const double r = walls.centreOnly ? 0.0 : radius[i];
+            const double r = walls.centreOnly ? 0.0 : radius[i]; // [if world.centre_only=true]
             Axis ax{r, size[d] - r, on[d][0], on[d][1]};
+            // [/code]
             if (middleHere) { // the middle wall bounds the side the ball started the step on
                 if (x0(0, i) <= middle)
                     ax = Axis{ax.lo, middle - r, ax.loOn, true};

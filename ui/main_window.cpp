@@ -2,6 +2,7 @@
 
 #include "accuracy_dock.h"
 #include "canvas.h"
+#include "code_dock.h"
 #include "parameter_commands.h"
 #include "inspector_dock.h"
 #include "lessons_dock.h"
@@ -311,6 +312,9 @@ void MainWindow::createDocks()
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this);
     addDockWidget(Qt::BottomDockWidgetArea, m_accuracyDock);
     tabifyDockWidget(m_plotsDock, m_accuracyDock);
+    m_codeDock = new CodeDock(m_controller, this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_codeDock);
+    tabifyDockWidget(m_plotsDock, m_codeDock);
     m_plotsDock->raise();
     m_accuracyDock->hide();
     m_accuracyMenu->addAction(m_accuracyDock->tradeOffAction());
@@ -339,6 +343,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_plotsDock->toggleViewAction());
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
+    m_viewMenu->addAction(m_codeDock->toggleViewAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
     resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
     resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);
@@ -472,6 +477,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
     m_inspectorDock->setSelectedBall(-1);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
+    m_codeDock->setLessonControls(lesson.controls);
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);

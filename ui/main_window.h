@@ -23,6 +23,7 @@ class QToolBar;
 namespace forcelab {
 
 class AccuracyDock;
+class CodeDock;
 class Canvas;
 class InspectorDock;
 class LessonsDock;
@@ -63,6 +64,7 @@ public:
     InspectorDock* inspectorDock() const { return m_inspectorDock; }
     PlotsDock* plotsDock() const { return m_plotsDock; }
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
+    CodeDock* codeDock() const { return m_codeDock; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -112,6 +114,7 @@ private:
     QDockWidget* m_parametersDock = nullptr;
     PlotsDock* m_plotsDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
+    CodeDock* m_codeDock = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
 

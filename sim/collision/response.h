@@ -51,6 +51,7 @@ inline bool reverse1D(const Vec2& d, Vec2& va, Vec2& vb)
 /// the impulse j = −(1 + e) u / (wa + wb) gives va.x −= wa j, vb.x += wb j:
 /// momentum is conserved, u becomes −e u, and for e = 1 kinetic energy too.
 /// (The same as the textbook va' = ((ma − e mb) va + (1 + e) mb vb)/(ma + mb).)
+// [code response.elastic-1d if models.collisions.response=1d-elastic: A collision along x]
 inline bool elastic1D(double e, const Vec2& d, double wa, double wb, Vec2& va, Vec2& vb)
 {
     if (!((vb.x() - va.x()) * d.x() < 0.0) || !detail::resolvable(wa, wb))
@@ -58,10 +59,12 @@ inline bool elastic1D(double e, const Vec2& d, double wa, double wb, Vec2& va, V
     detail::impulse1D(e, wa, wb, va.x(), vb.x());
     return true;
 }
+// [/code]
 
 /// 2d-axis, the naive 2D try: the 1D elastic collision on x and on y
 /// separately (each axis where the balls approach along it). Conserves
 /// momentum and, for e = 1, energy, but an off-centre hit goes the wrong way.
+// [code response.axis-2d if models.collisions.response=2d-axis: The naive 2D collision, axis by axis]
 inline bool axis2D(double e, const Vec2& d, double wa, double wb, Vec2& va, Vec2& vb)
 {
     if (!detail::resolvable(wa, wb))
@@ -75,12 +78,14 @@ inline bool axis2D(double e, const Vec2& d, double wa, double wb, Vec2& va, Vec2
     }
     return changed;
 }
+// [/code]
 
 /// 2d-impulse: the push acts along n only. With v_n = (vb − va)·n < 0,
 ///   j = −(1 + e) v_n / (wa + wb),  va −= wa j n,  vb += wb j n.
 /// The normal relative speed becomes −e v_n, the tangential parts are
 /// unchanged, momentum is conserved, and kinetic energy drops by exactly
 /// (1 − e²) · ½ μ v_n² with μ = 1/(wa + wb) (nothing for e = 1).
+// [code response.impulse-2d if models.collisions.response=2d-impulse: The collision along the line of impact]
 inline bool impulse2D(double e, const Vec2& n, double wa, double wb, Vec2& va, Vec2& vb)
 {
     const double vn = (vb - va).dot(n);
@@ -91,6 +96,7 @@ inline bool impulse2D(double e, const Vec2& n, double wa, double wb, Vec2& va, V
     vb += (wb * j) * n;
     return true;
 }
+// [/code]
 
 /// Dispatches on the model (None and Flag change nothing).
 bool respond(Response model, double e, const Vec2& d, const Vec2& n, double wa, double wb, Vec2& va, Vec2& vb);
