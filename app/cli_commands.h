@@ -32,6 +32,9 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
 /// lesson does not load.
 int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+/// forcelab-cli handbook --out FILE.html: the teacher's handbook of the built-in lessons.
+int handbookCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
 } // namespace forcelab::cli
 
 /// forcelab-cli bench [options]: collision and step benchmarks.

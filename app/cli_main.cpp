@@ -47,6 +47,9 @@ const Command kCommands[] = {
      "run the claims lessons make about their scenes (every built-in lesson when none is named):\n"
      "      exit 0 when all hold, 1 when one does not",
      &forcelab::cli::checkCommand},
+    {"handbook", "handbook --out FILE.html",
+     "write the teacher's handbook: every lesson with its goal, answers, misconceptions and checked claims",
+     &forcelab::cli::handbookCommand},
     {"validate", "validate FILE...",
      "check lesson files and list every problem (exit 0 when all are valid, 2 otherwise)",
      &forcelab::cli::validateCommand},

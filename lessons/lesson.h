@@ -11,6 +11,17 @@
 
 namespace forcelab {
 
+/// What a teacher needs and a class does not see: shown in the Lessons dock's
+/// Teacher section (hidden unless asked for) and in the printable handbook.
+struct TeacherNotes {
+    QString goal;               ///< what students should take away, in one or two sentences
+    int minutes = 0;            ///< minutes the lesson takes in class (0: not stated)
+    QStringList misconceptions; ///< wrong ideas students often bring, each with what the scene shows instead
+    QStringList answers;        ///< the expected answer to each challenge, in the challenges' order
+    bool empty() const { return goal.isEmpty() && minutes == 0 && misconceptions.isEmpty() && answers.isEmpty(); }
+    friend bool operator==(const TeacherNotes&, const TeacherNotes&) = default;
+};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -23,6 +34,7 @@ struct Lesson {
     /// What the text says about the scene, as measurements `forcelab-cli
     /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;
+    TeacherNotes teacher;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")
     sim::Scene scene;
 };

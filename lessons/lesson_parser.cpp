@@ -667,6 +667,23 @@ void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Cla
     }
 }
 
+/// {"goal": "…", "minutes": 20, "misconceptions": […], "answers": […]}: one
+/// answer per challenge when answers are given.
+void parseTeacher(Reader& r, const QJsonObject& o, qsizetype challenges, TeacherNotes& t)
+{
+    const QString p = QStringLiteral("teacher");
+    r.checkKeys(o, p, {"goal", "minutes", "misconceptions", "answers"});
+    r.string(o, p, "goal", t.goal);
+    r.integer(o, p, "minutes", 0, 600, t.minutes);
+    r.stringList(o, p, "misconceptions", t.misconceptions);
+    if (r.stringList(o, p, "answers", t.answers) && t.answers.size() != challenges)
+        r.fail(join(p, "answers"), QStringLiteral("%1 %2 for %3 %4; give one answer per challenge, in order")
+                                       .arg(t.answers.size())
+                                       .arg(t.answers.size() == 1 ? "answer" : "answers")
+                                       .arg(challenges)
+                                       .arg(challenges == 1 ? "challenge" : "challenges"));
+}
+
 /// A list of names each of which must be one of `allowed`.
 void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStringList& allowed, QStringList& out)
 {
@@ -701,7 +718,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "claims"});
+                 "controls", "overlays", "claims", "teacher"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -740,6 +757,8 @@ ParseResult parseLesson(const QJsonObject& root)
         parseSpawn(r, *o, static_cast<int>(scene.balls.size()), scene.spawn);
     if (const auto a = r.array(root, top, "claims", QStringLiteral("an array of claim objects")))
         parseClaims(r, *a, static_cast<int>(scene.balls.size()) + scene.spawn.count, lesson.claims);
+    if (const auto o = r.object(root, top, "teacher"))
+        parseTeacher(r, *o, lesson.challenges.size(), lesson.teacher);
     return result;
 }
 

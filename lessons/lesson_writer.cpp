@@ -314,6 +314,21 @@ QByteArray saveLesson(const Lesson& lesson)
         {"controls", strings(lesson.controls, false)},
         {"overlays", strings(lesson.overlays, false)},
     };
+    if (!lesson.teacher.empty()) {
+        const TeacherNotes& t = lesson.teacher;
+        QByteArray block = "{\n";
+        block += "    \"goal\": " + str(t.goal) + ",\n";
+        block += "    \"minutes\": " + num(t.minutes) + ",\n";
+        QList<QByteArray> items;
+        for (const QString& m : t.misconceptions)
+            items << str(m);
+        block += "    \"misconceptions\": " + blockArray(items, 4) + ",\n";
+        items.clear();
+        for (const QString& a : t.answers)
+            items << str(a);
+        block += "    \"answers\": " + blockArray(items, 4) + "\n  }";
+        top.push_back({"teacher", block});
+    }
     if (!lesson.claims.empty()) {
         QList<QByteArray> claims;
         for (const sim::Claim& c : lesson.claims)

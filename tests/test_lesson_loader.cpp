@@ -65,6 +65,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
     QCOMPARE(a.challenges, b.challenges);
     QCOMPARE(a.controls, b.controls);
     QCOMPARE(a.overlays, b.overlays);
+    QVERIFY(a.teacher == b.teacher);
     QCOMPARE(a.claims.size(), b.claims.size());
     for (std::size_t i = 0; i < a.claims.size(); ++i)
         QVERIFY2(a.claims[i] == b.claims[i], a.claims[i].text.c_str());
@@ -170,6 +171,7 @@ class TestLessonLoader : public QObject {
 
 private slots:
     void claimsAreReadCheckedAndWritten();
+    void teacherNotesAreReadAndWritten();
     void builtInFilesAreCompiledIn();
     void everyBuiltInLessonLoads();
     void builtInByIdAndStem();
@@ -236,6 +238,28 @@ void TestLessonLoader::claimsAreReadCheckedAndWritten()
                                  "claims.2: give \"near\" one tolerance", "claims.3.set.models.drag.kk: not a parameter",
                                  "claims.4.says: missing", "claims.4: give exactly one of"})
         QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
+}
+
+void TestLessonLoader::teacherNotesAreReadAndWritten()
+{
+    const LoadResult r = loadText(minimal(R"("challenges": ["How high?", "How long?"], "teacher": {
+        "goal": "Energy is lost at each bounce.", "minutes": 15,
+        "misconceptions": ["The ball bounces back to where it started."], "answers": ["192 px", "0.78 s"]})"));
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    const TeacherNotes& t = r.lesson->teacher;
+    QCOMPARE(t.goal, QStringLiteral("Energy is lost at each bounce."));
+    QCOMPARE(t.minutes, 15);
+    QCOMPARE(t.misconceptions, QStringList{QStringLiteral("The ball bounces back to where it started.")});
+    QCOMPARE(t.answers, (QStringList{QStringLiteral("192 px"), QStringLiteral("0.78 s")}));
+    const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
+    QVERIFY2(back.ok(), qPrintable(back.errors.join(" | ")));
+    compareLessons(*r.lesson, *back.lesson);
+
+    const LoadResult bad = loadText(minimal(R"("challenges": ["How high?"], "teacher": {"answers": ["a", "b"], "time": 3})"));
+    QVERIFY(!bad.ok());
+    const QString all = bad.errors.join(" | ");
+    QVERIFY2(all.contains(QStringLiteral("teacher.answers: 2 answers for 1 challenge;")), qPrintable(all));
+    QVERIFY2(all.contains(QStringLiteral("teacher.time: unknown key")), qPrintable(all));
 }
 
 void TestLessonLoader::builtInFilesAreCompiledIn()

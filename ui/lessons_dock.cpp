@@ -1,5 +1,7 @@
 #include "lessons_dock.h"
 
+#include "handbook.h"
+
 #include "lessons/lesson_loader.h"
 
 #include <QAction>
@@ -39,6 +41,15 @@ LessonsDock::LessonsDock(QWidget* parent)
             emit lessonChosen(source);
     });
     connect(m_tree, &QTreeWidget::itemClicked, m_tree, &QTreeWidget::itemActivated);
+
+    m_teacherAction = new QAction(tr("Teacher notes"), this);
+    m_teacherAction->setObjectName(QStringLiteral("teacherNotesAction"));
+    m_teacherAction->setCheckable(true);
+    m_teacherAction->setToolTip(tr("Show the goal, expected answers and misconceptions under the lesson text"));
+    connect(m_teacherAction, &QAction::toggled, this, [this] {
+        if (m_lesson)
+            showText(*m_lesson);
+    });
 
     m_text = new QTextBrowser;
     m_text->setObjectName(QStringLiteral("lessonText"));
@@ -171,6 +182,7 @@ QTreeWidgetItem* LessonsDock::itemFor(const QString& source) const
 void LessonsDock::setCurrentLesson(const Lesson& lesson)
 {
     m_current = lesson.source;
+    m_lesson = lesson;
     {
         const QSignalBlocker block(m_tree);
         QTreeWidgetItem* item = itemFor(m_current);
@@ -233,6 +245,12 @@ void LessonsDock::showText(const Lesson& lesson)
         for (const QString& challenge : lesson.challenges)
             html += QStringLiteral("<li style='margin-bottom:6px'>%1</li>").arg(challenge.toHtmlEscaped());
         html += QStringLiteral("</ol>");
+    }
+    // The teacher's notes only when asked for, so a projected dock shows none.
+    if (m_teacherAction->isChecked()) {
+        const QString notes = teacherNotesHtml(lesson);
+        html += QStringLiteral("<h3>%1</h3>").arg(tr("For the teacher")) +
+                (notes.isEmpty() ? tr("<p>This lesson has no teacher notes.</p>") : notes);
     }
     m_text->setHtml(html);
 }

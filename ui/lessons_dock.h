@@ -11,6 +11,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 class QAction;
 class QTextBrowser;
 class QToolButton;
@@ -51,6 +53,9 @@ public:
     /// The buttons under the text trigger these (the main window's actions, also in the menu).
     void setNavigationActions(QAction* previous, QAction* next);
 
+    /// Checkable: shows the lesson's teacher notes under its text (off by default).
+    QAction* teacherNotesAction() const { return m_teacherAction; }
+
     QTreeWidget* tree() const { return m_tree; }
     QTextBrowser* textBrowser() const { return m_text; }
 
@@ -67,6 +72,8 @@ private:
     QToolButton* m_previousButton = nullptr;
     QToolButton* m_nextButton = nullptr;
     QString m_current;
+    QAction* m_teacherAction = nullptr;
+    std::optional<Lesson> m_lesson; // the one shown, to redraw when the teacher notes are switched
 };
 
 } // namespace forcelab

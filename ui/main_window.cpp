@@ -2,6 +2,7 @@
 
 #include "accuracy_dock.h"
 #include "canvas.h"
+#include "handbook.h"
 #include "code_dock.h"
 #include "parameter_commands.h"
 #include "inspector_dock.h"
@@ -182,6 +183,11 @@ void MainWindow::createActions()
     m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportTrajectory);
 
+    m_handbookAction = new QAction(tr("Export Teacher &Handbook…"), this);
+    m_handbookAction->setObjectName(QStringLiteral("handbookAction"));
+    m_handbookAction->setStatusTip(tr("Write every lesson with its teacher notes as one printable HTML page"));
+    connect(m_handbookAction, &QAction::triggered, this, &MainWindow::exportHandbook);
+
     m_previousAction = new QAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Previous Lesson"), this);
     m_previousAction->setObjectName(QStringLiteral("previousLessonAction"));
     m_previousAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Left));
@@ -216,6 +222,7 @@ void MainWindow::createMenus()
     file->addAction(m_screenshotAction);
     file->addAction(m_recordAction);
     file->addAction(m_exportAction);
+    file->addAction(m_handbookAction);
     file->addSeparator();
     file->addAction(m_quitAction);
 
@@ -344,6 +351,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
+    m_viewMenu->addAction(m_lessonsDock->teacherNotesAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
     resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
     resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);
@@ -650,6 +658,20 @@ void MainWindow::saveScreenshot()
         return;
     m_lastDirectory = QFileInfo(path).absolutePath();
     saveScreenshotTo(path);
+}
+
+void MainWindow::exportHandbook()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Teacher Handbook"),
+                                                      QStringLiteral("forcelab-handbook.html"), tr("HTML (*.html)"));
+    if (path.isEmpty())
+        return;
+    QFile out(path);
+    if (!out.open(QIODevice::WriteOnly) || out.write(builtInHandbookHtml().toUtf8()) < 0) {
+        QMessageBox::warning(this, tr("Export Teacher Handbook"), tr("%1: cannot write: %2").arg(path, out.errorString()));
+        return;
+    }
+    statusBar()->showMessage(tr("Handbook written to %1").arg(path), 4000);
 }
 
 void MainWindow::exportTrajectory()

@@ -77,6 +77,7 @@ private slots:
     void saveLessonFile();
     void saveScreenshot();
     void exportTrajectory();
+    void exportHandbook();
     void chooseLesson(const QString& source);
     void previousLesson();
     void nextLesson();
@@ -115,6 +116,7 @@ private:
     PlotsDock* m_plotsDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
+    QAction* m_handbookAction = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
 
