@@ -50,6 +50,9 @@ constexpr std::array kMeasures{
     ClaimMeasure{"period", "s", W::Event, true,
                  "the mean time of one full swing along `axis` over the first n swings, from one turning point "
                  "to the next of the same kind"},
+    ClaimMeasure{"stopped", "1", W::At, false,
+                 "1 when the simulation stopped itself before `at` because the motion blows up (its message says "
+                 "why), else 0"},
 };
 
 std::string number(double v)
@@ -301,8 +304,8 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
         done = m.afterStep(w, t0, x0, v0);
     }
     ClaimResult r;
-    r.measured = m.finish(w);
-    if (w.halted())
+    r.measured = row->name == "stopped" ? (w.halted() ? 1.0 : 0.0) : m.finish(w);
+    if (w.halted() && row->name != "stopped")
         return refused(cat({"the simulation stopped itself at t = ", number(w.time()), " s: ", *w.halted()}));
     if (std::isnan(r.measured))
         return refused(row->when == W::Event ? cat({"event ", std::to_string(claim.occurrence), " (", row->name,

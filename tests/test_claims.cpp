@@ -52,6 +52,7 @@ private slots:
     void elasticCollisionKeepsMomentum();
     void positionAtATime();
     void boundsAndFailures();
+    void dragStopsTheWorldWhenKTimesDtPassesTwo();
 };
 
 // Each row has its line in docs/lessons.md's table, word for word.
@@ -166,6 +167,26 @@ void TestClaims::boundsAndFailures()
     QVERIFY(!r.holds);
     QVERIFY2(r.explanation == "the scene has 1 ball, so there is no ball 3", r.explanation.c_str());
     QVERIFY(!checkClaim(drop(0.8), near("apogee", 0.0, 1.0)).holds);
+}
+
+// Linear drag with one Euler step: v ← v (1 − k dt). |1 − k dt| > 1 once
+// k dt > 2: the speed grows, and the world stops itself instead of running.
+void TestClaims::dragStopsTheWorldWhenKTimesDtPassesTwo()
+{
+    Scene s = openScene({ballAt(300, 200, 100, 0)});
+    s.settings.drag.enabled = true;
+    s.settings.drag.scale = ForceScale::None;
+    Claim c = near("stopped", 1.0, 0.0, 1.0);
+    for (const auto& [k, stops] : {std::pair{150.0, true}, std::pair{90.0, false}}) { // k dt = 2.5 and 1.5
+        s.settings.drag.k = k;
+        const ClaimResult r = checkClaim(s, c);
+        QVERIFY2(r.holds == stops, r.explanation.c_str());
+    }
+    // At k dt = 1.5 each step multiplies v by −0.5: after one step vx = −50 px/s.
+    c = near("velocity", -50.0, 1e-12, 1.0 / 60);
+    c.axis = 'x';
+    const ClaimResult r = checkClaim(s, c);
+    QVERIFY2(r.holds, r.explanation.c_str());
 }
 
 QTEST_APPLESS_MAIN(TestClaims)
