@@ -28,7 +28,9 @@ std::optional<Lesson> loadLessonWorld(const QString& pathOrId, const QList<Overr
         return std::nullopt;
     }
     if (auto error = world.reset(loaded.lesson->scene)) {
-        err << loaded.lesson->source.toStdString() << ": " << *error << "\n";
+        sim::Error e = *error;
+        e.source = loaded.lesson->source.toStdString();
+        err << sim::toString(e) << "\n";
         return std::nullopt;
     }
     return std::move(loaded.lesson);

@@ -62,7 +62,7 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     scene.spawn.maxRadius = 8;
     sim::World world;
     if (auto error = world.reset(scene)) {
-        err << "forcelab-cli soak: " << *error << "\n";
+        err << "forcelab-cli soak: " << sim::toString(*error) << "\n";
         return 2;
     }
     const double e0 = world.energy().total();

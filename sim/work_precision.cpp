@@ -43,7 +43,7 @@ bool runOne(const Scene& scene, IntegratorKind kind, double dt, double tolerance
     s.settings.time.tolerance = tolerance;
     s.settings.time.perFrame = false;
     if (auto refused = world.reset(s)) {
-        run.refused = *refused;
+        run.refused = toString(*refused);
         return true;
     }
     for (std::int64_t k = 0; k < steps && !world.halted(); ++k) {

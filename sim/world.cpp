@@ -136,10 +136,10 @@ std::optional<Error> validateScene(const Scene& scene)
     return validateBalls(scene.balls);
 }
 
-std::optional<std::string> World::reset(const Scene& scene)
+std::optional<Error> World::reset(const Scene& scene)
 {
     if (auto error = validateScene(scene))
-        return toString(*error);
+        return error;
     m_settings = scene.settings;
     m_balls = buildBalls(scene);
     m_spawn = scene.spawn;
@@ -159,10 +159,10 @@ std::optional<std::string> World::reset(const Scene& scene)
     return std::nullopt;
 }
 
-std::optional<std::string> World::setSettings(const WorldSettings& settings)
+std::optional<Error> World::setSettings(const WorldSettings& settings)
 {
     if (auto error = validateSettings(settings))
-        return toString(*error);
+        return error;
     m_settings = settings;
     m_integrator.invalidate();
     m_halted = stabilityProblem(m_settings, largestDragFactor());

@@ -48,13 +48,13 @@ public:
     /// InvalidInput naming the field (reset() returns the problem instead).
     explicit World(const Scene& scene);
 
-    /// Replaces settings and balls and restarts time at 0. Returns an error
-    /// (and changes nothing) when the scene's settings are invalid.
-    std::optional<std::string> reset(const Scene& scene);
+    /// Replaces settings and balls and restarts time at 0. Returns the first
+    /// problem (and changes nothing) when the scene is invalid.
+    std::optional<Error> reset(const Scene& scene);
 
     /// Pushes new settings between steps. An invalid set is refused whole: the
-    /// world keeps its settings and the message names the field.
-    std::optional<std::string> setSettings(const WorldSettings& settings);
+    /// world keeps its settings and the error names the field.
+    std::optional<Error> setSettings(const WorldSettings& settings);
     const WorldSettings& settings() const { return m_settings; }
 
     const BallState& balls() const { return m_balls; }

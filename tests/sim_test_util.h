@@ -25,7 +25,7 @@ inline std::optional<std::string> runFor(sim::World& world, sim::Scene scene, si
     scene.settings.time.integrator = integrator;
     scene.settings.time.dt = dt;
     if (auto refused = world.reset(scene))
-        return refused;
+        return toString(*refused);
     for (int k = 0; k < steps && !world.halted(); ++k)
         world.step();
     return std::nullopt;

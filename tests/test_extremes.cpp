@@ -193,7 +193,7 @@ void TestExtremes::grid()
     x.apply(s);
     World w;
     const auto refused = w.reset(s);
-    QVERIFY2(!refused, refused ? refused->c_str() : "");
+    QVERIFY2(!refused, refused ? toString(*refused).c_str() : "");
     // Positional correction moves overlapping balls apart without touching
     // their velocities; against a strong conservative force that pulls them
     // together (the 1e5 spring, mutual gravity of a 1e6 mass) that lifts
@@ -355,10 +355,19 @@ void TestExtremes::everyBallHasAMass()
         QVERIFY(b.inverseMass[i] > 0.0 && std::isfinite(b.inverseMass[i]));
     }
     const auto tiny = w.reset(openScene({ballAt(100, 100, 0, 0, 1e-110)}));
-    QVERIFY(tiny && *tiny == "balls.0.r: 1e-110 is outside [1e-06, 10000]");
+    QVERIFY(tiny && tiny->keyPath == "balls.0.r" && tiny->message == "1e-110 is outside [1e-06, 10000]");
     const auto light = w.reset(openScene({ballAt(100, 100), ballAt(100, 100, 0, 0, 10, 1e-300)}));
-    QVERIFY(light && light->rfind("balls.1.mass: ", 0) == 0);
+    QVERIFY(light && light->keyPath == "balls.1.mass");
     QCOMPARE(w.balls().size(), 4); // refused scenes change nothing
+    // A world cannot be built on an invalid scene: the constructor refuses it
+    // loudly with the same structured error, instead of running an empty world.
+    try {
+        const World refusedWorld(openScene({ballAt(100, 100, 0, 0, 1e-110)}));
+        QFAIL("World(scene) accepted a radius of 1e-110 px");
+    } catch (const InvalidInput& e) {
+        QCOMPARE(e.error().keyPath, std::string("balls.0.r"));
+        QCOMPARE(std::string(e.what()), std::string("balls.0.r: 1e-110 is outside [1e-06, 10000]"));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestExtremes)

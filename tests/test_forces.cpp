@@ -23,7 +23,7 @@ Vec2 accelerationOf(const Scene& s, int i = 0)
     World w;
     const auto error = w.reset(s);
     if (error)
-        qFatal("%s", error->c_str());
+        qFatal("%s", toString(*error).c_str());
     return w.accelerations().col(i);
 }
 
@@ -384,7 +384,7 @@ void TestForces::settingsChecks()
     }
     const auto error = w.setSettings(s);
     QVERIFY(error);
-    QCOMPARE(QString::fromStdString(*error), message);
+    QCOMPARE(QString::fromStdString(toString(*error)), message);
     QCOMPARE(w.settings().time.dt, before.time.dt); // refused whole: nothing changed
     QCOMPARE(w.settings().walls.restitution, before.walls.restitution);
 }

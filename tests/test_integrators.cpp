@@ -203,7 +203,7 @@ void TestIntegrators::exactRejectedWithNonConstantForces()
     World world;
     const auto error = world.reset(s);
     QVERIFY(error);
-    QCOMPARE(QString::fromStdString(*error),
+    QCOMPARE(QString::fromStdString(toString(*error)),
              QString("time.integrator: exact needs a constant acceleration, but drag depends on velocity; "
                      "pick another integrator or switch that model off"));
     // Pushed live, the world keeps its old settings.

@@ -329,7 +329,7 @@ void TestLessonLoader::builtInLessonsRun()
         const sim::Scene& scene = r.lesson->scene;
         sim::World world;
         const auto error = world.reset(scene);
-        QVERIFY2(!error, error ? error->c_str() : "");
+        QVERIFY2(!error, error ? sim::toString(*error).c_str() : "");
         const int steps = static_cast<int>(std::lround(2.0 / scene.settings.time.dt));
         for (int k = 0; k < steps; ++k)
             world.step();

@@ -53,7 +53,7 @@ std::optional<Lesson> builtIn(const QString& stem)
 #define RESET(world, scene)                                                                                         \
     do {                                                                                                            \
         const auto resetError = (world).reset(scene);                                                               \
-        QVERIFY2(!resetError, resetError ? resetError->c_str() : "");                                               \
+        QVERIFY2(!resetError, resetError ? sim::toString(*resetError).c_str() : "");                                               \
     } while (false)
 
 int stepsFor(const sim::Scene& scene, double seconds)

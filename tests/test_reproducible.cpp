@@ -44,7 +44,7 @@ std::uint64_t run(const Scene& scene, int steps)
 {
     World w;
     if (auto error = w.reset(scene))
-        qFatal("%s", error->c_str());
+        qFatal("%s", forcelab::sim::toString(*error).c_str());
     // The pointer moves over the scene part of the time, as a student's would.
     for (int k = 0; k < steps; ++k) {
         if (k % 1000 == 200)

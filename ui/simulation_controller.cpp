@@ -1,5 +1,6 @@
 #include "simulation_controller.h"
 
+#include "lessons/lesson_loader.h"
 #include "sim/work_precision.h"
 
 #include <algorithm>
@@ -19,7 +20,7 @@ SimulationController::SimulationController(QObject* parent)
 std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
 {
     if (auto error = m_world.reset(scene)) {
-        const QString message = QString::fromStdString(*error);
+        const QString message = errorLine(*error);
         emit errorOccurred(message);
         return message;
     }
@@ -31,7 +32,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
 bool SimulationController::setSettings(const sim::WorldSettings& settings)
 {
     if (auto error = m_world.setSettings(settings)) {
-        emit errorOccurred(QString::fromStdString(*error));
+        emit errorOccurred(errorLine(*error));
         return false;
     }
     if (m_ghost && m_ghost->setSettings(ghostSettings(settings))) {
@@ -150,7 +151,7 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
         return false;
     }
     if (auto error = m_world.reset(scene)) {
-        emit errorOccurred(QString::fromStdString(*error));
+        emit errorOccurred(errorLine(*error));
         return false;
     }
     m_spawn = spawn;
@@ -165,7 +166,7 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
 void SimulationController::reset()
 {
     if (auto error = m_world.reset(m_scene)) {
-        emit errorOccurred(QString::fromStdString(*error));
+        emit errorOccurred(errorLine(*error));
         return;
     }
     startedScene();
@@ -249,7 +250,7 @@ void SimulationController::restartGhost()
         scene.settings = ghostSettings(m_world.settings());
         auto ghost = std::make_unique<sim::World>();
         if (auto error = ghost->reset(scene)) {
-            emit errorOccurred(tr("ghost: %1").arg(QString::fromStdString(*error)));
+            emit errorOccurred(tr("ghost: %1").arg(errorLine(*error)));
             m_ghostMode = GhostMode::Off;
         } else {
             sim::BallState& balls = ghost->mutableBalls();
