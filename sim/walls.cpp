@@ -232,10 +232,14 @@ void exactAxis(const Axis& ax, double e, const PathInStep& path, double p0, doub
 
 } // namespace
 
-std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, IntegratorKind integrator,
-                        const VectorX& radius, const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x,
-                        Matrix2X& v)
+std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
+                        Matrix2X& x, Matrix2X& v)
 {
+    const WallSettings& walls = settings.walls;
+    const BoxSettings& box = settings.box;
+    const IntegratorKind integrator = settings.time.integrator;
+    const Matrix2X& x0 = start.position;
+    const Matrix2X& v0 = start.velocity;
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
     const double e = walls.restitution;

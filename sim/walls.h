@@ -9,14 +9,19 @@
 
 namespace forcelab::sim {
 
-/// Bounces the balls off the enabled walls. x0, v0 are the positions and
-/// velocities at the start of the step of length h (the `exact` model needs
-/// both, the middle wall needs x0 to know each ball's side; otherwise they are
-/// not read); x, v are the state after integration and are corrected in place.
-/// Returns the number of bounces.
-/// `integrator` tells the `exact` model the shape of the path inside the step.
-std::int64_t applyWalls(const WallSettings& walls, const BoxSettings& box, IntegratorKind integrator,
-                        const VectorX& radius, const Matrix2X& x0, const Matrix2X& v0, double h, Matrix2X& x,
-                        Matrix2X& v);
+/// The balls at the start of the sub-step: the `exact` model needs both, the
+/// middle wall needs the positions to know each ball's side; otherwise they
+/// are not read.
+struct StepStart {
+    const Matrix2X& position; ///< px
+    const Matrix2X& velocity; ///< px/s
+};
+
+/// Bounces the balls off the enabled walls of `settings` (walls, box; the
+/// integrator tells the `exact` model the shape of the path inside the
+/// sub-step of length h). x, v are the state after integration and are
+/// corrected in place. Returns the number of bounces.
+std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
+                        Matrix2X& x, Matrix2X& v);
 
 } // namespace forcelab::sim

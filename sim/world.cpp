@@ -472,8 +472,8 @@ void World::subStep(double h)
     }
 
     // 3. Walls: bounce whatever crossed an enabled wall.
-    const std::int64_t hits = applyWalls(s.walls, s.box, s.time.integrator, m_balls.radius, m_startPosition,
-                                         m_startVelocity, h, m_balls.position, m_balls.velocity);
+    const std::int64_t hits = applyWalls(s, m_balls.radius, {m_startPosition, m_startVelocity}, h, m_balls.position,
+                                         m_balls.velocity);
 
     // Walls and the speed limit change momentum on purpose; collisions must
     // not, so only their energy (restitution below 1) is booked.

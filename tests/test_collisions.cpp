@@ -371,14 +371,14 @@ void TestCollisions::positionalCorrectionKeepsCentreOfMass()
     const double ma = 2.0, mb = 7.0;
     const Vec2 com = (ma * pa + mb * pb) / (ma + mb);
     const Vec2 n = lineOfImpact(pb - pa, 20.0, 0, 1);
-    const double removed = separate(pa, pb, 10.0, 10.0, n, 1.0 / ma, 1.0 / mb, BoxSettings{}, noWalls());
+    const double removed = separate(pa, pb, {10.0, 10.0, n, 1.0 / ma, 1.0 / mb}, BoxSettings{}, noWalls());
     QVERIFY(removed > 0.0);
     QVERIFY(std::abs((pb - pa).norm() - 20.0) <= 1e-12);
     QVERIFY(((ma * pa + mb * pb) / (ma + mb) - com).norm() <= 1e-12);
     // Against a wall: the ball on the wall stays on it, its partner takes the push.
     Vec2 wa(10.0, 200.0), wb(25.0, 200.0);
     WallSettings walls;
-    separate(wa, wb, 10.0, 10.0, Vec2(1.0, 0.0), 1.0, 1.0, BoxSettings{}, walls);
+    separate(wa, wb, {10.0, 10.0, Vec2(1.0, 0.0), 1.0, 1.0}, BoxSettings{}, walls);
     QCOMPARE(wa.x(), 10.0);
     QVERIFY(std::abs(wb.x() - 30.0) <= 1e-12);
 }

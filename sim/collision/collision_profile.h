@@ -42,6 +42,7 @@ public:
         if (m_on)
             m_last = std::clock();
     }
+    bool on() const { return m_on; }
     void lap(double& stage)
     {
         if (!m_on)

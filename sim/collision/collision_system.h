@@ -16,6 +16,8 @@
 #include "contact.h"
 #include "contact_solver.h"
 #include "contact_sort.h"
+#include "resting_solver.h"
+#include "sub_step_context.h"
 #include "sweep_and_prune.h"
 #include "uniform_grid.h"
 
@@ -78,64 +80,12 @@ private:
                       StageClock& clock);
     void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
                  const WallSettings& walls, double dt);
-    void solveResting(BallState& balls, double e, const BoxSettings& box, const WallSettings& walls, double h,
-                      double restingSpeed, double gravity, const std::vector<Contact>& pairs, StageClock& clock);
+    SubStepContext subStep(const CollisionSettings& settings, const BoxSettings& box, const WallSettings& walls,
+                           double h, double restingSpeed, double gravity) const;
 
-    // One ball–ball contact of the resting solver: its two bodies (indices
-    // into m_bodies), the line of impact at detection, the effective mass
-    // 1/(wa + wb) and the approach speed it may keep (closes its gap in one
-    // sub-step; 0 when it overlaps). 32 bytes, read-only in the passes: the
-    // passes stream these rows many times per sub-step, so their size sets the
-    // memory traffic. The balls of the row (for the next sub-step's warm-start
-    // merge), the total impulse so far and the normal speed before the solve
-    // are arrays beside them.
-    struct PairRow {
-        int a, b;
-        double nx, ny;
-        float mass, allowed;
-    };
-    // One ball on a wall: key 4·ball + 2·axis + (far side), its body, axis 0
-    // (x) or 1 (y), side +1 (the wall at the box's far edge) or −1 (at 0), the
-    // speed towards the wall it may keep (closes the gap by the end of the
-    // sub-step, never below 0), inverse mass, speed towards the wall before
-    // the solve, total impulse.
-    struct WallRow {
-        int key, body, axis;
-        double side, allowed, w, into0, impulse;
-    };
-    // One ball that takes part in the solve (a body), gathered in the order
-    // the rows first name it: the velocity the passes change, its inverse
-    // mass and the last velocity pass that changed it (−1: none). 32 bytes
-    // with padding, so a row update touches one cache line per ball instead
-    // of the velocity, the inverse mass and the pass stamp in three arrays;
-    // the velocities are written back to the balls after the passes
-    // (m_bodyOf maps a ball to its body).
-    struct Body {
-        double v[2];
-        double w;
-        int changed;
-    };
-    static_assert(sizeof(Body) == 32);
-    // The same bodies for the position update and positional correction:
-    // position, radius, inverse mass. Gathered with the bodies, beside their
-    // velocities before the solve (m_bodyVelocity0, two per body).
-    struct BodyPosition {
-        double x, y, r, w;
-    };
-    // The row arrays only grow (rows are written by index, no push_back);
-    // the first m_rowCount hold this sub-step's rows.
-    std::vector<PairRow> m_pairRows, m_spareRows;
-    std::vector<Contact> m_rowBalls, m_spareBalls;
-    std::vector<double> m_impulse, m_spareImpulse, m_vn0;
-    std::size_t m_rowCount = 0;
-    std::vector<WallRow> m_wallRows, m_spareWalls;
-    std::vector<Body> m_bodies;
-    std::vector<BodyPosition> m_bodyPositions;
-    std::vector<int> m_bodyOf;           // per ball: its body in this solve (−1: none; all −1 between solves)
-    std::vector<double> m_bodyVelocity0;
+    RestingSolver m_resting;
     std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts
     std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)
-    int m_warmCount = -1;
     ContactSolverSettings m_solver;
     int m_lastPasses = 0;
     bool m_profiling = false;

@@ -37,19 +37,19 @@ bool keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSetting
     return moved;
 }
 
-double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, const BoxSettings& box,
-                const WallSettings& walls)
+double separate(Vec2& pa, Vec2& pb, const PairShape& pair, const BoxSettings& box, const WallSettings& walls)
 {
-    const double depth = (ra + rb) - (pb - pa).norm();
+    const double depth = (pair.ra + pair.rb) - (pb - pa).norm();
     if (!(depth > 0.0))
         return 0.0;
-    pushApart(pa, pb, ra, rb, n, wa, wb, depth, box, walls);
+    pushApart(pa, pb, pair, depth, box, walls);
     return depth;
 }
 
-void pushApart(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, double depth,
-               const BoxSettings& box, const WallSettings& walls)
+void pushApart(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const BoxSettings& box,
+               const WallSettings& walls)
 {
+    const auto& [ra, rb, n, wa, wb] = pair;
     const double w = wa + wb;
     const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
     // Move a by its share and b by the rest. A ball stops at a wall it was

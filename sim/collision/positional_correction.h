@@ -20,15 +20,36 @@ namespace forcelab::sim {
 /// two dimensions, the same way every run.
 Vec2 lineOfImpact(const Vec2& d, double s, int a, int b);
 
+/// The two balls of a pair that is pushed apart: their radii, the line of
+/// impact n from a to b, and their inverse masses.
+struct PairShape {
+    double ra = 0.0; ///< px
+    double rb = 0.0; ///< px
+    Vec2 n{1.0, 0.0}; ///< unit vector from a to b
+    double wa = 0.0; ///< 1/mass
+    double wb = 0.0; ///< 1/mass
+};
+
+/// Whether a ball of radius r at (px, py) is inside every enabled wall: the
+/// common case, where a push needs no wall handling.
+struct WallCheck {
+    bool on[2][2];  ///< [x, y][low side, high side]
+    double size[2]; ///< px, the box's width and height
+    bool inside(double px, double py, double r) const
+    {
+        return (!on[0][0] || px >= r) && (!on[0][1] || px <= size[0] - r) && (!on[1][0] || py >= r) &&
+               (!on[1][1] || py <= size[1] - r);
+    }
+};
+
 /// Pushes pa and pb apart along n by their overlap r_a + r_b − |pb − pa| (if
 /// positive), shared as wa : wb. Returns the overlap that was removed.
-double separate(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, const BoxSettings& box,
-                const WallSettings& walls);
+double separate(Vec2& pa, Vec2& pb, const PairShape& pair, const BoxSettings& box, const WallSettings& walls);
 
 /// Pushes pa and pb apart along n by `depth`, shared as wa : wb, stopping a
 /// ball at a wall it was inside (its partner then takes the rest).
-void pushApart(Vec2& pa, Vec2& pb, double ra, double rb, const Vec2& n, double wa, double wb, double depth,
-               const BoxSettings& box, const WallSettings& walls);
+void pushApart(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const BoxSettings& box,
+               const WallSettings& walls);
 
 /// A ball whose centre was inside the walls at `before` and is outside them at
 /// `after` is put back on the wall (position only). Returns whether it was.

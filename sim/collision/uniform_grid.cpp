@@ -57,13 +57,11 @@ bool UniformGrid::placeBalls(const BroadPhaseInput& in, double cell, double minX
     return true;
 }
 
-template <class Test>
-void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
-                            CollisionStats& stats, StageClock& clock, CollisionProfile& profile)
+// The cell size for these balls (about m_cellScale mean ball sizes, at most
+// kMaxCells per side of the balls' extent), with every ball placed in its
+// cells; the size doubles until the entries fit.
+void UniformGrid::chooseCells(const BroadPhaseInput& in)
 {
-    m_entries = 0;
-    if (in.active.size() < 2)
-        return;
     double minX = in.loX[static_cast<std::size_t>(in.active[0])], minY = in.loY[static_cast<std::size_t>(in.active[0])];
     double maxX = minX, maxY = minY;
     for (const int i : in.active) {
@@ -81,8 +79,12 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
     while (!placeBalls(in, cell, minX, minY))
         cell *= 2.0;
     m_cellSize = cell;
+}
 
-    // Slots: the dense array of cells when it is not mostly empty, a hash table otherwise.
+// Slots: the dense array of cells when it is not mostly empty, a hash table
+// otherwise. A counting sort puts the (ball, cell) entries in slot order.
+void UniformGrid::sortEntries(const BroadPhaseInput& in)
+{
     const double denseCells = static_cast<double>(m_nx) * static_cast<double>(m_ny);
     m_hashed = denseCells > 2.0 * static_cast<double>(m_entries) + 1024.0;
     const std::uint64_t slots = m_hashed ? std::bit_ceil(static_cast<std::uint64_t>(2 * m_entries))
@@ -93,8 +95,8 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
                         : static_cast<std::size_t>(static_cast<std::int64_t>(cy) * m_nx + cx);
     };
 
-    // Counting sort of the (ball, cell) entries by slot. After the second pass
-    // m_slotEnd[s] is the end of slot s (and the start of slot s + 1).
+    // After the second pass m_slotEnd[s] is the end of slot s (and the start
+    // of slot s + 1).
     m_slotEnd.assign(static_cast<std::size_t>(slots), 0);
     for (const int i : in.active) {
         const auto k = static_cast<std::size_t>(i);
@@ -128,6 +130,18 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
                 }
             }
     }
+}
+
+template <class Test>
+void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<Contact>& out,
+                            CollisionStats& stats, StageClock& clock, CollisionProfile& profile)
+{
+    m_entries = 0;
+    if (in.active.size() < 2)
+        return;
+    chooseCells(in);
+    sortEntries(in);
+    const auto entries = static_cast<std::size_t>(m_entries);
     // The continuous test reads start positions too: arrays in entry order.
     Test local{};
     if constexpr (Test::kSwept) {

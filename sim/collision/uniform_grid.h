@@ -41,6 +41,8 @@ public:
     std::int64_t entries() const { return m_entries; }
 
 private:
+    void chooseCells(const BroadPhaseInput& in);
+    void sortEntries(const BroadPhaseInput& in);
     bool placeBalls(const BroadPhaseInput& in, double cell, double minX, double minY);
 
     double m_cellScale = 1.5;

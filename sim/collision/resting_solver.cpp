@@ -1,0 +1,462 @@
+#include "resting_solver.h"
+
+#include "narrow_phase.h"
+#include "positional_correction.h"
+#include "response.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab::sim {
+namespace {
+
+// Calls f on every row, in four interleaved runs: rows k, k + q, k + 2q,
+// k + 3q, then k + 1, ... (q = a quarter). Rows next to each other in (a, b)
+// order share a ball, so each waits for the one before it; rows a quarter
+// apart rarely do, and the processor works on four of them at once. The
+// order is fixed by the row count alone, so a run stays repeatable.
+template <class F>
+void forEachInterleaved(std::size_t m, F&& f)
+{
+    const std::size_t q = (m + 3) / 4;
+    std::size_t k = 0;
+    for (; k + 3 * q < m; ++k) {
+        f(k);
+        f(k + q);
+        f(k + 2 * q);
+        f(k + 3 * q);
+    }
+    for (; k < q; ++k) {
+        f(k);
+        if (k + q < m)
+            f(k + q);
+        if (k + 2 * q < m)
+            f(k + 2 * q);
+    }
+}
+
+} // namespace
+
+void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                          std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile)
+{
+    const bool profiling = clock.on();
+    prepare(balls.size());
+    buildPairRows(balls, c, pairs, touching);
+    clock.lap(profile.build);
+    buildWallRows(balls, c);
+    clock.lap(profile.wallScan);
+    warmStart();
+    relax(c, profile, profiling);
+    clock.lap(profile.velocity);
+    bounce(c);
+    clock.lap(profile.restitution);
+    moveBodies(c);
+    clock.lap(profile.position);
+    correctPositions(c);
+    clock.lap(profile.correction);
+    writeBack(balls, c);
+    clock.lap(profile.position);
+}
+
+void RestingSolver::prepare(int n)
+{
+    const auto size = static_cast<std::size_t>(n);
+    if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
+        m_rowCount = 0;
+        m_wallRows.clear();
+        m_warmCount = n;
+    }
+    if (m_bodyOf.size() != size)
+        m_bodyOf.assign(size, -1);
+    if (m_bodies.size() < size) {
+        m_bodies.resize(size);
+        m_bodyPositions.resize(size);
+        m_bodyVelocity0.resize(2 * size);
+    }
+    m_bodyCount = 0;
+}
+
+// The body of ball i, gathered from the balls the first time a row names it
+// (its lines are in cache then): the velocity the passes change and the one
+// before, the position and radius.
+int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
+{
+    int k = m_bodyOf[i];
+    if (k >= 0)
+        return k;
+    k = m_bodyCount++;
+    m_bodyOf[i] = k;
+    const double* v = balls.velocity.data();
+    const double* x = balls.position.data();
+    const auto kk = static_cast<std::size_t>(k);
+    m_bodies[kk] = {{v[2 * i], v[2 * i + 1]}, balls.inverseMass[static_cast<Eigen::Index>(i)], -1};
+    m_bodyVelocity0[2 * kk] = v[2 * i];
+    m_bodyVelocity0[2 * kk + 1] = v[2 * i + 1];
+    m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)],
+                           balls.inverseMass[static_cast<Eigen::Index>(i)]};
+    return k;
+}
+
+// Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
+// rows, so the impulses of pairs still in contact are found by a merge). The
+// line of impact comes from the positions at detection. A pair may close the
+// gap it had at the start of the sub-step, gap_end − v_n·h, and no more: its
+// normal speed may not drop below −allowed (0 for pairs that overlap). The
+// pairs that overlap now are copied to `touching` without a branch: each is
+// written, and the count moves on by the result of the test.
+void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                                  std::vector<Contact>* touching)
+{
+    const double* x = balls.position.data();
+    const double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    const std::size_t m = pairs.size();
+    if (m_spareRows.size() < m) {
+        m_spareRows.resize(m);
+        m_spareBalls.resize(m);
+        m_spareImpulse.resize(m);
+        m_vn0.resize(m);
+    }
+    std::size_t old = 0, count = 0, overlapping = 0;
+    const std::size_t oldCount = m_rowCount;
+    const Contact* oldBalls = m_rowBalls.data();
+    const double* oldImpulse = m_impulse.data();
+    if (touching && touching->size() < m)
+        touching->resize(m);
+    unsigned char* colliding = balls.colliding.data();
+    for (std::size_t p = 0; p < m; ++p) {
+        const Contact ct = pairs[p];
+        const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
+        const double s = radius[a] + radius[b];
+        const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+        if (touching) {
+            const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
+            (*touching)[overlapping] = ct;
+            overlapping += overlap;
+            colliding[a] |= static_cast<unsigned char>(overlap);
+            colliding[b] |= static_cast<unsigned char>(overlap);
+        }
+        const double wa = inverseMass[a], wb = inverseMass[b];
+        if (!detail::resolvable(wa, wb))
+            continue;
+        const double len = std::sqrt(dx * dx + dy * dy);
+        Vec2 nrm;
+        if (len > 1e-12 * s && std::isfinite(len))
+            nrm = Vec2(dx / len, dy / len);
+        else
+            nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
+        const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
+        const double gapStart = (len - s) - vn0 * c.h;
+        const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
+        while (old < oldCount && (oldBalls[old].a < ct.a || (oldBalls[old].a == ct.a && oldBalls[old].b < ct.b)))
+            ++old;
+        const double warm =
+            (old < oldCount && oldBalls[old].a == ct.a && oldBalls[old].b == ct.b) ? oldImpulse[old] : 0.0;
+        const int ba = bodyFor(a, balls), bb = bodyFor(b, balls);
+        m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
+        m_spareBalls[count] = ct;
+        m_spareImpulse[count] = warm;
+        m_vn0[count] = vn0;
+        ++count;
+    }
+    if (touching)
+        touching->resize(overlapping);
+    m_pairRows.swap(m_spareRows);
+    m_rowBalls.swap(m_spareBalls);
+    m_impulse.swap(m_spareImpulse);
+    m_rowCount = count;
+}
+
+// Stage 2. One row for a ball on an enabled wall, or nearer to it than the
+// slop plus the distance gravity moves a ball from rest in one sub-step (so
+// it is caught before it hits, not after), plus what it moved away from the
+// wall in this sub-step (a ball that just bounced off a wall can be pushed
+// back into it by the balls above).
+//
+// How fast it may still move towards the wall: the gap over h, less the speed
+// it already leaves the wall with. The position stage moves a body by
+// (v − v_before)·h, so a ball the wall stage has just sent away at speed u
+// ends the sub-step gap − (v_wall + u)·h from the wall, where v_wall is its new
+// speed towards it: it stays inside only for v_wall ≤ gap/h − u.
+void RestingSolver::buildWallRows(const BallState& balls, const SubStepContext& c)
+{
+    m_spareWalls.clear();
+    const WallSettings& walls = c.walls;
+    const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
+    const double size[2] = {c.box.width, c.box.height};
+    const double reach = c.gravity * c.h * c.h;
+    const double h = c.h;
+    const double* x = balls.position.data();
+    const double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    std::size_t old = 0;
+    if (on[0][0] || on[0][1] || on[1][0] || on[1][1]) {
+        auto add = [&](int i, int k, double side, double gap) {
+            const int key = 4 * i + 2 * k + (side > 0.0 ? 1 : 0);
+            while (old < m_wallRows.size() && m_wallRows[old].key < key)
+                ++old;
+            const double warm = (old < m_wallRows.size() && m_wallRows[old].key == key) ? m_wallRows[old].impulse : 0.0;
+            const double w = inverseMass[i];
+            const int bi = bodyFor(static_cast<std::size_t>(i), balls);
+            const double into = side * v[2 * i + k];
+            const double allowed = std::max(std::max(gap, 0.0) / h + std::min(into, 0.0), 0.0);
+            m_spareWalls.push_back({key, bi, k, side, allowed, w, into, warm});
+        };
+        // Nothing near a wall gets a row: a quick test on the largest margin first.
+        for (int i = 0; i < balls.size(); ++i) {
+            const double r = radius[i], w = inverseMass[i];
+            const double px = x[2 * i], py = x[2 * i + 1], vx = v[2 * i], vy = v[2 * i + 1];
+            const double far = c.solver.slop * r + reach + (std::abs(vx) + std::abs(vy)) * h;
+            if (px - r >= far && size[0] - r - px >= far && py - r >= far && size[1] - r - py >= far)
+                continue;
+            if (!(w > 0.0) || !std::isfinite(w))
+                continue;
+            for (int k = 0; k < 2; ++k) {
+                if (!(2.0 * r <= size[k]))
+                    continue; // wider than the box: the wall stage keeps it in the middle
+                const double p = x[2 * i + k], vk = v[2 * i + k];
+                const double margin = c.solver.slop * r + reach;
+                const double gapLow = p - r, gapHigh = size[k] - r - p;
+                if (on[k][0] && gapLow < margin + std::max(vk, 0.0) * h)
+                    add(i, k, -1.0, gapLow);
+                if (on[k][1] && gapHigh < margin + std::max(-vk, 0.0) * h)
+                    add(i, k, 1.0, gapHigh);
+            }
+        }
+    }
+    m_wallRows.swap(m_spareWalls);
+}
+
+// The impulse j along the row's normal: a gets −w_a j n, b gets +w_b j n.
+void RestingSolver::applyPair(const PairRow& row, double j)
+{
+    Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
+    Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
+    const double ja = ba.w * j, jb = bb.w * j;
+    ba.v[0] -= ja * row.nx;
+    ba.v[1] -= ja * row.ny;
+    bb.v[0] += jb * row.nx;
+    bb.v[1] += jb * row.ny;
+}
+
+// v_n = (v_b − v_a)·n: negative while the pair approaches.
+double RestingSolver::normalSpeed(const PairRow& row) const
+{
+    const Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
+    const Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
+    return (bb.v[0] - ba.v[0]) * row.nx + (bb.v[1] - ba.v[1]) * row.ny;
+}
+
+// Stage 3. Last sub-step's impulse of every contact that is still there: a
+// pile that rested then starts from the pushes that held it.
+void RestingSolver::warmStart()
+{
+    for (std::size_t k = 0; k < m_rowCount; ++k)
+        if (m_impulse[k] > 0.0)
+            applyPair(m_pairRows[k], m_impulse[k]);
+    for (const WallRow& row : m_wallRows)
+        if (row.impulse > 0.0)
+            wallSpeed(row) -= row.side * row.w * row.impulse;
+}
+
+// Stage 4. Each contact's total impulse (never negative: balls push, they do
+// not pull) is adjusted until the pair no longer approaches faster than it
+// may: total = max(total − (v_n + allowed)·m_eff, 0). After the first pass a
+// contact is solved again only if one of its balls changed speed by more
+// than the tolerance since it was last solved (pass stamps per body); the
+// passes stop when no ball changed by more than that.
+void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bool profiling)
+{
+    const double tolerance = c.solver.relaxTolerance * c.restingSpeed;
+    const int passes = std::max(1, c.solver.velocityPasses);
+    const PairRow* rows = m_pairRows.data();
+    double* impulse = m_impulse.data();
+    Body* body = m_bodies.data();
+    int made = 0;
+    std::int64_t solves = 0;
+    for (int pass = 0; pass < passes; ++pass) {
+        bool moved = false;
+        const int since = pass - 1;
+        forEachInterleaved(m_rowCount, [&](std::size_t k) {
+            const PairRow& row = rows[k];
+            Body& ba = body[row.a];
+            Body& bb = body[row.b];
+            if (pass > 0 && ba.changed < since && bb.changed < since)
+                return;
+            ++solves;
+            const double total = std::max(impulse[k] - (normalSpeed(row) + row.allowed) * row.mass, 0.0);
+            const double j = total - impulse[k];
+            impulse[k] = total;
+            applyPair(row, j);
+            const double dj = std::abs(j);
+            if (dj * ba.w > tolerance) {
+                ba.changed = pass;
+                moved = true;
+            }
+            if (dj * bb.w > tolerance) {
+                bb.changed = pass;
+                moved = true;
+            }
+        });
+        for (WallRow& row : m_wallRows) {
+            Body& bw = body[row.body];
+            if (pass > 0 && bw.changed < since)
+                continue;
+            double& vk = bw.v[row.axis];
+            const double into = row.side * vk;
+            const double total = std::max(row.impulse + (into - row.allowed) / row.w, 0.0);
+            const double j = total - row.impulse;
+            row.impulse = total;
+            vk -= row.side * row.w * j;
+            if (std::abs(j) * row.w > tolerance) {
+                bw.changed = pass;
+                moved = true;
+            }
+        }
+        ++made;
+        if (!moved)
+            break;
+    }
+    m_lastPasses = made;
+    if (profiling) {
+        profile.rows += static_cast<std::int64_t>(m_rowCount);
+        profile.solves += solves;
+    }
+}
+
+// Stage 5. A pair that hit faster than the resting speed separates at e times
+// the speed it hit with; slower ones stay at rest (the threshold). The
+// bounces may push a ball into a wall it rests on: one more pass over the
+// walls stops that (a wall never pushes a ball into another).
+void RestingSolver::bounce(const SubStepContext& c)
+{
+    const double e = c.restitution;
+    for (std::size_t k = 0; k < m_rowCount; ++k) {
+        const double vn0 = m_vn0[k];
+        if (!(-vn0 > c.restingSpeed) || !(m_impulse[k] > 0.0))
+            continue;
+        const PairRow& row = m_pairRows[k];
+        const double total = std::max(m_impulse[k] + (-e * vn0 - normalSpeed(row)) * row.mass, 0.0);
+        applyPair(row, total - m_impulse[k]);
+        m_impulse[k] = total;
+    }
+    const double ew = c.walls.restitution;
+    for (WallRow& row : m_wallRows) {
+        if (!(row.into0 > c.restingSpeed) || !(row.impulse > 0.0) || row.allowed != 0.0)
+            continue;
+        double& vk = wallSpeed(row);
+        const double total = std::max(row.impulse + (row.side * vk + ew * row.into0) / row.w, 0.0);
+        vk -= row.side * row.w * (total - row.impulse);
+        row.impulse = total;
+    }
+    for (WallRow& row : m_wallRows) {
+        double& vk = wallSpeed(row);
+        const double total = std::max(row.impulse + (row.side * vk - row.allowed) / row.w, 0.0);
+        vk -= row.side * row.w * (total - row.impulse);
+        row.impulse = total;
+    }
+}
+
+namespace {
+
+// p moved by (dx, dy) without crossing an enabled wall it was inside.
+void moveBy(double& px, double& py, double r, double dx, double dy, const SubStepContext& c)
+{
+    if (dx == 0.0 && dy == 0.0)
+        return;
+    const Vec2 p(px, py);
+    Vec2 q(p.x() + dx, p.y() + dy);
+    keepInsideWalls(p, q, r, c.box, c.walls);
+    px = q.x();
+    py = q.y();
+}
+
+} // namespace
+
+// Stage 6. The integrator moved the balls with their velocities before the
+// contacts acted; move them as if the contact impulses had acted at the start
+// of the sub-step (what a solver between the velocity and the position
+// update does): by (v − v_before)·h, without crossing a wall. The bodies
+// only: the velocity of every other ball is what it was before the solve.
+void RestingSolver::moveBodies(const SubStepContext& c)
+{
+    for (int k = 0; k < m_bodyCount; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        BodyPosition& pk = m_bodyPositions[kk];
+        moveBy(pk.x, pk.y, pk.r, (m_bodies[kk].v[0] - m_bodyVelocity0[2 * kk]) * c.h,
+               (m_bodies[kk].v[1] - m_bodyVelocity0[2 * kk + 1]) * c.h, c);
+    }
+}
+
+// Stage 7. Overlap up to slop · (smaller radius) is allowed; `correction` of
+// the rest is removed per pass, shared as the inverse masses, positions
+// only. Most rows rest within the slop or are speculative: a squared-distance
+// test skips them without a square root.
+void RestingSolver::correctPositions(const SubStepContext& c)
+{
+    const WallCheck check{{{c.walls.left, c.walls.right}, {c.walls.top, c.walls.bottom}}, {c.box.width, c.box.height}};
+    const PairRow* rows = m_pairRows.data();
+    BodyPosition* position = m_bodyPositions.data();
+    for (int pass = 0; pass < std::max(1, c.solver.positionPasses); ++pass) {
+        forEachInterleaved(m_rowCount, [&](std::size_t k) {
+            const PairRow& row = rows[k];
+            BodyPosition& A = position[row.a];
+            BodyPosition& B = position[row.b];
+            const double ra = A.r, rb = B.r;
+            const double allowed = c.solver.slop * std::min(ra, rb);
+            const double reachAllowed = ra + rb - allowed; // centres closer than this get a push
+            const double dx = B.x - A.x, dy = B.y - A.y;
+            if (!(dx * dx + dy * dy < reachAllowed * reachAllowed) || !(reachAllowed > 0.0))
+                return;
+            Vec2 pa(A.x, A.y), pb(B.x, B.y);
+            const double depth = ra + rb - std::sqrt(dx * dx + dy * dy);
+            if (!(depth > allowed))
+                return;
+            const double push = c.solver.correction * (depth - allowed);
+            const Vec2 nrm(row.nx, row.ny);
+            const double wa = A.w, wb = B.w;
+            const double moveA = push * (wa / (wa + wb));
+            const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
+            if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
+                pa = qa;
+                pb = qb;
+            } else {
+                pushApart(pa, pb, {ra, rb, nrm, wa, wb}, push, c.box, c.walls); // stops at the walls
+            }
+            A.x = pa.x();
+            A.y = pa.y();
+            B.x = pb.x();
+            B.y = pb.y();
+        });
+    }
+}
+
+// Stage 8. Velocities and positions back to the balls, in ball order; every
+// ball is without a body again. A ball without a body moves by (v − v)·h:
+// nowhere, or to NaN when its velocity is not finite, so a ball that blew up
+// is seen by the world's blow-up check instead of standing still.
+void RestingSolver::writeBack(BallState& balls, const SubStepContext& c)
+{
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    for (int i = 0; i < balls.size(); ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        const int k = m_bodyOf[ii];
+        if (k >= 0) {
+            const auto kk = static_cast<std::size_t>(k);
+            v[2 * i] = m_bodies[kk].v[0];
+            v[2 * i + 1] = m_bodies[kk].v[1];
+            x[2 * i] = m_bodyPositions[kk].x;
+            x[2 * i + 1] = m_bodyPositions[kk].y;
+            m_bodyOf[ii] = -1;
+            continue;
+        }
+        moveBy(x[2 * i], x[2 * i + 1], balls.radius[i], (v[2 * i] - v[2 * i]) * c.h, (v[2 * i + 1] - v[2 * i + 1]) * c.h,
+               c);
+    }
+}
+
+} // namespace forcelab::sim

@@ -1,0 +1,116 @@
+#pragma once
+// The resting-contact solver of contact_solver.h as named stages: sequential
+// impulses with accumulated, warm-started impulses over the ball–ball and
+// ball–wall contacts, then positional correction with slop. One solve runs
+//
+//   1. buildPairRows     ball–ball rows (line of impact, effective mass, the
+//                        speed a gap may close at, last sub-step's impulse)
+//   2. buildWallRows     ball–wall rows for the balls on or near a wall
+//   3. warmStart         last sub-step's impulses applied again
+//   4. relax             velocity passes until no ball changes speed
+//   5. bounce            restitution for pairs that hit, and one wall pass
+//   6. moveBodies        positions moved as if the impulses acted at the start
+//   7. correctPositions  overlap beyond the slop removed, positions only
+//   8. writeBack         velocities and positions back to the balls
+//
+// each lapped into its own entry of the collision profile. The balls that
+// take part are gathered into bodies (velocity, inverse mass, pass stamp: one
+// 32-byte record each) in the order the rows first name them, so the passes
+// touch little memory; every operation on a velocity is the one a solver
+// working on the balls' columns would make, in the same order.
+
+#include "../ball_state.h"
+#include "collision_profile.h"
+#include "contact.h"
+#include "sub_step_context.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace forcelab::sim {
+
+class RestingSolver {
+public:
+    /// Solves the contacts `pairs` (touching and speculative, in (a, b)
+    /// order) for one sub-step. When `touching` is given, the pairs of
+    /// `pairs` that overlap now are written to it and flagged in
+    /// balls.colliding (otherwise `pairs` are the touching ones, already
+    /// flagged).
+    void solve(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+               std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile);
+
+    /// Forgets the impulses kept for the next warm start (another kind of
+    /// step ran, so they no longer belong to these contacts).
+    void forget() { m_warmCount = -1; }
+    /// Velocity passes the last solve made.
+    int lastPasses() const { return m_lastPasses; }
+
+private:
+    // One ball–ball contact: its two bodies, the line of impact at detection,
+    // the effective mass 1/(wa + wb) and the approach speed it may keep
+    // (closes its gap in one sub-step; 0 when it overlaps). 32 bytes and
+    // read-only in the passes, which stream these rows many times per
+    // sub-step: their size sets the memory traffic. The balls of each row
+    // (for the next sub-step's warm-start merge), the total impulse so far and
+    // the normal speed before the solve are arrays beside them.
+    struct PairRow {
+        int a, b;
+        double nx, ny;
+        float mass, allowed;
+    };
+    // One ball on a wall: key 4·ball + 2·axis + (far side), its body, axis 0
+    // (x) or 1 (y), side +1 (the wall at the box's far edge) or −1 (at 0), the
+    // speed towards the wall it may keep (closes the gap by the end of the
+    // sub-step, never below 0), inverse mass, speed towards the wall before
+    // the solve, total impulse.
+    struct WallRow {
+        int key, body, axis;
+        double side, allowed, w, into0, impulse;
+    };
+    // A ball that takes part: the velocity the passes change, its inverse
+    // mass and the last velocity pass that changed it (−1: none). 32 bytes
+    // with padding, so a row update touches one cache line per ball.
+    struct Body {
+        double v[2];
+        double w;
+        int changed;
+    };
+    static_assert(sizeof(Body) == 32);
+    // The same bodies for the position stages: position, radius, inverse mass.
+    struct BodyPosition {
+        double x, y, r, w;
+    };
+
+    void prepare(int n);
+    int bodyFor(std::size_t i, const BallState& balls);
+    void buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                       std::vector<Contact>* touching);
+    void buildWallRows(const BallState& balls, const SubStepContext& c);
+    void warmStart();
+    void relax(const SubStepContext& c, CollisionProfile& profile, bool profiling);
+    void bounce(const SubStepContext& c);
+    void moveBodies(const SubStepContext& c);
+    void correctPositions(const SubStepContext& c);
+    void writeBack(BallState& balls, const SubStepContext& c);
+
+    void applyPair(const PairRow& row, double j);
+    double normalSpeed(const PairRow& row) const;
+    double& wallSpeed(const WallRow& row) { return m_bodies[static_cast<std::size_t>(row.body)].v[row.axis]; }
+
+    // The row arrays only grow (rows are written by index, no push_back);
+    // the first m_rowCount hold this sub-step's rows.
+    std::vector<PairRow> m_pairRows, m_spareRows;
+    std::vector<Contact> m_rowBalls, m_spareBalls;
+    std::vector<double> m_impulse, m_spareImpulse, m_vn0;
+    std::size_t m_rowCount = 0;
+    std::vector<WallRow> m_wallRows, m_spareWalls;
+    std::vector<Body> m_bodies;
+    std::vector<BodyPosition> m_bodyPositions;
+    std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
+    std::vector<double> m_bodyVelocity0;
+    int m_bodyCount = 0;
+    int m_warmCount = -1;
+    int m_lastPasses = 0;
+};
+
+} // namespace forcelab::sim
