@@ -25,14 +25,21 @@ int main(int argc, char* argv[])
                                         QStringLiteral("Save a picture of the window to FILE and quit."),
                                         QStringLiteral("FILE"));
     const QCommandLineOption after(QStringLiteral("after"),
-                                   QStringLiteral("Seconds to run before --screenshot (default 3)."),
+                                   QStringLiteral("Seconds to run in real time before --screenshot (default 3)."),
                                    QStringLiteral("SECONDS"), QStringLiteral("3"));
+    const QCommandLineOption time(QStringLiteral("time"),
+                                  QStringLiteral("For --screenshot: step the lesson to simulated time T (seconds) "
+                                                 "and take the picture there, paused, instead of --after."),
+                                  QStringLiteral("T"));
+    const QCommandLineOption size(QStringLiteral("size"),
+                                  QStringLiteral("For --screenshot: the window's size in pixels (default: the screen)."),
+                                  QStringLiteral("WxH"));
     const QCommandLineOption benchRender(QStringLiteral("bench-render"),
                                          QStringLiteral("Time drawing 1k, 10k and 50k balls offscreen and quit."));
     const QCommandLineOption select(QStringLiteral("select"),
                                     QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
-    parser.addOptions({screenshot, after, select, benchRender});
+    parser.addOptions({screenshot, after, time, size, select, benchRender});
 
     // Read the arguments before any window system is needed: --help and
     // --version work without a display, and a picture or a benchmark is
@@ -79,9 +86,19 @@ int main(int argc, char* argv[])
     const QStringList lessons = parser.positionalArguments();
     forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
     if (parser.isSet(screenshot)) {
-        // The picture shows the whole screen's worth of workbench.
-        if (const QScreen* screen = window.screen())
+        // The picture shows the whole screen's worth of workbench, or the size asked for.
+        if (parser.isSet(size)) {
+            const QStringList wh = parser.value(size).split(QLatin1Char('x'));
+            const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
+            if (wh.size() != 2 || w < 320 || h < 240 || w > 7680 || h > 4320) {
+                std::fprintf(stderr, "forcelab: --size: \"%s\" is not WxH between 320x240 and 7680x4320\n",
+                             qPrintable(parser.value(size)));
+                return 2;
+            }
+            window.resize(w, h);
+        } else if (const QScreen* screen = window.screen()) {
             window.setGeometry(screen->availableGeometry());
+        }
     }
     window.show();
     if (parser.isSet(select)) {
@@ -105,7 +122,23 @@ int main(int argc, char* argv[])
             return 2;
         }
         const QString file = parser.value(screenshot);
-        QTimer::singleShot(static_cast<int>(seconds * 1000.0), &window, [&window, file] {
+        int wait = static_cast<int>(seconds * 1000.0);
+        if (parser.isSet(time)) {
+            const double t = parser.value(time).toDouble(&ok);
+            if (!ok || !(t >= 0.0 && t <= 3600.0)) {
+                std::fprintf(stderr, "forcelab: --time: \"%s\" is not a number of seconds from 0 to 3600\n",
+                             qPrintable(parser.value(time)));
+                return 2;
+            }
+            forcelab::SimulationController* controller = window.controller();
+            const double dt = controller->world().settings().time.dt;
+            while (controller->world().time() < t - 0.5 * dt && !controller->world().halted())
+                controller->stepOnce();
+            wait = 200; // let the window lay itself out and paint
+        } else {
+            window.controller()->play(); // a lesson opens paused; --after shows it running
+        }
+        QTimer::singleShot(wait, &window, [&window, file] {
             if (!window.grab().save(file)) {
                 std::fprintf(stderr, "forcelab: --screenshot: cannot write %s\n", qPrintable(file));
                 QApplication::exit(2);

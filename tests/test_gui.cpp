@@ -471,12 +471,15 @@ void GuiTest::opensShowcaseAndRemembersLastLesson()
     QVERIFY(!builtIn.isEmpty());
     QString gravitySource;
     {
-        // Fresh settings: the first built-in lesson, running.
+        // Fresh settings: the first built-in lesson, waiting at t = 0 with
+        // the "press Space to run" banner.
         MainWindow window;
         QCOMPARE(window.lesson().source, builtIn.first());
         QCOMPARE(window.controller()->world().balls().size(),
                  sim::buildBalls(window.lesson().scene).size());
-        QVERIFY(window.controller()->isPlaying());
+        QVERIFY(!window.controller()->isPlaying());
+        QCOMPARE(window.controller()->world().time(), 0.0);
+        QVERIFY(window.canvas()->showsStartHint());
 
         // Another lesson: the panel shows its values.
         QVERIFY(window.openLesson(QStringLiteral("gravity")));
@@ -521,9 +524,10 @@ void GuiTest::damagedSettingsAreNamedAndReplaced()
     QVERIFY(!builtIn.isEmpty());
     {
         MainWindow window;
-        // It still starts, on the first lesson, running.
+        // It still starts, on the first lesson, waiting at t = 0.
         QCOMPARE(window.lesson().source, builtIn.first());
-        QVERIFY(window.controller()->isPlaying());
+        QVERIFY(!window.controller()->isPlaying());
+        QVERIFY(window.canvas()->showsStartHint());
         QVERIFY(window.width() > 0 && window.height() > 0);
         const QString message = window.statusBar()->currentMessage();
         QVERIFY2(!message.contains(QLatin1Char('\n')), qPrintable(message));

@@ -528,6 +528,7 @@ void GuiCanvasTest::renderImageMatchesTheCanvas()
     o.velocity = true;
     o.vanes = true;
     canvas.setOverlays(o);
+    controller.stepOnce(); // past t = 0: no "press Space" banner, which pictures leave out
     const QImage shot = canvas.renderImage();
     QCOMPARE(shot.size(), QSize(700, 420));
     const QImage grabbed = canvas.grab().toImage().convertToFormat(shot.format());

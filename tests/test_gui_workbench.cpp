@@ -258,6 +258,7 @@ private slots:
     void lessonControlsComeFirst();
     void switchingLessonsUpdatesTheDocks();
     void shortcutsAct();
+    void lessonSpeedIsRestoredAndSlowMotionGlides();
     void lessonChangeGivesTheStageTheKeyboard();
     void saveThenOpenGivesTheSameScene();
     void lessonsTreeFollowsTheCourse();
@@ -586,10 +587,51 @@ void GuiWorkbenchTest::lessonChangeGivesTheStageTheKeyboard()
     QVERIFY(window.openLesson(QStringLiteral("gravity")));
     QTRY_VERIFY(window.canvas()->hasFocus());
     SimulationController* controller = window.controller();
+    QVERIFY(!controller->isPlaying()); // a lesson waits at t = 0
+    QVERIFY(window.canvas()->showsStartHint());
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
     QVERIFY(controller->isPlaying());
+    QCOMPARE(controller->timeScale(), 1.0); // the Speed field was not typed into
     QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
     QVERIFY(!controller->isPlaying());
-    QCOMPARE(controller->timeScale(), 1.0); // the Speed field was not typed into
+}
+
+// Reset and a lesson change bring the lesson's own speed (1×) back; in slow
+// motion the canvas draws the balls between the last two steps, a share α of
+// the way, instead of jumping once every few frames.
+void GuiWorkbenchTest::lessonSpeedIsRestoredAndSlowMotionGlides()
+{
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(plainScene())));
+    SimulationController* controller = window.controller();
+    controller->setTimeScale(1.0 / 16);
+    window.findChild<QAction*>(QStringLiteral("resetAction"))->trigger();
+    QCOMPARE(controller->timeScale(), 1.0);
+    controller->setTimeScale(0.25);
+    QVERIFY(window.openLesson(QStringLiteral("gravity")));
+    QCOMPARE(controller->timeScale(), 1.0);
+
+    SimulationController slow;
+    QVERIFY(!slow.setScene(plainScene()));
+    const double dt = slow.world().settings().time.dt;
+    slow.setTimeScale(0.25);
+    slow.play();
+    QSignalSpy frames(&slow, &SimulationController::framePassed);
+    QCOMPARE(slow.advance(dt), 0); // a quarter step of simulated time: no step yet
+    QCOMPARE(frames.count(), 1);
+    QVERIFY(!slow.interpolatedPositions()); // nothing to blend with before the first step
+    QCOMPARE(slow.advance(3 * dt), 1);      // the quarter steps add up to one step
+    const sim::Matrix2X before = slow.world().balls().position; // after the step
+    QCOMPARE(slow.advance(dt), 0);          // α = 1/4 into the next step
+    const sim::Matrix2X* drawn = slow.interpolatedPositions();
+    QVERIFY(drawn);
+    // The drawn ball is a quarter of the way from the last step's start to its end.
+    const sim::Vec2 v = slow.world().balls().velocity.col(0);
+    const sim::Vec2 start = before.col(0) - v * dt; // free flight: the step moved it by v dt
+    QVERIFY2((drawn->col(0) - (start + 0.25 * (before.col(0) - start))).norm() < 1e-9,
+             qPrintable(QStringLiteral("drawn at (%1, %2)").arg(drawn->coeff(0, 0)).arg(drawn->coeff(1, 0))));
+    slow.pause();
+    QVERIFY(!slow.interpolatedPositions()); // paused: the true positions
 }
 
 void GuiWorkbenchTest::shortcutsAct()

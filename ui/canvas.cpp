@@ -22,6 +22,8 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     m_options.collision = &m_collision;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::framePassed, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::playingChanged, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::settingsChanged, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::sceneChanged, this, &Canvas::onSceneChanged);
     connect(m_controller, &SimulationController::ghostChanged, this, [this] {
@@ -138,12 +140,41 @@ QImage Canvas::renderImage() const
     return image;
 }
 
+bool Canvas::showsStartHint() const
+{
+    return !m_controller->isPlaying() && m_controller->world().time() == 0.0;
+}
+
+// A lesson opens paused at t = 0: a banner at the bottom of the stage says
+// how to start it, large enough for the back of a classroom.
+void Canvas::paintStartHint(QPainter& p) const
+{
+    const QString text = tr("Paused at t = 0 · press Space to run");
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(18 * m_options.lineScale)));
+    font.setBold(true);
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double pad = 10.0 * m_options.lineScale;
+    const QSizeF size(fm.horizontalAdvance(text) + 2 * pad, fm.height() + pad);
+    const QRectF banner(QPointF(0.5 * (width() - size.width()), height() - size.height() - 2 * pad), size);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0x1d, 0x22, 0x2c, 220));
+    p.drawRoundedRect(banner, pad, pad);
+    p.setPen(Qt::white);
+    p.drawText(banner, Qt::AlignCenter, text);
+}
+
 void Canvas::paintEvent(QPaintEvent*)
 {
     QElapsedTimer timer;
     timer.start();
     QPainter painter(this);
+    m_options.positions = m_controller->interpolatedPositions();
     m_painter.paint(painter, QRectF(rect()), m_controller->world(), m_options, devicePixelRatioF());
+    if (showsStartHint())
+        paintStartHint(painter);
     ++m_frames;
     m_lastPaintMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
 }

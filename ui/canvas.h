@@ -15,6 +15,7 @@
 #include "sim/types.h"
 
 #include <QImage>
+#include <QPainter>
 #include <QWidget>
 
 #include <deque>
@@ -79,6 +80,9 @@ public:
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
 
+    /// Whether the "press Space to run" banner is shown (paused at t = 0).
+    bool showsStartHint() const;
+
 signals:
     void selectedBallChanged(int index);
 
@@ -90,6 +94,7 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
+    void paintStartHint(QPainter& p) const;
     // A press on a ball selects it and only arms a grab: the ball is taken
     // (held, then thrown or dropped) once the pointer has moved the platform's
     // drag distance, so a click never touches the physics.

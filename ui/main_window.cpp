@@ -494,7 +494,10 @@ bool MainWindow::setLesson(const Lesson& lesson)
     // The keyboard goes to the stage, not to whatever field had it in the
     // last lesson (a Speed field with the focus took Space as text).
     m_canvas->setFocus(Qt::OtherFocusReason);
-    m_controller->play();
+    // A lesson waits at t = 0 at its own speed (1×) until the class is
+    // looking: the canvas shows "Space: run".
+    m_controller->pause();
+    m_controller->setTimeScale(1.0);
     return true;
 }
 
@@ -521,6 +524,7 @@ void MainWindow::resetLesson()
     // The lesson's own values and balls. The undo history goes with them:
     // its steps were made on a world that no longer exists.
     m_controller->reset();
+    m_controller->setTimeScale(1.0); // a slow-motion experiment does not carry into the rerun
     m_parameters->undoStack()->clear();
 }
 

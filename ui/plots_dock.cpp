@@ -40,9 +40,10 @@ QList<QPointF> decimated(const std::deque<PlotsDock::Sample>& samples, std::size
 }
 
 // The y axis over the points of some series: round ticks, the common factor
-// divided out of the points and named once in the title ("energy (×10⁶
-// mass·px²/s²)"). `fromZero` keeps the axis at or above 0 (costs, counts).
-// Returns the factor.
+// divided out of the points and named once, with the unit, in the chart's
+// title above the plot ("Energy (×10⁶ mass·px²/s²)"), which has the width to
+// show it whole where a title along the axis would be cut in a short dock.
+// `fromZero` keeps the axis at or above 0 (costs, counts). Returns the factor.
 double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit,
                   const QList<std::pair<QLineSeries*, QList<QPointF>>>& data, bool fromZero)
 {
@@ -61,7 +62,8 @@ double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit
     if (fromZero)
         nice.min = std::max(0.0, nice.min);
     applyNiceAxis(axis, nice);
-    axis->setTitleText(QStringLiteral("%1 (%2%3)").arg(quantity, nice.factorText(), unit));
+    if (QChart* chart = data.isEmpty() ? nullptr : data.first().first->chart())
+        chart->setTitle(QStringLiteral("%1 (%2%3)").arg(quantity, nice.factorText(), unit));
     const double f = nice.factor();
     for (const auto& [series, points] : data) {
         if (f == 1.0) {
@@ -151,12 +153,9 @@ QChartView* PlotsDock::makeChart(const QString& title, const QList<QLineSeries*>
     }
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
-    // Tall enough that the longest y-axis title ("momentum (×10¹² mass·px/s)")
-    // fits beside the plot uncut: its length plus the chart title, the x axis
-    // and the legend.
-    const QFontMetrics axisFont((*yAxis)->titleFont());
-    const int longest = axisFont.horizontalAdvance(tr("momentum (×10¹² mass·px²/s²)"));
-    view->setMinimumSize(240, longest + 5 * axisFont.height() + 40);
+    // Wide enough for the longest chart title ("Momentum (×10¹² mass·px/s)").
+    const QFontMetrics titleFont(chart->titleFont());
+    view->setMinimumSize(titleFont.horizontalAdvance(tr("Momentum (×10¹² mass·px²/s²)")) + 24, 180);
     return view;
 }
 
@@ -262,17 +261,17 @@ void PlotsDock::refreshCharts()
     const QList<QPointF> kinetic = points([](const Sample& s) { return s.kinetic; });
     const QList<QPointF> potential = points([](const Sample& s) { return s.potential; });
     const QList<QPointF> total = points([](const Sample& s) { return s.total; });
-    m_energyFactor = showOnAxis(m_energyY, tr("energy"), tr("mass·px²/s²"),
+    m_energyFactor = showOnAxis(m_energyY, tr("Energy"), tr("mass·px²/s²"),
                                             {{m_kinetic, kinetic}, {m_potential, potential}, {m_total, total}}, false);
 
     const QList<QPointF> p = points([](const Sample& s) { return s.p; });
     const QList<QPointF> px = points([](const Sample& s) { return s.px; });
     const QList<QPointF> py = points([](const Sample& s) { return s.py; });
     m_momentumFactor =
-        showOnAxis(m_momentumY, tr("momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false);
+        showOnAxis(m_momentumY, tr("Momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false);
 
     const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
-    m_costFactor = showOnAxis(m_costY, tr("time per step"), tr("µs"), {{m_cost, cost}}, true);
+    m_costFactor = showOnAxis(m_costY, tr("Computer time per step"), tr("µs"), {{m_cost, cost}}, true);
 
     if (m_histogramShown)
         refreshHistogram();
@@ -295,7 +294,8 @@ void PlotsDock::refreshHistogram()
     applyNiceAxis(m_speedX, niceAxis(0.0, top > 0.0 ? top : 1.0));
     m_speedX->setRange(0.0, top > 0.0 ? top : 1.0);
     m_speedFactor =
-        showOnAxis(m_speedY, tr("share"), tr("per px/s"), {{m_histogram, steps}, {m_maxwell, h.curve}}, true);
+        showOnAxis(m_speedY, tr("Speeds: share of balls"), tr("per px/s"), {{m_histogram, steps}, {m_maxwell, h.curve}},
+                   true);
 }
 
 PlotsDock::Histogram PlotsDock::speedHistogram(const sim::BallState& balls, int bins, int curvePoints)

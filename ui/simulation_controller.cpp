@@ -89,11 +89,16 @@ int SimulationController::advance(double elapsedSeconds)
         m_droppedTime += dropped;
         emit timeDropped(dropped);
     }
-    for (int k = 0; k < steps && !m_world.halted(); ++k)
+    for (int k = 0; k < steps && !m_world.halted(); ++k) {
+        if (k == steps - 1)
+            m_previous = m_world.balls().position;
         m_world.step();
+    }
     stepGhost();
     if (steps > 0)
         emit stepped();
+    else if (m_playing && m_timeScale < 1.0)
+        emit framePassed();
     checkHalted();
     return steps;
 }
@@ -130,10 +135,22 @@ void SimulationController::setPlaying(bool playing)
     emit playingChanged(m_playing);
 }
 
+const sim::Matrix2X* SimulationController::interpolatedPositions()
+{
+    const sim::Matrix2X& now = m_world.balls().position;
+    const double dt = m_world.settings().time.dt;
+    if (!m_playing || !(m_timeScale < 1.0) || m_previous.cols() != now.cols() || !(dt > 0.0))
+        return nullptr;
+    const double alpha = std::clamp(m_accumulator / dt, 0.0, 1.0);
+    m_interpolated = m_previous + alpha * (now - m_previous);
+    return &m_interpolated;
+}
+
 void SimulationController::stepOnce()
 {
     pause();
     m_accumulator = 0.0;
+    m_previous.resize(2, 0);
     m_world.step();
     stepGhost();
     emit stepped();
@@ -179,6 +196,7 @@ void SimulationController::startedScene()
 {
     m_spawn = m_scene.spawn;
     m_accumulator = 0.0;
+    m_previous.resize(2, 0);
     m_droppedTime = 0.0;
     m_clock.restart();
     restartGhost();

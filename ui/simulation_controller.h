@@ -29,7 +29,18 @@ public:
     /// For tools that move balls directly (tests, drag-and-throw). Emit
     /// nothing; call notifyBallsChanged() after editing.
     sim::World& mutableWorld() { return m_world; }
-    void notifyBallsChanged() { emit stepped(); }
+    void notifyBallsChanged()
+    {
+        m_previous.resize(2, 0); // moved by hand: nothing to blend with
+        emit stepped();
+    }
+
+    /// In slow motion (time scale below 1, while playing), where the canvas
+    /// draws the balls: the last step's start and end positions mixed by the
+    /// share of a step the clock has run past it, x₀ + α (x₁ − x₀) with
+    /// α = accumulator / dt, so a ball glides between steps instead of
+    /// jumping every few frames. nullptr otherwise (draw the positions).
+    const sim::Matrix2X* interpolatedPositions();
 
     /// Starts `scene` (kept for reset) at time 0. On an invalid scene the
     /// running one is kept and the error is returned (and signalled).
@@ -116,6 +127,8 @@ signals:
     void timeScaleChanged(double scale);
     /// A frame needed more steps than the cap: `seconds` of simulated time were skipped.
     void timeDropped(double seconds);
+    /// A frame passed without a step (slow motion): the interpolated picture changed.
+    void framePassed();
     /// The world stopped itself because the motion blows up (`reason` says why
     /// and how to fix it), or, with an empty reason, it may run again.
     void haltedChanged(const QString& reason);
@@ -140,6 +153,8 @@ private:
     double m_accumulator = 0.0; // s of simulated time not yet stepped
     double m_droppedTime = 0.0; // s
     double m_timeScale = 1.0;
+    sim::Matrix2X m_previous;     // px, positions at the start of the last step (empty: none)
+    sim::Matrix2X m_interpolated; // px, scratch for interpolatedPositions()
     int m_maxStepsPerFrame = 8;
     bool m_playing = false;
     bool m_suspended = false;

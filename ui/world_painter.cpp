@@ -21,6 +21,16 @@
 
 namespace forcelab {
 
+namespace {
+// Where the balls are drawn: their positions, or the slow-motion
+// interpolation between two steps when the canvas gives one that fits.
+const sim::Matrix2X& drawnPositions(const sim::BallState& balls, const PaintOptions& options)
+{
+    return options.positions && options.positions->cols() == balls.size() ? *options.positions : balls.position;
+}
+
+} // namespace
+
 Overlays Overlays::fromNames(const QStringList& names)
 {
     Overlays o;
@@ -167,6 +177,7 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
 {
     const sim::BallState& balls = world.balls();
     const int n = balls.size();
+    const sim::Matrix2X& at = drawnPositions(balls, options);
     const double s = view.scale();
     const QPointF origin = view.toWidget(sim::Vec2(0.0, 0.0));
     const bool mark = options.overlays.colliding && balls.colliding.size() == static_cast<std::size_t>(n);
@@ -178,8 +189,8 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
     p.setRenderHint(QPainter::Antialiasing, false);
     p.setPen(Qt::NoPen);
     for (int i = 0; i < n; ++i) {
-        const double x = origin.x() + balls.position(0, i) * s;
-        const double y = origin.y() + balls.position(1, i) * s;
+        const double x = origin.x() + at(0, i) * s;
+        const double y = origin.y() + at(1, i) * s;
         const double r = balls.radius[i] * s;
         // Off-screen (or not a number: the comparisons are false) is skipped.
         if (!(x + r >= area.left() && x - r <= area.right() && y + r >= area.top() && y - r <= area.bottom()))
@@ -211,7 +222,7 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
     if (ringed < 0 && options.overlays.readout && n > 0)
         ringed = 0;
     if (ringed >= 0 && ringed < n) {
-        const QPointF c = view.toWidget(balls.position.col(ringed));
+        const QPointF c = view.toWidget(at.col(ringed));
         const double r = balls.radius[ringed] * s + 4.0 * options.lineScale;
         p.setBrush(Qt::NoBrush);
         p.setPen(QPen(QColor::fromRgb(canvas_colors::kSelection), 2.0 * options.lineScale, Qt::DotLine));
@@ -240,8 +251,9 @@ void WorldPainter::paintMarkers(QPainter& p, const ViewTransform& view, const si
         const sim::BallState& balls = world.balls();
         if (balls.size() <= 50) {
             p.setPen(QPen(QColor(0x70, 0x78, 0x84), 1.5 * k, Qt::DashLine));
+            const sim::Matrix2X& at = drawnPositions(balls, options);
             for (int i = 0; i < balls.size(); ++i)
-                p.drawLine(c, view.toWidget(balls.position.col(i)));
+                p.drawLine(c, view.toWidget(at.col(i)));
         }
         p.setPen(Qt::NoPen);
         p.setBrush(QColor::fromRgb(canvas_colors::kFrame));
@@ -297,6 +309,7 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
                                const PaintOptions& options, const sim::Matrix2X* accelerations)
 {
     const sim::BallState& balls = world.balls();
+    const sim::Matrix2X& at = drawnPositions(balls, options);
     const int n = balls.size();
     QList<int> which;
     if (n <= kMaxArrowBalls) {
@@ -311,7 +324,7 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
     if (options.overlays.velocity) {
         QList<QLineF> lines;
         for (int i : which) {
-            const sim::Vec2 x = balls.position.col(i);
+            const sim::Vec2 x = at.col(i);
             appendArrow(lines, view.toWidget(x), view.toWidget(x + options.velocityScale * balls.velocity.col(i)), head);
         }
         p.setPen(QPen(QColor::fromRgb(canvas_colors::kVelocity), 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
@@ -320,7 +333,7 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
     if (options.overlays.acceleration && accelerations) {
         QList<QLineF> lines;
         for (int i : which) {
-            const sim::Vec2 x = balls.position.col(i);
+            const sim::Vec2 x = at.col(i);
             appendArrow(lines, view.toWidget(x), view.toWidget(x + options.accelerationScale * accelerations->col(i)),
                         head);
         }

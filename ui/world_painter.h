@@ -63,6 +63,9 @@ struct PaintOptions {
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
+    /// px, where to draw the balls instead of their positions (2×N, the
+    /// slow-motion interpolation between two steps); not owned
+    const sim::Matrix2X* positions = nullptr;
 };
 
 /// The canvas palette (light, high contrast: readable on a projector).
