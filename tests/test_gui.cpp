@@ -515,7 +515,7 @@ void GuiTest::damagedSettingsAreNamedAndReplaced()
     {
         QSettings s;
         s.setValue(QStringLiteral("mainWindow/geometry"), QStringLiteral("not a geometry"));
-        s.setValue(QStringLiteral("mainWindow/state"), QByteArray("\x00\x01garbage", 9));
+        s.setValue(QStringLiteral("mainWindow/layout2"), QByteArray("\x00\x01garbage", 9));
         s.setValue(QStringLiteral("lesson/last"), QStringLiteral("/nonexistent/last-lesson.json"));
         s.setValue(QStringLiteral("lesson/directory"), QStringLiteral("/nonexistent/folder"));
     }
@@ -531,7 +531,7 @@ void GuiTest::damagedSettingsAreNamedAndReplaced()
         QVERIFY(window.width() > 0 && window.height() > 0);
         const QString message = window.statusBar()->currentMessage();
         QVERIFY2(!message.contains(QLatin1Char('\n')), qPrintable(message));
-        for (const QString& part : {QStringLiteral("mainWindow/geometry"), QStringLiteral("mainWindow/state"),
+        for (const QString& part : {QStringLiteral("mainWindow/geometry"), QStringLiteral("mainWindow/layout2"),
                                     QStringLiteral("lesson/last"), QStringLiteral("last-lesson.json"),
                                     QStringLiteral("lesson/directory"), QStringLiteral("/nonexistent/folder"),
                                     QDir::toNativeSeparators(file)})

@@ -12,6 +12,8 @@
 #include "ui/trajectory_export.h"
 #include "ui/world_painter.h"
 
+#include "lessons/lesson_loader.h"
+
 #include <QApplication>
 #include <QBuffer>
 #include <QLineSeries>
@@ -93,6 +95,8 @@ void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton butto
 class GuiCanvasTest : public QObject {
     Q_OBJECT
 private slots:
+    void readoutsNeverCoverThePhysics_data();
+    void readoutsNeverCoverThePhysics();
     void clickSelectsWithoutTouchingThePhysics();
     void middleWallIsDrawn();
     void overlayNamesSwitchOverlays();
@@ -461,6 +465,60 @@ void GuiCanvasTest::draggingABallThrowsIt()
 // leaves the world alone: velocity and position bit for bit, and the next
 // steps give the same state as a twin world nobody clicked. Before, a click
 // counted as a throw at no speed and stopped the ball (the Moon in lesson 19).
+void GuiCanvasTest::readoutsNeverCoverThePhysics_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<QSize>("size");
+    for (const char* lesson : {"19-two-bodies-in-orbit", "31-break-shot", "33-orbit-energy-drift"})
+        for (const QSize size : {QSize(960, 640), QSize(700, 900), QSize(560, 420)})
+            QTest::newRow(qPrintable(QStringLiteral("%1 %2x%3").arg(lesson).arg(size.width()).arg(size.height())))
+                << QString::fromLatin1(lesson) << size;
+}
+
+// The per-ball readout and the totals sit in a strip outside the box: no
+// ball's disc under either panel at any moment of the first 5 s, the panels
+// apart from each other and from the box, and inside the canvas.
+void GuiCanvasTest::readoutsNeverCoverThePhysics()
+{
+    QFETCH(QString, lesson);
+    QFETCH(QSize, size);
+    const LoadResult r = LessonLoader::load(lesson);
+    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    SimulationController controller;
+    QVERIFY(!controller.setScene(r.lesson->scene));
+    Canvas canvas(&controller);
+    canvas.resize(size);
+    Overlays o = Overlays::fromNames(r.lesson->overlays);
+    o.readout = true;
+    o.totals = true;
+    canvas.setOverlays(o);
+    PaintOptions options;
+    options.overlays = o;
+    const QRectF area(QPointF(0, 0), QSizeF(size));
+    const WorldPainter::Panels panels = WorldPainter::panels(controller.world(), area, options);
+    QVERIFY(!panels.readout.isEmpty() && !panels.totals.isEmpty());
+    QVERIFY(!panels.readout.intersects(panels.totals));
+    QVERIFY(area.contains(panels.readout) && area.contains(panels.totals));
+    const ViewTransform view = WorldPainter::view(controller.world(), area, options);
+    QVERIFY(!view.boxRect().intersects(panels.readout) && !view.boxRect().intersects(panels.totals));
+    const double dt = controller.world().settings().time.dt;
+    for (int k = 0; k < static_cast<int>(5.0 / dt); k += 10) {
+        const sim::BallState& b = controller.world().balls();
+        for (int i = 0; i < b.size(); ++i) {
+            const QPointF c = view.toWidget(sim::Vec2(b.position.col(i)));
+            const double rad = view.toWidget(b.radius[i]);
+            const QRectF disc(c - QPointF(rad, rad), QSizeF(2 * rad, 2 * rad));
+            QVERIFY2(!disc.intersects(panels.readout) && !disc.intersects(panels.totals),
+                     qPrintable(QStringLiteral("ball %1 under a panel at t = %2 s").arg(i).arg(controller.world().time())));
+        }
+        for (int s = 0; s < 10; ++s)
+            controller.stepOnce();
+    }
+    // The picture agrees: the readout's card is drawn where panels() says.
+    const QImage shot = canvas.renderImage();
+    QCOMPARE(shot.pixelColor(panels.readout.center().toPoint()).lightness() > 200, true);
+}
+
 void GuiCanvasTest::clickSelectsWithoutTouchingThePhysics()
 {
     sim::Scene scene = box({ball({200, 150}, {120, -80}, 25), ball({420, 260}, {-60, 10}, 15, 0xd08020)});

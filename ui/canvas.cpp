@@ -91,7 +91,7 @@ void Canvas::setLineScale(double scale)
 
 ViewTransform Canvas::viewTransform() const
 {
-    return WorldPainter::view(m_controller->world(), QRectF(rect()));
+    return WorldPainter::view(m_controller->world(), QRectF(rect()), m_options);
 }
 
 QPointF Canvas::worldToWidget(const sim::Vec2& world) const

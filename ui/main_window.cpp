@@ -47,7 +47,7 @@ namespace forcelab {
 
 namespace {
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
-const QString kStateKey = QStringLiteral("mainWindow/state");
+const QString kStateKey = QStringLiteral("mainWindow/layout2"); // the docks since the plots moved to the right
 const QString kLastLessonKey = QStringLiteral("lesson/last");
 const QString kDirectoryKey = QStringLiteral("lesson/directory");
 
@@ -309,19 +309,17 @@ void MainWindow::createDocks()
         m_canvas->setTrailsEnabled(on || m_lesson.overlays.contains(QStringLiteral("trails")));
     });
 
-    // The plots under the canvas only: the side docks keep the full height.
-    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
-    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    // The plots, the code and the accuracy tools share the right column with
+    // the Inspector, as tabs under the parameters: the stage keeps the whole
+    // height of the window, and opening one of them never shrinks it.
     m_plotsDock = new PlotsDock(m_controller, this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
-    // Beside the plots, closed at first: while shown it keeps the energy books,
-    // which cost force evaluations.
-    m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_accuracyDock);
-    tabifyDockWidget(m_plotsDock, m_accuracyDock);
+    m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_codeDock);
-    tabifyDockWidget(m_plotsDock, m_codeDock);
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_codeDock),
+                              static_cast<QDockWidget*>(m_accuracyDock)}) {
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        tabifyDockWidget(m_inspectorDock, dock);
+    }
     m_plotsDock->raise();
     m_accuracyDock->hide();
     m_accuracyMenu->addAction(m_accuracyDock->tradeOffAction());
@@ -352,9 +350,8 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
     m_viewMenu->addAction(m_lessonsDock->teacherNotesAction());
-    resizeDocks({m_lessonsDock, m_parametersDock}, {300, 350}, Qt::Horizontal);
-    resizeDocks({m_plotsDock}, {240}, Qt::Vertical);
-    resizeDocks({m_parametersDock, m_inspectorDock}, {560, 260}, Qt::Vertical);
+    resizeDocks({m_lessonsDock, m_parametersDock}, {230, 310}, Qt::Horizontal);
+    resizeDocks({m_parametersDock, m_inspectorDock}, {360, 300}, Qt::Vertical);
 }
 
 void MainWindow::createStatusBar()

@@ -126,7 +126,10 @@ NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidge
     // A single step of about a hundredth of the slider's span.
     const double span = spec.scale == Scale::Log ? spec.sliderMin : (spec.sliderMax - spec.sliderMin) / 100.0;
     m_spin->setSingleStep(std::max(span, std::pow(10.0, -spec.decimals)));
-    m_spin->setMinimumWidth(96);
+    // Wide enough for a typical value with the whole unit ("1000 px³/(mass·s²)"),
+    // so the unit is never cut; the frame and arrows take about 36 px.
+    const QString typical = QStringLiteral("-0000.000") + spec.suffix;
+    m_spin->setMinimumWidth(std::max(96, m_spin->fontMetrics().horizontalAdvance(typical) + 36));
 
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

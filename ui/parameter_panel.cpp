@@ -335,6 +335,8 @@ QGroupBox* ParameterPanel::addSection(const QString& key, const QString& title,
                                                                : key + QStringLiteral("Group"));
     auto* form = new QFormLayout(box);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // In a narrow dock a label goes above its field rather than cutting it.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
     if (enabled && setEnabled) {
         // A checkable section: the model is on when ticked; its fields are

@@ -45,7 +45,7 @@ QList<QPointF> decimated(const std::deque<PlotsDock::Sample>& samples, std::size
 // show it whole where a title along the axis would be cut in a short dock.
 // `fromZero` keeps the axis at or above 0 (costs, counts). Returns the factor.
 double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit,
-                  const QList<std::pair<QLineSeries*, QList<QPointF>>>& data, bool fromZero)
+                  const QList<std::pair<QLineSeries*, QList<QPointF>>>& data, bool fromZero, int ticks)
 {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const auto& [series, points] : data)
@@ -58,7 +58,7 @@ double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit
         lo = hi = 0.0;
     if (fromZero)
         lo = std::max(0.0, lo), hi = std::max(hi, lo);
-    NiceAxis nice = niceAxis(lo, hi);
+    NiceAxis nice = niceAxis(lo, hi, ticks);
     if (fromZero)
         nice.min = std::max(0.0, nice.min);
     applyNiceAxis(axis, nice);
@@ -76,6 +76,15 @@ double showOnAxis(QValueAxis* axis, const QString& quantity, const QString& unit
         series->replace(shown);
     }
     return f;
+}
+
+// About one tick per 45 px of plot height (2 to 6), so the labels never
+// crowd together and turn into "…" in a short dock.
+int ticksFor(const QLineSeries* series)
+{
+    const QChart* chart = series->chart();
+    const double height = chart ? chart->plotArea().height() : 0.0;
+    return std::clamp(static_cast<int>(height / 45.0), 2, 6);
 }
 
 } // namespace
@@ -262,16 +271,17 @@ void PlotsDock::refreshCharts()
     const QList<QPointF> potential = points([](const Sample& s) { return s.potential; });
     const QList<QPointF> total = points([](const Sample& s) { return s.total; });
     m_energyFactor = showOnAxis(m_energyY, tr("Energy"), tr("mass·px²/s²"),
-                                            {{m_kinetic, kinetic}, {m_potential, potential}, {m_total, total}}, false);
+                                            {{m_kinetic, kinetic}, {m_potential, potential}, {m_total, total}}, false,
+                                ticksFor(m_kinetic));
 
     const QList<QPointF> p = points([](const Sample& s) { return s.p; });
     const QList<QPointF> px = points([](const Sample& s) { return s.px; });
     const QList<QPointF> py = points([](const Sample& s) { return s.py; });
     m_momentumFactor =
-        showOnAxis(m_momentumY, tr("Momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false);
+        showOnAxis(m_momentumY, tr("Momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false, ticksFor(m_p));
 
     const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
-    m_costFactor = showOnAxis(m_costY, tr("Computer time per step"), tr("µs"), {{m_cost, cost}}, true);
+    m_costFactor = showOnAxis(m_costY, tr("Computer time per step"), tr("µs"), {{m_cost, cost}}, true, ticksFor(m_cost));
 
     if (m_histogramShown)
         refreshHistogram();
@@ -295,7 +305,7 @@ void PlotsDock::refreshHistogram()
     m_speedX->setRange(0.0, top > 0.0 ? top : 1.0);
     m_speedFactor =
         showOnAxis(m_speedY, tr("Speeds: share of balls"), tr("per px/s"), {{m_histogram, steps}, {m_maxwell, h.curve}},
-                   true);
+                   true, ticksFor(m_histogram));
 }
 
 PlotsDock::Histogram PlotsDock::speedHistogram(const sim::BallState& balls, int bins, int curvePoints)

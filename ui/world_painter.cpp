@@ -48,15 +48,122 @@ Overlays Overlays::fromNames(const QStringList& names)
     return o;
 }
 
-ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area)
+namespace {
+
+// The panels' text: a fixed-width font at a size that grows with lineScale.
+QFont panelFont(int pixels, double lineScale)
 {
-    return ViewTransform::fit(world.settings().box, area);
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setPixelSize(static_cast<int>(std::lround(pixels * lineScale)));
+    return font;
+}
+
+constexpr int kReadoutPixels = 14, kTotalsPixels = 13, kReadoutLines = 5, kTotalsLines = 4;
+
+// A panel's size for `lines` lines as wide as `widest`, with its padding.
+QSizeF panelSize(const QFont& font, const QString& widest, int lines, double lineScale)
+{
+    const QFontMetricsF fm(font);
+    const double pad = 8.0 * lineScale;
+    return {fm.horizontalAdvance(widest) + 2 * pad, fm.lineSpacing() * lines + 2 * pad};
+}
+
+// The widest lines the panels can show (numbers at their widest), so the
+// strip does not change size while the numbers change.
+QSizeF readoutSize(double lineScale)
+{
+    return panelSize(panelFont(kReadoutPixels, lineScale), QStringLiteral("speed     -99999.9 px/s   t = 9999.999 s"),
+                     kReadoutLines, lineScale);
+}
+
+QSizeF totalsSize(double lineScale)
+{
+    return panelSize(panelFont(kTotalsPixels, lineScale), QStringLiteral("momentum  (-9.99999e+99, -9.99999e+99)"),
+                     kTotalsLines, lineScale);
+}
+
+struct Layout {
+    QRectF stage;                      // where the box is fitted
+    WorldPainter::Panels panels;
+};
+
+// The panels go in a strip at the right of the area, stacked, or at the top,
+// side by side, whichever leaves the box larger.
+Layout layoutFor(const sim::BoxSettings& box, const QRectF& area, const PaintOptions& o)
+{
+    Layout l{area, {}};
+    const QSizeF r = o.overlays.readout ? readoutSize(o.lineScale) : QSizeF();
+    const QSizeF t = o.overlays.totals ? totalsSize(o.lineScale) : QSizeF();
+    if (r.isEmpty() && t.isEmpty())
+        return l;
+    const double gap = 8.0 * o.lineScale;
+    const double columnWidth = std::max(r.width(), t.width()) + 2 * gap;
+    const double rowHeight = std::max(r.height(), t.height()) + 2 * gap;
+    const QRectF beside = area.adjusted(0, 0, -columnWidth, 0), below = area.adjusted(0, rowHeight, 0, 0);
+    const double sideScale = ViewTransform::fit(box, beside).scale(), topScale = ViewTransform::fit(box, below).scale();
+    if (sideScale >= topScale) {
+        l.stage = beside;
+        QPointF at(beside.right() + gap, area.top() + gap);
+        if (!r.isEmpty()) {
+            l.panels.readout = QRectF(at, r);
+            at.ry() += r.height() + gap;
+        }
+        if (!t.isEmpty())
+            l.panels.totals = QRectF(at, t);
+    } else {
+        // Side by side when both fit the width, else one under the other.
+        const bool stacked = !r.isEmpty() && !t.isEmpty() && r.width() + t.width() + 3 * gap > area.width();
+        l.stage = stacked ? area.adjusted(0, r.height() + t.height() + 3 * gap, 0, 0) : below;
+        QPointF at(area.left() + gap, area.top() + gap);
+        if (!r.isEmpty()) {
+            l.panels.readout = QRectF(at, r);
+            if (stacked)
+                at.ry() += r.height() + gap;
+            else
+                at.rx() += r.width() + gap;
+        }
+        if (!t.isEmpty())
+            l.panels.totals = QRectF(at, t);
+    }
+    return l;
+}
+
+// A panel: a white rounded card with a thin dark edge, and its lines.
+void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStringList& lines,
+               const QList<QColor>& colors, double lineScale)
+{
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double pad = 8.0 * lineScale;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(panel, 6, 6);
+    double y = panel.top() + pad + fm.ascent();
+    for (qsizetype k = 0; k < lines.size(); ++k) {
+        p.setPen(colors.value(k, QColor(0x1d, 0x22, 0x2c)));
+        p.drawText(QPointF(panel.left() + pad, y), lines[k]);
+        y += fm.lineSpacing();
+    }
+}
+
+} // namespace
+
+ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area, const PaintOptions& options)
+{
+    return ViewTransform::fit(world.settings().box, layoutFor(world.settings().box, area, options).stage);
+}
+
+WorldPainter::Panels WorldPainter::panels(const sim::World& world, const QRectF& area, const PaintOptions& options)
+{
+    return layoutFor(world.settings().box, area, options).panels;
 }
 
 void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& world, const PaintOptions& options,
                          qreal dpr)
 {
-    const ViewTransform v = view(world, area);
+    const ViewTransform v = view(world, area, options);
+    const Panels placed = panels(world, area, options);
     p.save();
     p.setClipRect(area);
     p.fillRect(area, QColor::fromRgb(canvas_colors::kLetterbox));
@@ -85,9 +192,9 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     if (options.overlays.vanes)
         paintVanes(p, v, world, options);
     if (options.overlays.totals)
-        paintTotals(p, v, world, options);
+        paintTotals(p, placed.totals, world, options);
     if (options.overlays.readout)
-        paintReadout(p, area, v, world, options, a);
+        paintReadout(p, placed.readout, world, options, a);
     p.restore();
 }
 
@@ -343,8 +450,8 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
     }
 }
 
-void WorldPainter::paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
-                                const PaintOptions& options, const sim::Matrix2X* accelerations)
+void WorldPainter::paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
+                                const sim::Matrix2X* accelerations)
 {
     const sim::BallState& balls = world.balls();
     const int n = balls.size();
@@ -361,58 +468,10 @@ void WorldPainter::paintReadout(QPainter& p, const QRectF& area, const ViewTrans
         QStringLiteral("accel.   %1%2  px/s²").arg(num(a.x()), num(a.y())),
         QStringLiteral("speed    %1 px/s   t = %2 s").arg(num(v.norm())).arg(world.time(), 0, 'f', 3),
     };
-
-    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    font.setPixelSize(static_cast<int>(std::lround(14 * options.lineScale)));
-    p.setFont(font);
-    const QFontMetricsF fm(font);
-    double width = 0.0;
-    for (const QString& line : lines)
-        width = std::max(width, fm.horizontalAdvance(line));
-    const double pad = 8.0 * options.lineScale;
-    // Outside the box when a letterbox strip has room for it (it then hides
-    // nothing); otherwise in the box corner farthest from the ball.
-    const QRectF box = view.boxRect();
-    const QSizeF size(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad);
-    const double inset = 12.0 * options.lineScale, gap = 6.0 * options.lineScale;
-    QRectF panel;
-    if (box.top() - area.top() >= size.height() + 2 * gap)
-        panel = QRectF(QPointF(box.left(), box.top() - gap - size.height()), size);
-    else if (area.bottom() - box.bottom() >= size.height() + 2 * gap)
-        panel = QRectF(QPointF(box.left(), box.bottom() + gap), size);
-    else if (area.right() - box.right() >= size.width() + 2 * gap)
-        panel = QRectF(QPointF(box.right() + gap, box.top()), size);
-    else if (box.left() - area.left() >= size.width() + 2 * gap)
-        panel = QRectF(QPointF(box.left() - gap - size.width(), box.top()), size);
-    const QPointF ball = view.toWidget(x);
-    double farthest = panel.isNull() ? -1.0 : std::numeric_limits<double>::infinity();
-    for (const QPointF& corner : {box.topLeft() + QPointF(inset, inset),
-                                  QPointF(box.right() - inset - size.width(), box.top() + inset),
-                                  QPointF(box.left() + inset, box.bottom() - inset - size.height()),
-                                  box.bottomRight() - QPointF(inset + size.width(), inset + size.height())}) {
-        const QRectF candidate(corner, size);
-        const QPointF d = candidate.center() - ball;
-        const double distance = d.x() * d.x() + d.y() * d.y();
-        if (distance > farthest) {
-            farthest = distance;
-            panel = candidate;
-        }
-    }
-    p.setRenderHint(QPainter::Antialiasing, true);
-    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
-    p.setBrush(QColor(255, 255, 255, 225));
-    p.drawRoundedRect(panel, 6, 6);
-    double y = panel.top() + pad + fm.ascent();
-    for (int k = 0; k < lines.size(); ++k) {
-        QColor c(0x1d, 0x22, 0x2c);
-        if (k == 2)
-            c = QColor::fromRgb(canvas_colors::kVelocity);
-        else if (k == 3)
-            c = QColor::fromRgb(canvas_colors::kAcceleration);
-        p.setPen(c);
-        p.drawText(QPointF(panel.left() + pad, y), lines[k]);
-        y += fm.lineSpacing();
-    }
+    const QColor text(0x1d, 0x22, 0x2c);
+    drawPanel(p, panel, panelFont(kReadoutPixels, options.lineScale), lines,
+              {text, text, QColor::fromRgb(canvas_colors::kVelocity), QColor::fromRgb(canvas_colors::kAcceleration), text},
+              options.lineScale);
 }
 
 void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world,
@@ -694,33 +753,11 @@ QStringList WorldPainter::totalsText(const sim::World& world)
     };
 }
 
-void WorldPainter::paintTotals(QPainter& p, const ViewTransform& view, const sim::World& world,
-                               const PaintOptions& options)
+void WorldPainter::paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options)
 {
     // What a model keeps and what it loses: energy (mass·px²/s²) and
-    // momentum (mass·px/s) of all balls, in the box's top-right corner.
-    const QStringList lines = totalsText(world);
-    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    font.setPixelSize(static_cast<int>(std::lround(13 * options.lineScale)));
-    p.setFont(font);
-    const QFontMetricsF fm(font);
-    double width = 0.0;
-    for (const QString& line : lines)
-        width = std::max(width, fm.horizontalAdvance(line));
-    const double pad = 6.0 * options.lineScale, inset = 10.0 * options.lineScale;
-    const QRectF box = view.boxRect();
-    const QSizeF size(width + 2 * pad, fm.lineSpacing() * lines.size() + 2 * pad);
-    const QRectF panel(QPointF(box.right() - inset - size.width(), box.top() + inset), size);
-    p.setRenderHint(QPainter::Antialiasing, true);
-    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
-    p.setBrush(QColor(255, 255, 255, 225));
-    p.drawRoundedRect(panel, 6, 6);
-    p.setPen(QColor(0x1d, 0x22, 0x2c));
-    double y = panel.top() + pad + fm.ascent();
-    for (const QString& line : lines) {
-        p.drawText(QPointF(panel.left() + pad, y), line);
-        y += fm.lineSpacing();
-    }
+    // momentum (mass·px/s) of all balls.
+    drawPanel(p, panel, panelFont(kTotalsPixels, options.lineScale), totalsText(world), {}, options.lineScale);
 }
 
 } // namespace forcelab

@@ -93,8 +93,18 @@ public:
     void paint(QPainter& painter, const QRectF& area, const sim::World& world, const PaintOptions& options,
                qreal devicePixelRatio);
 
-    /// The view used for `area` and this world's box.
-    static ViewTransform view(const sim::World& world, const QRectF& area);
+    /// The view used for `area` and this world's box. With the readout or the
+    /// totals on, a strip beside the box (or above it, in a tall area) is kept
+    /// for their panels, so they never cover the physics.
+    static ViewTransform view(const sim::World& world, const QRectF& area, const PaintOptions& options = {});
+
+    /// Where the readout and the totals panels are drawn (empty rects for
+    /// those that are off): in the strip that view() keeps, one after the other.
+    struct Panels {
+        QRectF readout;
+        QRectF totals;
+    };
+    static Panels panels(const sim::World& world, const QRectF& area, const PaintOptions& options);
 
     void setMarkedColor(sim::Rgb color) { m_sprites.setMarkedColor(color); }
     sim::Rgb markedColor() const { return m_sprites.markedColor(); }
@@ -124,10 +134,10 @@ private:
     void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
     void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
-    void paintTotals(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
+    void paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
     void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintReadout(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
-                      const PaintOptions& options, const sim::Matrix2X* accelerations);
+    void paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
+                      const sim::Matrix2X* accelerations);
 
     BallSprites m_sprites;
 };
