@@ -475,82 +475,82 @@ void writeCsv(const std::vector<Row>& rows, std::ostream& csv)
 
 } // namespace
 
-int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+namespace forcelab::cli {
+
+void declareBench(QCommandLineParser& p)
+{
+    p.addOptions({
+        {QStringLiteral("quick"), QStringLiteral("Fewer sizes and runs (1000, 4000, 10000 balls; 3 runs).")},
+        {QStringLiteral("csv"), QStringLiteral("Also write every row to FILE."), QStringLiteral("FILE")},
+        {QStringLiteral("runs"), QStringLiteral("Runs per measurement; the median is reported."), QStringLiteral("K")},
+        {QStringLiteral("sizes"), QStringLiteral("Ball counts of the main table."), QStringLiteral("N,N,...")},
+        {QStringLiteral("peer-sizes"), QStringLiteral("Ball counts of the comparison with other engines' methods."),
+         QStringLiteral("N,N,...")},
+        {QStringLiteral("brute-limit"), QStringLiteral("Largest count for the all-pairs detector."), QStringLiteral("N")},
+        {QStringLiteral("profile"), QStringLiteral("Add the per-stage times of one step at the largest size.")},
+        {QStringLiteral("speculative"), QStringLiteral("Speculative-contact growth of the solver, in [0, 1]."),
+         QStringLiteral("S")},
+        {QStringLiteral("no-peers"), QStringLiteral("Leave out the comparison table.")},
+        {QStringLiteral("peers-only"), QStringLiteral("Only the comparison table.")},
+    });
+}
+
+int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
 {
     Options o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&](const char* name) -> std::optional<std::string> {
-            if (i + 1 >= args.size()) {
-                err << "forcelab-cli bench: " << name << " needs a value\n";
-                return std::nullopt;
-            }
-            return args[++i];
-        };
-        if (a == "--quick") {
-            o.quick = true;
-            o.runs = 3;
-            o.sizes = {1000, 4000, 10000};
-            o.peerSizes = {1000, 5000};
-            o.peerSteps = 120;
-        } else if (a == "--csv") {
-            const auto v = value("--csv");
-            if (!v)
-                return 2;
-            o.csv = *v;
-        } else if (a == "--runs") {
-            const auto v = value("--runs");
-            if (!v)
-                return 2;
-            const auto n = parseSizes(*v);
-            if (!n || n->size() != 1 || (*n)[0] < 1) {
-                err << "forcelab-cli bench: --runs: expected a positive integer, got '" << *v << "'\n";
-                return 2;
-            }
-            o.runs = (*n)[0];
-        } else if (a == "--sizes" || a == "--peer-sizes") {
-            const auto v = value(a.c_str());
-            if (!v)
-                return 2;
-            const auto n = parseSizes(*v);
-            if (!n) {
-                err << "forcelab-cli bench: " << a << ": expected a list like 1000,4000, got '" << *v << "'\n";
-                return 2;
-            }
-            (a == "--sizes" ? o.sizes : o.peerSizes) = *n;
-        } else if (a == "--brute-limit") {
-            const auto v = value("--brute-limit");
-            if (!v)
-                return 2;
-            const auto n = parseSizes(*v);
-            if (!n || n->size() != 1) {
-                err << "forcelab-cli bench: --brute-limit: expected an integer, got '" << *v << "'\n";
-                return 2;
-            }
-            o.bruteLimit = (*n)[0];
-        } else if (a == "--profile") {
-            o.profile = true;
-        } else if (a == "--speculative") {
-            const auto v = value("--speculative");
-            if (!v)
-                return 2;
-            char* end = nullptr;
-            o.speculative = std::strtod(v->c_str(), &end);
-            if (v->empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 1.0)) {
-                err << "forcelab-cli bench: --speculative: expected a number in [0, 1], got '" << *v << "'\n";
-                return 2;
-            }
-        } else if (a == "--no-peers") {
-            o.peers = false;
-        } else if (a == "--peers-only") {
-            o.main = false;
-            o.bandwidth = false;
-        } else {
-            err << "forcelab-cli bench: unknown option '" << a
-                << "' (options: --quick, --csv FILE, --runs K, --sizes N,N,..., --peer-sizes N,N,..., --brute-limit N, --no-peers, "
-                   "--peers-only, --profile, --speculative S)\n";
+    auto has = [&](const char* name) { return parser.isSet(QString::fromLatin1(name)); };
+    if (has("quick")) {
+        o.quick = true;
+        o.runs = 3;
+        o.sizes = {1000, 4000, 10000};
+        o.peerSizes = {1000, 5000};
+        o.peerSteps = 120;
+    }
+    if (has("csv"))
+        o.csv = valueOf(parser, "csv");
+    if (has("runs")) {
+        const auto n = parseSizes(valueOf(parser, "runs"));
+        if (!n || n->size() != 1 || (*n)[0] < 1) {
+            err << "forcelab-cli bench: --runs: expected a positive integer, got '" << valueOf(parser, "runs") << "'\n";
             return 2;
         }
+        o.runs = (*n)[0];
+    }
+    for (const char* name : {"sizes", "peer-sizes"}) {
+        if (!has(name))
+            continue;
+        const auto n = parseSizes(valueOf(parser, name));
+        if (!n) {
+            err << "forcelab-cli bench: --" << name << ": expected a list like 1000,4000, got '" << valueOf(parser, name)
+                << "'\n";
+            return 2;
+        }
+        (std::string_view(name) == "sizes" ? o.sizes : o.peerSizes) = *n;
+    }
+    if (has("brute-limit")) {
+        const auto n = parseSizes(valueOf(parser, "brute-limit"));
+        if (!n || n->size() != 1) {
+            err << "forcelab-cli bench: --brute-limit: expected an integer, got '" << valueOf(parser, "brute-limit")
+                << "'\n";
+            return 2;
+        }
+        o.bruteLimit = (*n)[0];
+    }
+    o.profile = has("profile");
+    if (has("speculative")) {
+        const std::string v = valueOf(parser, "speculative");
+        char* end = nullptr;
+        o.speculative = std::strtod(v.c_str(), &end);
+        if (v.empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 1.0)) {
+            err << "forcelab-cli bench: --speculative: expected a number in [0, 1], got '" << v << "'\n";
+            return 2;
+        }
+    }
+    if (has("no-peers"))
+        o.peers = false;
+    if (has("peers-only")) {
+        o.main = false;
+        o.bandwidth = false;
     }
     std::unique_ptr<std::ofstream> csv;
     if (!o.csv.empty()) {
@@ -579,3 +579,5 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     }
     return 0;
 }
+
+} // namespace forcelab::cli

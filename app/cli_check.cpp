@@ -9,16 +9,15 @@
 
 namespace forcelab::cli {
 
-int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareCheck(QCommandLineParser& p)
 {
-    QStringList lessons;
-    for (const std::string& a : args) {
-        if (a.starts_with("-")) {
-            err << "forcelab-cli check: unknown option '" << a << "'\n";
-            return 2;
-        }
-        lessons << QString::fromLocal8Bit(a.c_str());
-    }
+    p.addPositionalArgument(QStringLiteral("lessons"), QStringLiteral("Lesson files or built-in ids (default: all built-in)."),
+                            QStringLiteral("[LESSON...]"));
+}
+
+int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    QStringList lessons = parser.positionalArguments();
     if (lessons.isEmpty())
         lessons = LessonLoader::builtInFiles();
     int claims = 0, failed = 0, withClaims = 0;

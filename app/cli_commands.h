@@ -1,41 +1,48 @@
 #pragma once
-// The subcommands of forcelab-cli. Each takes the arguments after its name,
-// writes results to `out` and one-line errors to `err`, and returns the exit
-// code (0 success, 2 bad input, 3 the simulation stopped because it blew up).
+// The subcommands of forcelab-cli. Each declares its options on a
+// QCommandLineParser (so `forcelab-cli COMMAND --help` lists them), and runs
+// on the parsed options: results to `out`, one-line errors to `err`, and the
+// exit code it returns (0 success, 1 a check failed, 2 bad input, 3 the
+// simulation stopped because it blew up).
+
+#include <QCommandLineParser>
 
 #include <ostream>
 #include <string>
-#include <vector>
 
 namespace forcelab::cli {
 
-/// forcelab-cli soak [--steps N] [--balls N]: a long run that checks for drift, NaN and memory growth.
-int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+using Declare = void (*)(QCommandLineParser& parser);
+using Run = int (*)(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
-/// forcelab-cli run LESSON [options]: runs a lesson headless.
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// The value of option `name` as a std::string (empty when not given).
+inline std::string valueOf(const QCommandLineParser& parser, const char* name)
+{
+    return parser.value(QString::fromLatin1(name)).toStdString();
+}
 
-/// forcelab-cli validate FILE...: checks lesson files, prints "FILE: ok" or
-/// every problem; 0 when all are valid, 2 otherwise.
-int validateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+void declareRun(QCommandLineParser& parser);
+int runCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
-/// forcelab-cli sweep [options]: work-precision study of the integrators on
-/// reference problems with closed-form answers (table, CSV, PNG chart).
-int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+void declareValidate(QCommandLineParser& parser);
+int validateCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
-/// forcelab-cli render LESSON --time T --out FILE.png [--size WxH]: draws the
-/// lesson at simulated time T with the canvas's painter. Needs a QGuiApplication.
-int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+void declareCheck(QCommandLineParser& parser);
+int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
-/// forcelab-cli check [LESSON...]: runs every claim of the lessons (all
-/// built-in ones by default); 0 when all hold, 1 when one does not, 2 when a
-/// lesson does not load.
-int checkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+void declareHandbook(QCommandLineParser& parser);
+int handbookCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
-/// forcelab-cli handbook --out FILE.html: the teacher's handbook of the built-in lessons.
-int handbookCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+void declareBench(QCommandLineParser& parser);
+int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
+void declareSweep(QCommandLineParser& parser);
+int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
+void declareRender(QCommandLineParser& parser);
+int renderCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
+void declareSoak(QCommandLineParser& parser);
+int soakCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
 } // namespace forcelab::cli
-
-/// forcelab-cli bench [options]: collision and step benchmarks.
-int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -9,18 +9,24 @@
 
 namespace forcelab::cli {
 
-int handbookCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareHandbook(QCommandLineParser& p)
 {
-    if (args.size() != 2 || args[0] != "--out") {
-        err << "usage: forcelab-cli handbook --out FILE.html\n";
+    p.addOption({QStringLiteral("out"), QStringLiteral("The HTML file to write."), QStringLiteral("FILE.html")});
+}
+
+int handbookCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    const std::string path = valueOf(parser, "out");
+    if (path.empty() || !parser.positionalArguments().isEmpty()) {
+        err << "forcelab-cli handbook: give --out FILE.html and nothing else\n";
         return 2;
     }
-    QFile file(QString::fromLocal8Bit(args[1].c_str()));
+    QFile file(QString::fromStdString(path));
     if (!file.open(QIODevice::WriteOnly) || file.write(builtInHandbookHtml().toUtf8()) < 0) {
-        err << args[1] << ": cannot write: " << file.errorString().toStdString() << "\n";
+        err << path << ": cannot write: " << file.errorString().toStdString() << "\n";
         return 2;
     }
-    out << "wrote " << args[1] << "\n";
+    out << "wrote " << path << "\n";
     return 0;
 }
 

@@ -1,4 +1,5 @@
-// forcelab-cli: ForceLab without a window. Thin: picks the subcommand.
+// forcelab-cli: ForceLab without a window. Thin: picks the subcommand, lets
+// it declare its options, parses them with QCommandLineParser and runs it.
 
 #include "cli_commands.h"
 
@@ -8,79 +9,59 @@
 #include <QGuiApplication>
 
 #include <algorithm>
-#include <memory>
-
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace {
 
-using Run = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+using namespace forcelab::cli;
 
-// One row per subcommand: the top-level usage and each `COMMAND --help` are
-// written from it, so a subcommand's usage is stated once.
-struct Command {
-    const char* name;
-    const char* synopsis; ///< the arguments, on as many lines as they need
-    const char* summary;  ///< what it does
-    Run run;
-};
+void declareNothing(QCommandLineParser&) {}
 
-int paramsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+int paramsCommand(const QCommandLineParser&, std::ostream& out, std::ostream&)
 {
-    if (!args.empty()) {
-        err << "forcelab-cli params: takes no arguments\n";
-        return 2;
-    }
     out << forcelab::sim::parameterReference();
     return 0;
 }
 
+// One row per subcommand: its name, what it does, its options and its work.
+struct Command {
+    const char* name;
+    const char* summary;
+    Declare declare;
+    Run run;
+};
+
 const Command kCommands[] = {
-    {"run",
-     "run LESSON [--integrator NAME] [--dt S] [--substeps K] [--tolerance T]\n"
-     "             [--steps N | --time T] [--seed S] [--set KEY.PATH=VALUE]... [--json]",
-     "run a lesson (a file, or a built-in id such as 'gravity') headless; --time T ends at T",
-     &forcelab::cli::runCommand},
-    {"check", "check [LESSON...]",
-     "run the claims lessons make about their scenes (every built-in lesson when none is named):\n"
-     "      exit 0 when all hold, 1 when one does not",
-     &forcelab::cli::checkCommand},
-    {"handbook", "handbook --out FILE.html",
-     "write the teacher's handbook: every lesson with its goal, answers, misconceptions and checked claims",
-     &forcelab::cli::handbookCommand},
-    {"validate", "validate FILE...",
-     "check lesson files and list every problem (exit 0 when all are valid, 2 otherwise)",
-     &forcelab::cli::validateCommand},
-    {"bench",
-     "bench [--quick] [--csv FILE] [--runs K] [--sizes N,N,...] [--brute-limit N]\n"
-     "        [--profile] [--no-peers | --peers-only] [--peer-sizes N,N,...] [--speculative S]",
-     "time collision detection and whole steps at several ball counts; --profile adds\n"
-     "      the per-stage times of one step at the largest size",
-     &benchCommand},
-    {"sweep", "sweep [--problem NAME] [--quick] [--csv FILE] [--png FILE]",
-     "error against cost of every integrator on problems with known answers", &forcelab::cli::sweepCommand},
-    {"render", "render LESSON --time T --out FILE.png [--size WxH]",
-     "draw a lesson at simulated time T as the workbench's canvas shows it", &forcelab::cli::renderCommand},
-    {"soak", "soak [--steps N] [--balls N]",
-     "a long run of a box with collisions: energy, NaN and memory over 10^6 steps", &forcelab::cli::soakCommand},
-    {"params", "params",
-     "print the parameter reference (docs/parameters.md): every setting, its unit, default and range",
-     &paramsCommand},
+    {"run", "Run a lesson (a file, or a built-in id such as 'gravity') headless and report the end state.",
+     &declareRun, &runCommand},
+    {"check", "Run the claims lessons make about their scenes (every built-in lesson when none is named); exit 0 "
+              "when all hold, 1 when one does not.",
+     &declareCheck, &checkCommand},
+    {"validate", "Check lesson files and list every problem (exit 0 when all are valid, 2 otherwise).",
+     &declareValidate, &validateCommand},
+    {"handbook", "Write the teacher's handbook: every lesson with its goal, answers, misconceptions and checked "
+                 "claims.",
+     &declareHandbook, &handbookCommand},
+    {"bench", "Time collision detection and whole steps at several ball counts.", &declareBench, &benchCommand},
+    {"sweep", "Error against cost of every integrator on problems with known answers.", &declareSweep,
+     &sweepCommand},
+    {"render", "Draw a lesson at simulated time T as the workbench's canvas shows it.", &declareRender,
+     &renderCommand},
+    {"soak", "A long run of a box with collisions: energy, NaN and memory over 10^6 steps.", &declareSoak,
+     &soakCommand},
+    {"params", "Print the parameter reference (docs/parameters.md): every setting, its unit, default and range.",
+     &declareNothing, &paramsCommand},
 };
 
 void usage(std::ostream& out)
 {
-    out << "usage: forcelab-cli COMMAND [ARGS]   (forcelab-cli COMMAND --help for one command)\ncommands:\n";
+    out << "usage: forcelab-cli COMMAND [OPTIONS]   (forcelab-cli COMMAND --help lists a command's options)\n"
+           "commands:\n";
     for (const Command& c : kCommands)
-        out << "  " << c.synopsis << "\n      " << c.summary << "\n";
-}
-
-bool asksForHelp(const std::vector<std::string>& args)
-{
-    return std::find_if(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; }) !=
-           args.end();
+        out << "  " << c.name << "\n      " << c.summary << "\n";
 }
 
 } // namespace
@@ -93,7 +74,6 @@ int main(int argc, char** argv)
         return args.empty() ? 2 : 0;
     }
     const std::string command = args[0];
-    args.erase(args.begin());
     const auto found = std::find_if(std::begin(kCommands), std::end(kCommands),
                                     [&](const Command& c) { return command == c.name; });
     if (found == std::end(kCommands)) {
@@ -103,17 +83,34 @@ int main(int argc, char** argv)
         std::cerr << ")\n";
         return 2;
     }
-    if (asksForHelp(args)) { // before any application object: help needs no display and prints nothing else
-        std::cout << "usage: forcelab-cli " << found->synopsis << "\n  " << found->summary << "\n";
+
+    // Parsed before any application object: --help needs no display and
+    // prints nothing else.
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QString::fromUtf8(found->summary));
+    const QCommandLineOption help = parser.addHelpOption();
+    found->declare(parser);
+    QStringList arguments{QStringLiteral("forcelab-cli ") + QString::fromLatin1(found->name)};
+    for (std::size_t i = 1; i < args.size(); ++i)
+        arguments << QString::fromLocal8Bit(args[i].c_str());
+    if (!parser.parse(arguments)) {
+        std::cerr << "forcelab-cli " << command << ": " << parser.errorText().toStdString() << " (forcelab-cli "
+                  << command << " --help lists the options)\n";
+        return 2;
+    }
+    if (parser.isSet(help)) {
+        std::cout << parser.helpText()
+                         .replace(QStringLiteral("<executable_name>"), QStringLiteral("forcelab-cli ") +
+                                                                            QString::fromLatin1(found->name))
+                         .toStdString();
         return 0;
     }
     // Drawing text needs a QGuiApplication (fonts); without a display it runs
     // on the offscreen platform. Everything else needs only QtCore.
-    const bool draws =
-        command == "render" || (command == "sweep" && std::find(args.begin(), args.end(), "--png") != args.end());
+    const bool draws = command == "render" || (command == "sweep" && parser.isSet(QStringLiteral("png")));
     if (draws && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     const std::unique_ptr<QCoreApplication> app =
         draws ? std::make_unique<QGuiApplication>(argc, argv) : std::make_unique<QCoreApplication>(argc, argv);
-    return found->run(args, std::cout, std::cerr);
+    return found->run(parser, std::cout, std::cerr);
 }

@@ -30,61 +30,58 @@ struct RenderOptions {
 constexpr int kMaxSide = 8192;
 constexpr std::int64_t kMaxSteps = 100'000'000;
 
-std::optional<RenderOptions> parseArgs(const std::vector<std::string>& args, std::ostream& err)
+std::optional<RenderOptions> readOptions(const QCommandLineParser& p, std::ostream& err)
 {
     RenderOptions o;
     auto fail = [&](const std::string& what) {
         err << "forcelab-cli render: " << what << "\n";
         return std::nullopt;
     };
-    bool haveTime = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const std::string v = i + 1 < args.size() ? args[i + 1] : std::string();
-        if (a == "--time") {
-            const auto t = parseFiniteNumber(v);
-            if (!t || *t < 0)
-                return fail("--time: expects a number of seconds >= 0, got '" + v + "'");
-            o.time = *t;
-            haveTime = true;
-            ++i;
-        } else if (a == "--out") {
-            if (v.empty())
-                return fail("--out: needs a file name");
-            o.out = QString::fromStdString(v);
-            ++i;
-        } else if (a == "--size") {
-            const auto x = v.find('x');
-            const auto w = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(0, x));
-            const auto h = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(x + 1));
-            if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSide || *h > kMaxSide || std::floor(*w) != *w ||
-                std::floor(*h) != *h)
-                return fail("--size: expects WIDTHxHEIGHT in pixels (1 to 8192 each), got '" + v + "'");
-            o.width = int(*w);
-            o.height = int(*h);
-            ++i;
-        } else if (!a.empty() && a[0] == '-') {
-            return fail("unknown option '" + a + "'");
-        } else if (o.lesson.isEmpty()) {
-            o.lesson = QString::fromStdString(a);
-        } else {
-            return fail("more than one lesson given");
-        }
-    }
-    if (o.lesson.isEmpty())
-        return fail("needs a lesson (a file or a built-in id)");
-    if (!haveTime)
+    if (!p.isSet(QStringLiteral("time")))
         return fail("needs --time T (seconds of simulated time)");
+    const std::string time = valueOf(p, "time");
+    const auto t = parseFiniteNumber(time);
+    if (!t || *t < 0)
+        return fail("--time: expects a number of seconds >= 0, got '" + time + "'");
+    o.time = *t;
+    o.out = p.value(QStringLiteral("out"));
     if (o.out.isEmpty())
         return fail("needs --out FILE.png");
+    if (p.isSet(QStringLiteral("size"))) {
+        const std::string v = valueOf(p, "size");
+        const auto x = v.find('x');
+        const auto w = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(0, x));
+        const auto h = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(x + 1));
+        if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSide || *h > kMaxSide || std::floor(*w) != *w ||
+            std::floor(*h) != *h)
+            return fail("--size: expects WIDTHxHEIGHT in pixels (1 to 8192 each), got '" + v + "'");
+        o.width = int(*w);
+        o.height = int(*h);
+    }
+    const QStringList lessons = p.positionalArguments();
+    if (lessons.isEmpty())
+        return fail("needs a lesson (a file or a built-in id)");
+    if (lessons.size() > 1)
+        return fail("more than one lesson given");
+    o.lesson = lessons[0];
     return o;
 }
 
 } // namespace
 
-int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareRender(QCommandLineParser& p)
 {
-    const auto options = parseArgs(args, err);
+    p.addPositionalArgument(QStringLiteral("lesson"), QStringLiteral("A lesson file, or a built-in id."),
+                            QStringLiteral("LESSON"));
+    p.addOptions({{QStringLiteral("time"), QStringLiteral("Simulated time to draw, s."), QStringLiteral("T")},
+                  {QStringLiteral("out"), QStringLiteral("The PNG file to write."), QStringLiteral("FILE.png")},
+                  {QStringLiteral("size"), QStringLiteral("Picture size in pixels (default 800x600)."),
+                   QStringLiteral("WxH")}});
+}
+
+int renderCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    const auto options = readOptions(parser, err);
     if (!options)
         return 2;
     sim::World world;

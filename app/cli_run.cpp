@@ -32,82 +32,64 @@ struct RunOptions {
 
 constexpr std::int64_t kMaxSteps = 1'000'000'000;
 
-// Options that change a lesson value become overrides of its key path, so they
-// are checked by the same code as the lesson file.
-std::optional<RunOptions> parseArgs(const std::vector<std::string>& args, std::ostream& err)
+// The options that change a lesson value, and the key path each overrides:
+// they become overrides, so they are checked by the same code as the file.
+constexpr std::pair<const char*, const char*> kTimeOptions[] = {
+    {"integrator", "time.integrator"}, {"dt", "time.dt"},     {"substeps", "time.substeps"},
+    {"tolerance", "time.tolerance"},   {"seed", "time.seed"},
+};
+
+std::optional<RunOptions> readOptions(const QCommandLineParser& p, std::ostream& err)
 {
     RunOptions o;
     auto fail = [&](const std::string& what) {
         err << "forcelab-cli run: " << what << "\n";
         return std::nullopt;
     };
-    static const std::pair<const char*, const char*> kTimeOptions[] = {
-        {"--integrator", "time.integrator"}, {"--dt", "time.dt"},     {"--substeps", "time.substeps"},
-        {"--tolerance", "time.tolerance"},   {"--seed", "time.seed"},
-    };
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> std::optional<std::string> {
-            if (i + 1 >= args.size())
-                return std::nullopt;
-            return args[++i];
-        };
-        if (a == "--json") {
-            o.json = true;
+    o.json = p.isSet(QStringLiteral("json"));
+    for (const auto& [name, key] : kTimeOptions) {
+        if (!p.isSet(QString::fromLatin1(name)))
             continue;
-        }
-        bool matched = false;
-        for (const auto& [flag, key] : kTimeOptions) {
-            if (a != flag)
-                continue;
-            matched = true;
-            const auto v = value();
-            if (!v)
-                return fail(std::string(flag) + ": needs a value");
-            // Checked here so the message names the option the user typed; the
-            // range checks are the lesson's own, through the override.
-            const bool isName = a == "--integrator";
-            if (isName && !sim::parseIntegrator(*v))
-                return fail(std::string(flag) + ": \"" + *v + "\" is not one of " +
-                            sim::joinNames(sim::integratorNames()));
-            if (!isName && !parseFiniteNumber(*v))
-                return fail(std::string(flag) + ": expects a number, got '" + *v + "'");
-            o.overrides.append(Override{QString::fromLatin1(key),
-                                        isName ? QString::fromStdString("\"" + *v + "\"") : QString::fromStdString(*v)});
-        }
-        if (matched)
-            continue;
-        if (a == "--set") {
-            const auto v = value();
-            if (!v)
-                return fail("--set: needs KEY.PATH=VALUE");
-            QString error;
-            const auto override = LessonLoader::parseOverride(QString::fromStdString(*v), &error);
-            if (!override)
-                return fail("--set " + *v + ": " + error.toStdString());
-            o.overrides.append(*override);
-        } else if (a == "--steps") {
-            const auto v = value();
-            const auto n = v ? parseFiniteNumber(*v) : std::nullopt;
-            if (!n || *n < 0 || *n > kMaxSteps || std::floor(*n) != *n)
-                return fail("--steps: expects a whole number from 0 to 1000000000, got '" + v.value_or("") + "'");
-            o.steps = static_cast<std::int64_t>(*n);
-        } else if (a == "--time") {
-            const auto v = value();
-            const auto t = v ? parseFiniteNumber(*v) : std::nullopt;
-            if (!t || !std::isfinite(*t) || *t < 0)
-                return fail("--time: expects a number of seconds >= 0, got '" + v.value_or("") + "'");
-            o.time = *t;
-        } else if (!a.empty() && a[0] == '-') {
-            return fail("unknown option '" + a + "'");
-        } else if (o.lesson.isEmpty()) {
-            o.lesson = QString::fromStdString(a);
-        } else {
-            return fail("more than one lesson given ('" + o.lesson.toStdString() + "' and '" + a + "')");
-        }
+        const std::string v = valueOf(p, name);
+        const std::string flag = std::string("--") + name;
+        // Checked here so the message names the option the user typed; the
+        // range checks are the lesson's own, through the override.
+        const bool isName = std::string_view(name) == "integrator";
+        if (isName && !sim::parseIntegrator(v))
+            return fail(flag + ": \"" + v + "\" is not one of " + sim::joinNames(sim::integratorNames()));
+        if (!isName && !parseFiniteNumber(v))
+            return fail(flag + ": expects a number, got '" + v + "'");
+        o.overrides.append(Override{QString::fromLatin1(key),
+                                    isName ? QString::fromStdString("\"" + v + "\"") : QString::fromStdString(v)});
     }
-    if (o.lesson.isEmpty())
+    for (const QString& text : p.values(QStringLiteral("set"))) {
+        QString error;
+        const auto override = LessonLoader::parseOverride(text, &error);
+        if (!override)
+            return fail("--set " + text.toStdString() + ": " + error.toStdString());
+        o.overrides.append(*override);
+    }
+    if (p.isSet(QStringLiteral("steps"))) {
+        const std::string v = valueOf(p, "steps");
+        const auto n = parseFiniteNumber(v);
+        if (!n || *n < 0 || *n > kMaxSteps || std::floor(*n) != *n)
+            return fail("--steps: expects a whole number from 0 to 1000000000, got '" + v + "'");
+        o.steps = static_cast<std::int64_t>(*n);
+    }
+    if (p.isSet(QStringLiteral("time"))) {
+        const std::string v = valueOf(p, "time");
+        const auto t = parseFiniteNumber(v);
+        if (!t || !std::isfinite(*t) || *t < 0)
+            return fail("--time: expects a number of seconds >= 0, got '" + v + "'");
+        o.time = *t;
+    }
+    const QStringList lessons = p.positionalArguments();
+    if (lessons.isEmpty())
         return fail("needs a lesson (a file or a built-in id)");
+    if (lessons.size() > 1)
+        return fail("more than one lesson given ('" + lessons[0].toStdString() + "' and '" + lessons[1].toStdString() +
+                    "')");
+    o.lesson = lessons[0];
     if (o.steps && o.time)
         return fail("give --steps or --time, not both");
     return o;
@@ -150,9 +132,30 @@ QJsonObject report(const Lesson& lesson, const sim::World& world, double wallMs)
 
 } // namespace
 
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareRun(QCommandLineParser& p)
 {
-    const auto options = parseArgs(args, err);
+    p.addPositionalArgument(QStringLiteral("lesson"), QStringLiteral("A lesson file, or a built-in id such as gravity."),
+                            QStringLiteral("LESSON"));
+    p.addOptions({
+        {QStringLiteral("integrator"),
+         QStringLiteral("Integrator: ") + QString::fromStdString(sim::joinNames(sim::integratorNames())) + u'.',
+         QStringLiteral("NAME")},
+        {QStringLiteral("dt"), QStringLiteral("Time step in s (time.dt)."), QStringLiteral("S")},
+        {QStringLiteral("substeps"), QStringLiteral("Sub-steps per step (time.substeps)."), QStringLiteral("K")},
+        {QStringLiteral("tolerance"), QStringLiteral("Tolerance of rk45 and ias15 (time.tolerance)."),
+         QStringLiteral("T")},
+        {QStringLiteral("seed"), QStringLiteral("Random seed (time.seed)."), QStringLiteral("S")},
+        {QStringLiteral("set"), QStringLiteral("Change one lesson value, e.g. models.gravity.y=0; may be repeated."),
+         QStringLiteral("KEY.PATH=VALUE")},
+        {QStringLiteral("steps"), QStringLiteral("Take N steps of dt."), QStringLiteral("N")},
+        {QStringLiteral("time"), QStringLiteral("Run to simulated time T s exactly (default 10)."), QStringLiteral("T")},
+        {QStringLiteral("json"), QStringLiteral("Print the end state as one line of JSON.")},
+    });
+}
+
+int runCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    const auto options = readOptions(parser, err);
     if (!options)
         return 2;
     sim::World world;

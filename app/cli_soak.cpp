@@ -26,27 +26,30 @@ double peakRssMiB()
 
 } // namespace
 
-int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareSoak(QCommandLineParser& p)
+{
+    p.addOptions({{QStringLiteral("steps"), QStringLiteral("Steps to run (default 1000000)."), QStringLiteral("N")},
+                  {QStringLiteral("balls"), QStringLiteral("Balls in the box (default 1000)."), QStringLiteral("N")}});
+}
+
+int soakCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
 {
     std::int64_t steps = 1'000'000;
     int balls = 1000;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a != "--steps" && a != "--balls") {
-            err << "forcelab-cli soak: unknown option '" << a << "' (options: --steps N, --balls N)\n";
-            return 2;
-        }
-        const double v = i + 1 < args.size() ? parseFiniteNumber(args[i + 1]).value_or(-1.0) : -1.0;
-        const double most = a == "--steps" ? 1e10 : double(sim::kMaxBalls);
+    for (const char* name : {"steps", "balls"}) {
+        if (!parser.isSet(QString::fromLatin1(name)))
+            continue;
+        const double v = parseFiniteNumber(valueOf(parser, name)).value_or(-1.0);
+        const bool isSteps = std::string_view(name) == "steps";
+        const double most = isSteps ? 1e10 : double(sim::kMaxBalls);
         if (v < 1 || std::floor(v) != v || v > most) {
-            err << "forcelab-cli soak: " << a << ": expects a whole number from 1 to " << most << "\n";
+            err << "forcelab-cli soak: --" << name << ": expects a whole number from 1 to " << most << "\n";
             return 2;
         }
-        if (a == "--steps")
+        if (isSteps)
             steps = static_cast<std::int64_t>(v);
         else
             balls = static_cast<int>(v);
-        ++i;
     }
 
     // A box about 20% full of balls, walls and ball-ball collisions with

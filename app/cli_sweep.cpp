@@ -493,29 +493,30 @@ std::string sci(double v, int digits = 2)
 
 } // namespace
 
-int sweepCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareSweep(QCommandLineParser& p)
+{
+    p.addOptions({
+        {QStringLiteral("problem"), QStringLiteral("Only this reference problem (default: all of them)."),
+         QStringLiteral("NAME")},
+        {QStringLiteral("quick"), QStringLiteral("Fewer steps, tolerances and repeats.")},
+        {QStringLiteral("csv"), QStringLiteral("Also write every run to FILE."), QStringLiteral("FILE")},
+        {QStringLiteral("png"), QStringLiteral("Also draw the error-against-cost chart to FILE."), QStringLiteral("FILE")},
+    });
+}
+
+int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
 {
     Options o;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&](const char* what) -> std::optional<std::string> {
-            if (i + 1 >= args.size()) {
-                err << "forcelab-cli sweep: " << a << ": needs " << what << "\n";
-                return std::nullopt;
-            }
-            return args[++i];
-        };
-        if (a == "--quick") {
-            o.quick = true;
-        } else if (a == "--problem" || a == "--csv" || a == "--png") {
-            const auto v = value(a == "--problem" ? "a problem name" : "a file name");
-            if (!v)
-                return 2;
-            (a == "--problem" ? o.problem : a == "--csv" ? o.csv : o.png) = *v;
-        } else {
-            err << "forcelab-cli sweep: unknown option '" << a << "'\n";
-            return 2;
-        }
+    o.quick = parser.isSet(QStringLiteral("quick"));
+    if (parser.isSet(QStringLiteral("problem")))
+        o.problem = valueOf(parser, "problem");
+    if (parser.isSet(QStringLiteral("csv")))
+        o.csv = valueOf(parser, "csv");
+    if (parser.isSet(QStringLiteral("png")))
+        o.png = valueOf(parser, "png");
+    if (!parser.positionalArguments().isEmpty()) {
+        err << "forcelab-cli sweep: takes no arguments besides its options\n";
+        return 2;
     }
 
     std::vector<Problem> problems = allProblems(o.quick);

@@ -7,15 +7,21 @@
 
 namespace forcelab::cli {
 
-int validateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+void declareValidate(QCommandLineParser& p)
 {
-    if (args.empty()) {
-        err << "usage: forcelab-cli validate FILE...\n";
+    p.addPositionalArgument(QStringLiteral("files"), QStringLiteral("Lesson files to check."), QStringLiteral("FILE..."));
+}
+
+int validateCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    const QStringList files = parser.positionalArguments();
+    if (files.isEmpty()) {
+        err << "forcelab-cli validate: give one or more lesson files\n";
         return 2;
     }
     bool allValid = true;
-    for (const std::string& arg : args) {
-        const QString path = QString::fromLocal8Bit(arg.c_str());
+    for (const QString& path : files) {
+        const std::string arg = path.toStdString();
         // Files only: a built-in id is not a file to check.
         const LoadResult r = LessonLoader::loadFile(path);
         if (r.ok()) {

@@ -164,26 +164,43 @@ void TestCli::timeThatCannotRunIsRefused()
 void TestCli::everyCommandHasHelp_data()
 {
     QTest::addColumn<QString>("command");
-    for (const char* c : {"run", "validate", "bench", "sweep", "render", "soak", "params"})
-        QTest::newRow(c) << c;
+    QTest::addColumn<QStringList>("options"); // what its --help must name
+    QTest::newRow("run") << "run" << QStringList{"--integrator", "--dt", "--set", "--steps", "--time", "--json", "LESSON"};
+    QTest::newRow("check") << "check" << QStringList{"[LESSON...]"};
+    QTest::newRow("validate") << "validate" << QStringList{"FILE..."};
+    QTest::newRow("handbook") << "handbook" << QStringList{"--out"};
+    QTest::newRow("bench") << "bench" << QStringList{"--quick", "--sizes", "--profile", "--no-peers"};
+    QTest::newRow("sweep") << "sweep" << QStringList{"--problem", "--quick", "--csv", "--png"};
+    QTest::newRow("render") << "render" << QStringList{"--time", "--out", "--size"};
+    QTest::newRow("soak") << "soak" << QStringList{"--steps", "--balls"};
+    QTest::newRow("params") << "params" << QStringList{};
 }
 
-// COMMAND --help (and -h) prints that command's usage on stdout and exits 0,
-// the same lines as the top-level usage. Before: "unknown option '--help'"
-// (run, sweep, soak, bench, render) or "--help: cannot open" (validate).
+// COMMAND --help (and -h) prints that command's usage and options, from its
+// QCommandLineParser, on stdout and exits 0; the top-level usage names the
+// command with the same summary. An unknown option is one line on stderr
+// naming it, with exit code 2.
 void TestCli::everyCommandHasHelp()
 {
     QFETCH(QString, command);
+    QFETCH(QStringList, options);
     const CliResult all = runCli({"--help"});
     QCOMPARE(all.exitCode, 0);
     for (const char* flag : {"--help", "-h"}) {
         const CliResult r = runCli({command, flag});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.startsWith("usage: forcelab-cli " + command), qPrintable(r.out + r.err));
+        QVERIFY2(r.out.startsWith("Usage: forcelab-cli " + command), qPrintable(r.out + r.err));
         QVERIFY(r.err.isEmpty());
-        const QString synopsis = r.out.section('\n', 0, 0).mid(QString("usage: forcelab-cli ").size());
-        QVERIFY2(all.out.contains(synopsis), qPrintable(synopsis));
+        for (const QString& option : options)
+            QVERIFY2(r.out.contains(option), qPrintable(command + " --help lacks " + option));
+        const QString summary = r.out.section('\n', 1, 1);
+        QVERIFY2(all.out.contains(summary.left(40)), qPrintable(summary));
     }
+    const CliResult bad = runCli({command, "--no-such-option"});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY(bad.out.isEmpty());
+    QCOMPARE(bad.err.count('\n'), 1);
+    QVERIFY2(bad.err.startsWith("forcelab-cli " + command + ": Unknown option 'no-such-option'"), qPrintable(bad.err));
 }
 
 // A folder given where a lesson file belongs reads the same from run and
@@ -333,7 +350,7 @@ void TestCli::badInputExitsTwo_data()
     QTest::newRow("negative steps") << QStringList{"run", "@L", "--steps", "-3"} << "--steps";
     QTest::newRow("no lesson") << QStringList{"run"} << "needs a lesson";
     QTest::newRow("missing file") << QStringList{"run", "/nonexistent/lesson.json"} << "lesson.json";
-    QTest::newRow("unknown option") << QStringList{"run", "@L", "--fast"} << "--fast";
+    QTest::newRow("unknown option") << QStringList{"run", "@L", "--fast"} << "Unknown option 'fast'";
     QTest::newRow("unknown command") << QStringList{"walk"} << "walk";
 }
 
