@@ -27,6 +27,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -259,6 +260,7 @@ private slots:
     void switchingLessonsUpdatesTheDocks();
     void shortcutsAct();
     void lessonSpeedIsRestoredAndSlowMotionGlides();
+    void transportKeysActWhereverTheFocusIs();
     void lessonChangeGivesTheStageTheKeyboard();
     void saveThenOpenGivesTheSameScene();
     void lessonsTreeFollowsTheCourse();
@@ -632,6 +634,87 @@ void GuiWorkbenchTest::lessonSpeedIsRestoredAndSlowMotionGlides()
              qPrintable(QStringLiteral("drawn at (%1, %2)").arg(drawn->coeff(0, 0)).arg(drawn->coeff(1, 0))));
     slow.pause();
     QVERIFY(!slow.interpolatedPositions()); // paused: the true positions
+}
+
+// Space runs and pauses, R resets, whatever control has the keyboard (a
+// check box, a slider, a combo box), except a text field being edited; on a
+// slider the arrows move the slider, as sliders do.
+void GuiWorkbenchTest::transportKeysActWhereverTheFocusIs()
+{
+    sim::Scene scene = plainScene();
+    scene.settings.gravity.enabled = true;
+    MainWindow window;
+    QVERIFY(window.setLesson(lessonOf(scene, {QStringLiteral("gravity"), QStringLiteral("integrator")})));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    SimulationController* controller = window.controller();
+    window.parameterPanel()->setShowAll(true);
+    const QStringList focusables{QStringLiteral("gravityYSlider"), QStringLiteral("integratorCombo"),
+                                 QStringLiteral("showAllCheck")};
+    for (const QString& name : focusables) {
+        QWidget* w = window.findChild<QWidget*>(name);
+        QVERIFY2(w, qPrintable(name));
+        w->setFocus();
+        QTRY_VERIFY2(w->hasFocus(), qPrintable(name));
+        const bool playing = controller->isPlaying();
+        QTest::keyClick(w, Qt::Key_Space);
+        QVERIFY2(controller->isPlaying() != playing, qPrintable(name + ": Space did not run or pause"));
+        controller->pause();
+        controller->stepOnce();
+        QVERIFY(controller->world().time() > 0.0);
+        QTest::keyClick(w, Qt::Key_R);
+        QVERIFY2(controller->world().time() == 0.0, qPrintable(name + ": R did not reset"));
+    }
+    // On a slider the arrows, Page Up / Down and Home / End belong to the
+    // slider: an arrow moves a hundredth of the travel, Shift + arrow a
+    // thousandth, Page Up a twentieth; the world does not step.
+    auto* slider = window.findChild<QSlider*>(QStringLiteral("gravityYSlider"));
+    slider->setFocus();
+    QTRY_VERIFY(slider->hasFocus());
+    int at = slider->value();
+    QTest::keyClick(slider, Qt::Key_Right);
+    QCOMPARE(slider->value(), at + NumberControl::kSteps / 100);
+    at = slider->value();
+    QTest::keyClick(slider, Qt::Key_Left, Qt::ShiftModifier);
+    QCOMPARE(slider->value(), at - 1);
+    at = slider->value();
+    QTest::keyClick(slider, Qt::Key_PageUp);
+    QCOMPARE(slider->value(), at + NumberControl::kSteps / 20);
+    QTest::keyClick(slider, Qt::Key_End);
+    QCOMPARE(slider->value(), NumberControl::kSteps);
+    QTest::keyClick(slider, Qt::Key_Home);
+    QCOMPARE(slider->value(), 0);
+    QCOMPARE(controller->world().time(), 0.0);
+    // Away from a slider, → steps the world.
+    window.canvas()->setFocus();
+    QTest::keyClick(window.canvas(), Qt::Key_Right);
+    QVERIFY(controller->world().time() > 0.0);
+    // Every control a keyboard can reach has an accessible name.
+    QStringList unnamed;
+    for (QWidget* w : window.findChildren<QWidget*>()) {
+        if (w->focusPolicy() == Qt::NoFocus || !w->isVisible() || qobject_cast<QScrollBar*>(w) ||
+            w->inherits("QLineEdit") || w->inherits("QTabBar") || w->inherits("QDockWidget") ||
+            w->inherits("QAbstractScrollArea") || w->inherits("QChartView") || w->inherits("QMainWindow") ||
+            (w->parentWidget() && w->parentWidget()->inherits("QChartView"))) // a chart's viewport: the chart is named
+            continue;
+        QString name = w->accessibleName();
+        for (const char* shown : {"text", "title", "currentText"}) // what Qt's accessibility reads when no name is set
+            if (name.isEmpty())
+                name = w->property(shown).toString();
+        if (name.isEmpty())
+            unnamed << QStringLiteral("%1 (%2 in %3)")
+                           .arg(w->objectName(), QString::fromLatin1(w->metaObject()->className()),
+                                w->parentWidget() ? QString::fromLatin1(w->parentWidget()->metaObject()->className())
+                                                  : QString());
+    }
+    QVERIFY2(unnamed.isEmpty(), qPrintable(QStringLiteral("no accessible name: ") + unnamed.join(", ")));
+    // In a text field Space is typed.
+    auto* spin = window.findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
+    spin->setFocus();
+    QTRY_VERIFY(spin->hasFocus());
+    const bool playing = controller->isPlaying();
+    QTest::keyClick(spin, Qt::Key_Space);
+    QCOMPARE(controller->isPlaying(), playing);
 }
 
 void GuiWorkbenchTest::shortcutsAct()

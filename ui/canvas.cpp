@@ -15,6 +15,7 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     , m_controller(controller)
 {
     setObjectName(QStringLiteral("canvas"));
+    setAccessibleName(tr("Simulation stage"));
     setMouseTracking(true);
     setFocusPolicy(Qt::ClickFocus); // a click on the canvas takes focus from a spin box, so Space plays again
     setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel

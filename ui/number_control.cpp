@@ -105,14 +105,55 @@ void NumberSpinBox::focusOutEvent(QFocusEvent* event)
     reportIfOutside(typed);
 }
 
+namespace {
+
+bool isSliderKey(int key)
+{
+    return key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down ||
+           key == Qt::Key_PageUp || key == Qt::Key_PageDown || key == Qt::Key_Home || key == Qt::Key_End;
+}
+
+} // namespace
+
+bool NumberSlider::event(QEvent* e)
+{
+    // Claim the slider's keys before the window's shortcuts see them.
+    if (e->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(e);
+        if (isSliderKey(key->key()) && !(key->modifiers() & (Qt::ControlModifier | Qt::AltModifier))) {
+            e->accept();
+            return true;
+        }
+    }
+    return QSlider::event(e);
+}
+
+void NumberSlider::keyPressEvent(QKeyEvent* e)
+{
+    // Shift + arrow: one position, a thousandth of the travel (fine). The
+    // rest as every slider: arrows a single step, Page Up / Down, Home / End.
+    if (e->modifiers() & Qt::ShiftModifier) {
+        if (e->key() == Qt::Key_Left || e->key() == Qt::Key_Down) {
+            setValue(value() - 1);
+            return;
+        }
+        if (e->key() == Qt::Key_Right || e->key() == Qt::Key_Up) {
+            setValue(value() + 1);
+            return;
+        }
+    }
+    QSlider::keyPressEvent(e);
+}
+
 NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidget* parent)
     : QWidget(parent)
     , m_spec(spec)
 {
     setObjectName(objectName + QStringLiteral("Control"));
-    m_slider = new QSlider(Qt::Horizontal, this);
+    m_slider = new NumberSlider(Qt::Horizontal, this);
     m_slider->setObjectName(objectName + QStringLiteral("Slider"));
     m_slider->setRange(0, kSteps);
+    m_slider->setSingleStep(kSteps / 100);
     m_slider->setPageStep(kSteps / 20);
     m_slider->setMinimumWidth(90);
     m_spin = new NumberSpinBox(this);

@@ -7,12 +7,12 @@
 // panel can pass it on to the world, which refuses it with its own message.
 
 #include <QDoubleSpinBox>
+#include <QSlider>
 #include <QString>
 #include <QWidget>
 
 #include <optional>
 
-class QSlider;
 
 namespace forcelab {
 
@@ -44,6 +44,21 @@ private:
     void reportIfOutside(const std::optional<double>& typed);
 
     int m_significant = 0;
+};
+
+/// The slider of a number control, with the usual keys: the arrows move it by
+/// a hundredth of its travel, Shift + arrows by a thousandth (fine), Page Up /
+/// Page Down by a twentieth, Home / End to its ends. While it has the
+/// keyboard these keys are its own, not the window's shortcuts (→ steps the
+/// simulation everywhere else).
+class NumberSlider : public QSlider {
+    Q_OBJECT
+public:
+    using QSlider::QSlider;
+
+protected:
+    bool event(QEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 };
 
 class NumberControl : public QWidget {

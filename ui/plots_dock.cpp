@@ -114,6 +114,7 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
     m_maxwell->setName(tr("Maxwell–Boltzmann (2D)"));
 
     m_tabs = new QTabWidget(this);
+    m_tabs->setAccessibleName(tr("Plots of energy, momentum and step cost"));
     m_tabs->setDocumentMode(true);
     m_tabs->addTab(makeChart(tr("Energy"), {m_kinetic, m_potential, m_total}, &m_energyX, &m_energyY), tr("Energy"));
     m_tabs->addTab(makeChart(tr("Momentum"), {m_p, m_px, m_py}, &m_momentumX, &m_momentumY), tr("Momentum"));
