@@ -12,6 +12,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <optional>
 
 int main(int argc, char* argv[])
 {
@@ -34,12 +35,14 @@ int main(int argc, char* argv[])
     const QCommandLineOption size(QStringLiteral("size"),
                                   QStringLiteral("For --screenshot: the window's size in pixels (default: the screen)."),
                                   QStringLiteral("WxH"));
+    const QCommandLineOption present(QStringLiteral("present"),
+                                     QStringLiteral("Open in the stage view for a projector (F11; Escape leaves)."));
     const QCommandLineOption benchRender(QStringLiteral("bench-render"),
                                          QStringLiteral("Time drawing 1k, 10k and 50k balls offscreen and quit."));
     const QCommandLineOption select(QStringLiteral("select"),
                                     QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
-    parser.addOptions({screenshot, after, time, size, select, benchRender});
+    parser.addOptions({screenshot, after, time, size, present, select, benchRender});
 
     // Read the arguments before any window system is needed: --help and
     // --version work without a display, and a picture or a benchmark is
@@ -85,6 +88,7 @@ int main(int argc, char* argv[])
 
     const QStringList lessons = parser.positionalArguments();
     forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
+    std::optional<QSize> requested; // --size
     if (parser.isSet(screenshot)) {
         // The picture shows the whole screen's worth of workbench, or the size asked for.
         if (parser.isSet(size)) {
@@ -96,11 +100,19 @@ int main(int argc, char* argv[])
                 return 2;
             }
             window.resize(w, h);
+            requested = QSize(w, h);
         } else if (const QScreen* screen = window.screen()) {
             window.setGeometry(screen->availableGeometry());
         }
     }
     window.show();
+    if (parser.isSet(present)) {
+        window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
+        if (requested) { // a picture of the stage at the size asked for, whatever the screen
+            window.showNormal();
+            window.setGeometry(QRect(QPoint(0, 0), *requested));
+        }
+    }
     if (parser.isSet(select)) {
         bool ok = false;
         const int ball = parser.value(select).toInt(&ok);

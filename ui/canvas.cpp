@@ -90,6 +90,12 @@ void Canvas::setLineScale(double scale)
     update();
 }
 
+void Canvas::setBoxMargin(double pixels)
+{
+    m_options.margin = pixels;
+    update();
+}
+
 ViewTransform Canvas::viewTransform() const
 {
     return WorldPainter::view(m_controller->world(), QRectF(rect()), m_options);

@@ -40,6 +40,8 @@ public:
     QColor markedColor() const;
     /// Thicker lines and larger text (presentation mode).
     void setLineScale(double scale);
+    /// px of free space kept around the box (10; the stage view uses 4).
+    void setBoxMargin(double pixels);
     const PaintOptions& paintOptions() const { return m_options; }
 
     /// Switches the trails overlay (same as setOverlays with overlays.trails).

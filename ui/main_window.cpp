@@ -2,6 +2,7 @@
 
 #include "accuracy_dock.h"
 #include "canvas.h"
+#include "stage_bar.h"
 #include "handbook.h"
 #include "code_dock.h"
 #include "parameter_commands.h"
@@ -32,6 +33,8 @@
 #include <QSaveFile>
 #include <QScreen>
 #include <QScrollArea>
+#include <QShortcut>
+#include <QBoxLayout>
 #include <QSettings>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -78,16 +81,28 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_haltBanner->setStyleSheet(QStringLiteral("QLabel { background: #fde2e1; color: #7a1410; "
                                                "border-bottom: 2px solid #c0392b; padding: 8px; }"));
     m_haltBanner->hide();
+    // The stage: the halt banner over the canvas, and, in the stage view, the
+    // bar of large controls beside or under it.
     auto* central = new QWidget(this);
-    auto* centralLayout = new QVBoxLayout(central);
-    centralLayout->setContentsMargins(0, 0, 0, 0);
-    centralLayout->setSpacing(0);
-    centralLayout->addWidget(m_haltBanner);
-    centralLayout->addWidget(m_canvas, 1);
+    m_stageLayout = new QBoxLayout(QBoxLayout::LeftToRight, central);
+    m_stageLayout->setContentsMargins(0, 0, 0, 0);
+    m_stageLayout->setSpacing(0);
+    auto* column = new QVBoxLayout;
+    column->setSpacing(0);
+    column->addWidget(m_haltBanner);
+    column->addWidget(m_canvas, 1);
+    m_stageLayout->addLayout(column, 1);
     setCentralWidget(central);
     m_trajectory = new TrajectoryExport(m_controller, this);
 
     createActions();
+    m_stageBar = new StageBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction}, central);
+    m_stageLayout->addWidget(m_stageBar);
+    m_stageBar->hide();
+    connect(m_controller, &SimulationController::stepped, this, &MainWindow::updateStageReadout);
+    // Escape leaves the stage view.
+    auto* leave = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
     createMenus();
     createToolBars();
     createDocks();
@@ -202,11 +217,14 @@ void MainWindow::createActions()
     m_quitAction->setShortcut(QKeySequence::Quit);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
-    m_presentationAction = new QAction(tr("&Presentation Mode"), this);
+    m_presentationAction = new QAction(tr("&Stage View (Projector)"), this);
     m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
     m_presentationAction->setCheckable(true);
     m_presentationAction->setShortcut(QKeySequence::FullScreen);
-    m_presentationAction->setStatusTip(tr("Full screen with larger text and thicker lines, for a projector (F11)"));
+    m_presentationAction->setStatusTip(
+        tr("The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)"));
+    m_presentationAction->setIconText(tr("Stage"));
+    m_presentationAction->setIcon(style()->standardIcon(QStyle::SP_TitleBarMaxButton));
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
 
     m_aboutAction = new QAction(tr("&About ForceLab"), this);
@@ -264,6 +282,7 @@ void MainWindow::createToolBars()
     m_simulationToolBar->addSeparator();
     m_simulationToolBar->addAction(m_slowerAction);
     m_simulationToolBar->addAction(m_fasterAction);
+    m_simulationToolBar->addAction(m_presentationAction);
 
     m_fileToolBar = addToolBar(tr("File"));
     m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
@@ -477,12 +496,18 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_lesson = lesson;
     Overlays overlays = Overlays::fromNames(lesson.overlays);
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
+    if (m_stageBar->isVisible()) { // the stage view shows the readouts in its bar
+        m_stageOverlays = overlays;
+        overlays.readout = overlays.totals = false;
+    }
     m_canvas->setOverlays(overlays);
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
     m_inspectorDock->setSelectedBall(-1);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     m_codeDock->setLessonControls(lesson.controls);
+    updateStageCaption();
+    layoutStage(); // the box's shape decides where the stage bar goes
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
@@ -721,19 +746,104 @@ void MainWindow::updatePlayAction(bool playing)
 
 void MainWindow::setPresentationMode(bool on)
 {
-    // Larger text everywhere and thicker lines on the canvas: readable from
-    // the back of a classroom.
-    if (on && !m_normalFont)
-        m_normalFont = font();
-    QFont f = m_normalFont.value_or(font());
-    if (on)
-        f.setPointSizeF(f.pointSizeF() * 1.4);
-    setFont(f);
-    m_canvas->setLineScale(on ? 1.6 : 1.0);
-    if (on)
+    if (on == m_stageBar->isVisible())
+        return;
+    if (on) {
+        // Everything but the stage goes: docks, menus, toolbars, status bar;
+        // lines get thicker. The window takes the whole screen by itself, so
+        // it works without a window manager too.
+        m_normalGeometry = saveGeometry();
+        m_normalDocks = saveState();
+        for (QDockWidget* dock : findChildren<QDockWidget*>())
+            dock->hide();
+        menuBar()->hide();
+        m_simulationToolBar->hide();
+        m_fileToolBar->hide();
+        statusBar()->hide();
+        m_canvas->setLineScale(1.6);
+        m_canvas->setBoxMargin(4.0);
+        // The readout and the totals move from the canvas into the bar.
+        m_stageOverlays = m_canvas->overlays();
+        Overlays inBox = m_stageOverlays;
+        inBox.readout = inBox.totals = false;
+        m_canvas->setOverlays(inBox);
+        updateStageCaption();
+        updateStageReadout();
+        m_stageBar->show();
+        if (const QScreen* s = screen())
+            setGeometry(s->geometry());
         showFullScreen();
-    else
+    } else {
+        m_stageBar->hide();
+        m_canvas->setLineScale(1.0);
+        m_canvas->setBoxMargin(10.0);
+        Overlays back = m_canvas->overlays();
+        back.readout = m_stageOverlays.readout;
+        back.totals = m_stageOverlays.totals;
+        m_canvas->setOverlays(back);
+        menuBar()->show();
+        m_simulationToolBar->show();
+        m_fileToolBar->show();
+        statusBar()->show();
         showNormal();
+        restoreState(m_normalDocks);
+        restoreGeometry(m_normalGeometry);
+    }
+    layoutStage();
+}
+
+void MainWindow::updateStageReadout()
+{
+    if (!m_stageBar->isVisible())
+        return;
+    const sim::World& world = m_controller->world();
+    QStringList lines;
+    if (m_stageOverlays.readout) {
+        const sim::Matrix2X a = world.balls().empty() ? sim::Matrix2X() : world.accelerations();
+        lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), world.balls().empty() ? nullptr : &a);
+    }
+    if (m_stageOverlays.totals)
+        lines << WorldPainter::totalsText(world);
+    m_stageBar->setReadout(lines.join(QLatin1Char('\n')));
+}
+
+void MainWindow::updateStageCaption()
+{
+    m_stageBar->setCaption(m_lesson.title, m_lesson.challenges.value(0));
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+    QMainWindow::resizeEvent(event);
+    layoutStage();
+}
+
+// In the stage view the bar takes the strip the box leaves: a column beside
+// it when the window is wider than the box (16:9 screens and a 3:2 box), a
+// row under it otherwise, so the box is as large as the window allows.
+void MainWindow::layoutStage()
+{
+    if (!m_stageBar->isVisible())
+        return;
+    const sim::BoxSettings& box = m_controller->world().settings().box;
+    const double aspect = box.width > 0 && box.height > 0 ? box.width / box.height : 1.5;
+    const QSize area = centralWidget()->size();
+    const double side = area.width() - aspect * area.height();      // px left beside a full-height box
+    const double below = area.height() - area.width() / aspect;      // px left under a full-width box
+    const bool vertical = side >= below;
+    m_stageBar->setVertical(vertical);
+    m_stageLayout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    const int minimum = vertical ? 200 : 96;
+    const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
+    if (vertical) {
+        m_stageBar->setFixedWidth(strip);
+        m_stageBar->setMinimumHeight(0);
+        m_stageBar->setMaximumHeight(QWIDGETSIZE_MAX);
+    } else {
+        m_stageBar->setFixedHeight(strip);
+        m_stageBar->setMinimumWidth(0);
+        m_stageBar->setMaximumWidth(QWIDGETSIZE_MAX);
+    }
 }
 
 void MainWindow::showError(const QString& message)

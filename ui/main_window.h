@@ -5,6 +5,7 @@
 // lesson kept in QSettings.
 
 #include "lessons/lesson.h"
+#include "world_painter.h"
 
 #include <QElapsedTimer>
 #include <QFont>
@@ -14,6 +15,7 @@
 #include <optional>
 
 class QAction;
+class QBoxLayout;
 class QDockWidget;
 class QLabel;
 class QMenu;
@@ -24,6 +26,7 @@ namespace forcelab {
 
 class AccuracyDock;
 class CodeDock;
+class StageBar;
 class Canvas;
 class InspectorDock;
 class LessonsDock;
@@ -68,6 +71,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
     void changeEvent(QEvent* event) override;
@@ -90,6 +94,9 @@ private slots:
     void showTimeDropped(double seconds);
     void showHalted(const QString& reason);
     void setPresentationMode(bool on);
+    void updateStageCaption();
+    void updateStageReadout();
+    void layoutStage();
     void about();
 
 private:
@@ -116,6 +123,11 @@ private:
     PlotsDock* m_plotsDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
+    StageBar* m_stageBar = nullptr;
+    QBoxLayout* m_stageLayout = nullptr;
+    QByteArray m_normalGeometry; // before the stage view
+    QByteArray m_normalDocks;
+    Overlays m_stageOverlays; // the canvas's overlays before the stage view took its readouts
     QAction* m_handbookAction = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
@@ -154,7 +166,6 @@ private:
     QTimer* m_droppedTimer = nullptr;
     QElapsedTimer m_statusClock;
     qint64 m_lastFrames = 0;
-    std::optional<QFont> m_normalFont; // before presentation mode
     QString m_lastLesson;    // from the settings
     QStringList m_settingsProblems; // values in the settings file that were refused, for the status bar
     QString m_lastDirectory; // of Open / Save lesson, screenshots and exports

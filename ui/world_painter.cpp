@@ -100,7 +100,8 @@ Layout layoutFor(const sim::BoxSettings& box, const QRectF& area, const PaintOpt
     const double columnWidth = std::max(r.width(), t.width()) + 2 * gap;
     const double rowHeight = std::max(r.height(), t.height()) + 2 * gap;
     const QRectF beside = area.adjusted(0, 0, -columnWidth, 0), below = area.adjusted(0, rowHeight, 0, 0);
-    const double sideScale = ViewTransform::fit(box, beside).scale(), topScale = ViewTransform::fit(box, below).scale();
+    const double sideScale = ViewTransform::fit(box, beside, o.margin).scale();
+    const double topScale = ViewTransform::fit(box, below, o.margin).scale();
     if (sideScale >= topScale) {
         l.stage = beside;
         QPointF at(beside.right() + gap, area.top() + gap);
@@ -151,7 +152,8 @@ void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStrin
 
 ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area, const PaintOptions& options)
 {
-    return ViewTransform::fit(world.settings().box, layoutFor(world.settings().box, area, options).stage);
+    return ViewTransform::fit(world.settings().box, layoutFor(world.settings().box, area, options).stage,
+                              options.margin);
 }
 
 WorldPainter::Panels WorldPainter::panels(const sim::World& world, const QRectF& area, const PaintOptions& options)
@@ -453,25 +455,32 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
 void WorldPainter::paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
                                 const sim::Matrix2X* accelerations)
 {
+    const QStringList lines = readoutText(world, options.selected, accelerations);
+    if (lines.isEmpty())
+        return;
+    const QColor text(0x1d, 0x22, 0x2c);
+    drawPanel(p, panel, panelFont(kReadoutPixels, options.lineScale), lines,
+              {text, text, QColor::fromRgb(canvas_colors::kVelocity), QColor::fromRgb(canvas_colors::kAcceleration), text},
+              options.lineScale);
+}
+
+QStringList WorldPainter::readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations)
+{
     const sim::BallState& balls = world.balls();
     const int n = balls.size();
     if (n == 0)
-        return;
-    const int i = options.selected >= 0 && options.selected < n ? options.selected : 0;
+        return {};
+    const int i = selected >= 0 && selected < n ? selected : 0;
     auto num = [](double v) { return QString::number(v, 'f', 1).rightJustified(9); };
     const sim::Vec2 x = balls.position.col(i), v = balls.velocity.col(i);
     const sim::Vec2 a = accelerations ? sim::Vec2(accelerations->col(i)) : sim::Vec2(0.0, 0.0);
-    const QStringList lines{
+    return {
         QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
         QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
         QStringLiteral("velocity %1%2  px/s").arg(num(v.x()), num(v.y())),
         QStringLiteral("accel.   %1%2  px/s²").arg(num(a.x()), num(a.y())),
         QStringLiteral("speed    %1 px/s   t = %2 s").arg(num(v.norm())).arg(world.time(), 0, 'f', 3),
     };
-    const QColor text(0x1d, 0x22, 0x2c);
-    drawPanel(p, panel, panelFont(kReadoutPixels, options.lineScale), lines,
-              {text, text, QColor::fromRgb(canvas_colors::kVelocity), QColor::fromRgb(canvas_colors::kAcceleration), text},
-              options.lineScale);
 }
 
 void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world,

@@ -59,6 +59,7 @@ struct PaintOptions {
     double velocityScale = 0.25;    ///< s: a velocity arrow is as long as the path covered in this time
     double accelerationScale = 0.05; ///< s²: an acceleration arrow is a × this
     double lineScale = 1.0;         ///< thicker lines and larger text for a projector
+    double margin = 10.0;           ///< px, free space around the box (the stage view uses less)
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
@@ -122,6 +123,8 @@ public:
     static constexpr int kMaxGhostBalls = 5000;
     /// The lines of the totals panel: kinetic, potential and total energy, momentum.
     static QStringList totalsText(const sim::World& world);
+    /// The lines of the readout of ball `selected` (ball 0 when none).
+    static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations);
 
 private:
     void paintBox(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);

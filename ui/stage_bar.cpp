@@ -1,0 +1,93 @@
+#include "stage_bar.h"
+
+#include <QAction>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QLabel>
+#include <QToolButton>
+
+namespace forcelab {
+
+StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
+    : QWidget(parent)
+{
+    setObjectName(QStringLiteral("stageBar"));
+    setAutoFillBackground(true);
+    QPalette p = palette();
+    p.setColor(QPalette::Window, QColor(0x1d, 0x22, 0x2c));
+    p.setColor(QPalette::WindowText, Qt::white);
+    setPalette(p);
+    m_title = new QLabel(this);
+    m_title->setObjectName(QStringLiteral("stageTitle"));
+    m_title->setWordWrap(true);
+    m_challenge = new QLabel(this);
+    m_challenge->setObjectName(QStringLiteral("stageChallenge"));
+    m_challenge->setWordWrap(true);
+    QFont big = font();
+    big.setPointSizeF(big.pointSizeF() * 1.6);
+    big.setBold(true);
+    m_title->setFont(big);
+    QFont text = font();
+    text.setPointSizeF(text.pointSizeF() * 1.3);
+    m_challenge->setFont(text);
+    m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("stageReadout"));
+    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    mono.setPointSizeF(text.pointSizeF());
+    m_readout->setFont(mono);
+    m_readout->hide();
+    for (QAction* action : transport) {
+        auto* b = new QToolButton(this);
+        b->setDefaultAction(action);
+        b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
+        b->setIconSize(QSize(32, 32));
+        b->setFont(text);
+        b->setMinimumSize(80, 60);
+        b->setFocusPolicy(Qt::NoFocus); // the keyboard stays with the stage: Space, →, R
+        m_buttons << b;
+    }
+    m_grid = new QGridLayout(this);
+    m_grid->setContentsMargins(8, 8, 8, 8);
+    m_grid->setSpacing(6);
+    setVertical(true);
+}
+
+void StageBar::setCaption(const QString& title, const QString& challenge)
+{
+    m_title->setText(title);
+    m_challenge->setText(challenge);
+    m_challenge->setVisible(!challenge.isEmpty());
+}
+
+void StageBar::setReadout(const QString& text)
+{
+    m_readout->setText(text);
+    m_readout->setVisible(!text.isEmpty());
+}
+
+void StageBar::setVertical(bool vertical)
+{
+    m_vertical = vertical;
+    while (m_grid->count() > 0)
+        m_grid->takeAt(0);
+    if (vertical) {
+        // Title, challenge, then the buttons two by two, at the top of the column.
+        m_grid->addWidget(m_title, 0, 0, 1, 2);
+        m_grid->addWidget(m_challenge, 1, 0, 1, 2);
+        for (qsizetype i = 0; i < m_buttons.size(); ++i)
+            m_grid->addWidget(m_buttons[i], 2 + static_cast<int>(i / 2), static_cast<int>(i % 2));
+        const int after = 2 + static_cast<int>((m_buttons.size() + 1) / 2);
+        m_grid->addWidget(m_readout, after, 0, 1, 2);
+        m_grid->setRowStretch(after + 1, 1);
+    } else {
+        // One row: the caption, then the buttons.
+        m_grid->addWidget(m_title, 0, 0);
+        m_grid->addWidget(m_challenge, 1, 0);
+        m_grid->addWidget(m_readout, 0, 1, 2, 1);
+        for (qsizetype i = 0; i < m_buttons.size(); ++i)
+            m_grid->addWidget(m_buttons[i], 0, 2 + static_cast<int>(i), 2, 1);
+        m_grid->setColumnStretch(0, 1);
+    }
+}
+
+} // namespace forcelab

@@ -1,0 +1,42 @@
+#pragma once
+// The projector stage's own controls: the lesson's title and current
+// challenge as a caption, and large buttons for run/pause, step, reset,
+// slower and faster (the main window's actions). The stage view puts the bar
+// where the box leaves room: a column beside a wide window's box, a row under
+// a tall one, so the box keeps the most of the screen.
+
+#include <QList>
+#include <QWidget>
+
+class QAction;
+class QBoxLayout;
+class QGridLayout;
+class QLabel;
+class QToolButton;
+
+namespace forcelab {
+
+class StageBar : public QWidget {
+    Q_OBJECT
+public:
+    explicit StageBar(const QList<QAction*>& transport, QWidget* parent = nullptr);
+
+    /// The caption: the lesson's title and the challenge to show.
+    void setCaption(const QString& title, const QString& challenge);
+    /// A column (beside the box) or a row (under it).
+    void setVertical(bool vertical);
+    /// The readout and totals the lesson shows, as text in the bar (the
+    /// stage view keeps the box free of panels); empty hides it.
+    void setReadout(const QString& text);
+    bool isVertical() const { return m_vertical; }
+
+private:
+    QLabel* m_title = nullptr;
+    QLabel* m_challenge = nullptr;
+    QLabel* m_readout = nullptr;
+    QList<QToolButton*> m_buttons;
+    QGridLayout* m_grid = nullptr;
+    bool m_vertical = true;
+};
+
+} // namespace forcelab
