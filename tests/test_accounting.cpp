@@ -6,9 +6,14 @@
 
 #include "sim/kepler.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab;
 using namespace forcelab::sim;
@@ -34,58 +39,48 @@ double kineticScale(const World& w)
 
 } // namespace
 
-class TestAccounting : public QObject {
-    Q_OBJECT
-private slots:
-    void nothingBookedWithoutNonConservativeModels();
-    void dragWorkIsBooked();
-    void wallLossesAreBooked();
-    void collisionLossesAreBooked();
-    void editsBetweenStepsAreBooked();
-    void offCostsNothing();
-};
 
 // An orbit: nothing acts on purpose, so the drift is all of E − E0.
-void TestAccounting::nothingBookedWithoutNonConservativeModels()
+TEST_CASE("TestAccounting::nothingBookedWithoutNonConservativeModels")
 {
     World w;
-    QVERIFY(!w.reset(KeplerOrbit{}.scene(IntegratorKind::SemiImplicitEuler, 1.0 / 256)));
+    VERIFY(!w.reset(KeplerOrbit{}.scene(IntegratorKind::SemiImplicitEuler, 1.0 / 256)));
     w.setAccounting(true);
     for (int k = 0; k < 300; ++k)
         w.step();
-    QCOMPARE(w.bookedEnergy(), 0.0);
-    QCOMPARE(w.energyDrift(), w.energy().total() - w.startEnergy());
-    QVERIFY(std::abs(w.energyDrift()) > 0.0); // semi-implicit Euler's energy wobbles
+    REQUIRE_SAME(w.bookedEnergy(), 0.0);
+    REQUIRE_SAME(w.energyDrift(), w.energy().total() - w.startEnergy());
+    VERIFY(std::abs(w.energyDrift()) > 0.0); // semi-implicit Euler's energy wobbles
 }
 
 // Free fall with linear drag: drag takes energy away all the time. Booked by
 // the trapezoid rule, the rest is the integrator's error: rk4's is far below
 // semi-implicit Euler's, and both shrink with dt (rk4's to the booking's own
 // second-order error).
-void TestAccounting::dragWorkIsBooked()
+TEST_CASE("TestAccounting::dragWorkIsBooked")
 {
     double drift[2] = {};
     int i = 0;
     for (IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk4}) {
         World w;
-        QVERIFY(!w.reset(dragFall(kind)));
+        VERIFY(!w.reset(dragFall(kind)));
         w.setAccounting(true);
         const double e0 = w.energy().total();
         for (int k = 0; k < 480; ++k)
             w.step();
-        QVERIFY(w.bookedEnergy() < 0.0); // drag removed energy
+        VERIFY(w.bookedEnergy() < 0.0); // drag removed energy
         drift[i++] = std::abs(w.energyDrift()) / std::abs(e0 - w.energy().total());
     }
-    qInfo("energy drift as a share of what drag removed: semi-implicit-euler %.3g, rk4 %.3g", drift[0], drift[1]);
-    QVERIFY(drift[0] < 0.05);
-    QVERIFY(drift[1] < 1e-4);
-    QVERIFY(drift[1] < drift[0] / 100.0);
+    forcelab::test::report("energy drift as a share of what drag removed: semi-implicit-euler %.3g, rk4 %.3g", drift[0], drift[1]);
+    VERIFY(drift[0] < 0.05);
+    VERIFY(drift[1] < 1e-4);
+    VERIFY(drift[1] < drift[0] / 100.0);
 }
 
 // A ball bouncing with e = 0.8 on exact walls with the exact integrator: the
 // walls take away 36% of the energy each bounce; all of it is booked and the
 // drift stays at rounding level.
-void TestAccounting::wallLossesAreBooked()
+TEST_CASE("TestAccounting::wallLossesAreBooked")
 {
     Scene s;
     s.settings.walls = WallSettings{true, true, true, true, WallModel::Exact, 0.8};
@@ -93,77 +88,75 @@ void TestAccounting::wallLossesAreBooked()
     s.settings.time.integrator = IntegratorKind::Exact;
     s.balls = {ballAt(300, 100, 50, 0)};
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     w.setAccounting(true);
     while (w.totals().wallHits < 8)
         w.step();
     const double lost = w.startEnergy() - w.energy().total();
-    QVERIFY(lost > 0.0);
-    QVERIFY(std::abs(w.bookedEnergy() + lost) <= 1e-9 * std::abs(w.startEnergy()));
-    QVERIFY(std::abs(w.energyDrift()) <= 1e-9 * std::abs(w.startEnergy()));
+    VERIFY(lost > 0.0);
+    VERIFY(std::abs(w.bookedEnergy() + lost) <= 1e-9 * std::abs(w.startEnergy()));
+    VERIFY(std::abs(w.energyDrift()) <= 1e-9 * std::abs(w.startEnergy()));
     // Walls change momentum on purpose too: booked, so the drift is rounding.
-    QVERIFY(w.momentumDrift().norm() <= 1e-9 * w.balls().mass[0] * 1000.0);
+    VERIFY(w.momentumDrift().norm() <= 1e-9 * w.balls().mass[0] * 1000.0);
 }
 
 // A gas of balls with restitution 0.9 and no forces: collisions and walls
 // lose energy, all booked; momentum is changed only by the walls (booked).
-void TestAccounting::collisionLossesAreBooked()
+TEST_CASE("TestAccounting::collisionLossesAreBooked")
 {
     Scene s;
     s.settings.collisions = CollisionSettings{Detection::Sweep, Response::Impulse2D, 0.9, false};
     s.spawn.count = 200;
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     w.setAccounting(true);
     for (int k = 0; k < 600; ++k)
         w.step();
-    QVERIFY(w.totals().contacts > 100);
-    QVERIFY(w.bookedEnergy() < 0.0);
-    QVERIFY2(std::abs(w.energyDrift()) <= 1e-9 * w.startEnergy(),
-             qPrintable(QString("drift %1 of %2").arg(w.energyDrift()).arg(w.startEnergy())));
-    QVERIFY(w.momentumDrift().norm() <= 1e-9 * std::sqrt(2.0 * w.startEnergy() * w.balls().mass.sum()));
+    VERIFY(w.totals().contacts > 100);
+    VERIFY(w.bookedEnergy() < 0.0);
+    VERIFY2(std::abs(w.energyDrift()) <= 1e-9 * w.startEnergy(),
+             Text(Text("drift %1 of %2").arg(w.energyDrift()).arg(w.startEnergy())).c_str());
+    VERIFY(w.momentumDrift().norm() <= 1e-9 * std::sqrt(2.0 * w.startEnergy() * w.balls().mass.sum()));
 }
 
 // Turning gravity up between steps changes the potential energy at once:
 // that is the student's doing, booked, not the integrator's.
-void TestAccounting::editsBetweenStepsAreBooked()
+TEST_CASE("TestAccounting::editsBetweenStepsAreBooked")
 {
     Scene s = dragFall(IntegratorKind::Exact);
     s.settings.drag.enabled = false;
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     w.setAccounting(true);
     for (int k = 0; k < 10; ++k)
         w.step();
     WorldSettings edited = w.settings();
     edited.gravity.g = Vec2(0, 2000);
     const double before = w.energy().total();
-    QVERIFY(!w.setSettings(edited));
+    VERIFY(!w.setSettings(edited));
     const double jump = w.energy().total() - before;
-    QVERIFY(jump != 0.0);
+    VERIFY(jump != 0.0);
     for (int k = 0; k < 10; ++k)
         w.step();
-    QVERIFY(std::abs(w.bookedEnergy() - jump) <= 1e-9 * std::abs(jump));
-    QVERIFY(std::abs(w.energyDrift()) <= 1e-9 * kineticScale(w));
+    VERIFY(std::abs(w.bookedEnergy() - jump) <= 1e-9 * std::abs(jump));
+    VERIFY(std::abs(w.energyDrift()) <= 1e-9 * kineticScale(w));
 }
 
 // Off by default, and then the step pays for nothing: the same force
 // evaluations as without it.
-void TestAccounting::offCostsNothing()
+TEST_CASE("TestAccounting::offCostsNothing")
 {
     World plain, booked;
-    QVERIFY(!plain.reset(dragFall(IntegratorKind::Rk4)));
-    QVERIFY(!booked.reset(dragFall(IntegratorKind::Rk4)));
-    QVERIFY(!plain.accounting());
+    VERIFY(!plain.reset(dragFall(IntegratorKind::Rk4)));
+    VERIFY(!booked.reset(dragFall(IntegratorKind::Rk4)));
+    VERIFY(!plain.accounting());
     booked.setAccounting(true);
     for (int k = 0; k < 10; ++k) {
         plain.step();
         booked.step();
     }
-    QCOMPARE(plain.totals().forceEvaluations, std::int64_t(40));
-    QCOMPARE(booked.totals().forceEvaluations, std::int64_t(40)); // the books' evaluations are not the step's
-    QCOMPARE(plain.balls().position, booked.balls().position);    // and they change nothing
+    REQUIRE_SAME(plain.totals().forceEvaluations, std::int64_t(40));
+    REQUIRE_SAME(booked.totals().forceEvaluations, std::int64_t(40)); // the books' evaluations are not the step's
+    REQUIRE_SAME(plain.balls().position, booked.balls().position);    // and they change nothing
 }
 
-QTEST_APPLESS_MAIN(TestAccounting)
-#include "test_accounting.moc"

@@ -3,12 +3,17 @@
 
 #include "sim/claims.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <numbers>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab::sim;
 
@@ -42,68 +47,56 @@ Claim near(std::string measure, double value, double tolerance, double at = 10.0
 
 } // namespace
 
-class TestClaims : public QObject {
-    Q_OBJECT
-private slots:
-    void everyMeasureIsDocumented();
-    void apexAfterABounceIsESquaredTimesTheDrop();
-    void turnTimeOfAThrowIsVOverG();
-    void springPeriodIsTwoPiOverRootK();
-    void elasticCollisionKeepsMomentum();
-    void positionAtATime();
-    void boundsAndFailures();
-    void dragStopsTheWorldWhenKTimesDtPassesTwo();
-};
 
 // Each row has its line in docs/lessons.md's table, word for word.
-void TestClaims::everyMeasureIsDocumented()
+TEST_CASE("TestClaims::everyMeasureIsDocumented")
 {
     std::ifstream doc(FORCELAB_SOURCE_DIR "/docs/lessons.md");
-    QVERIFY(doc);
+    VERIFY(doc);
     const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
     for (const ClaimMeasure& m : claimMeasures()) {
-        QVERIFY(!m.name.empty() && !m.unit.empty() && m.doc.size() > 20);
-        QCOMPARE(findClaimMeasure(m.name), &m);
+        VERIFY(!m.name.empty() && !m.unit.empty() && m.doc.size() > 20);
+        REQUIRE_SAME(findClaimMeasure(m.name), &m);
         std::string row = "| `";
         row.append(m.name).append("` | ").append(m.unit).append(" | ").append(m.doc).append(" |");
-        QVERIFY2(text.find(row) != std::string::npos, ("docs/lessons.md lacks the row\n" + row).c_str());
+        VERIFY2(text.find(row) != std::string::npos, ("docs/lessons.md lacks the row\n" + row).c_str());
     }
-    QVERIFY(!findClaimMeasure("apogee"));
+    VERIFY(!findClaimMeasure("apogee"));
 }
 
 // h₁ = e² h₀: the speed at the floor is √(2 g h₀), e times that after the
 // bounce, and it rises (e v)²/(2g) = e² h₀. Apex n is e^(2n) h₀.
-void TestClaims::apexAfterABounceIsESquaredTimesTheDrop()
+TEST_CASE("TestClaims::apexAfterABounceIsESquaredTimesTheDrop")
 {
     for (const double e : {0.8, 0.5, 1.0}) {
         Claim c = near("apex", e * e * 300.0, 1e-6);
         const ClaimResult first = checkClaim(drop(e), c);
-        QVERIFY2(first.holds, first.explanation.c_str());
+        VERIFY2(first.holds, first.explanation.c_str());
         c.occurrence = 3;
         c.value = std::pow(e, 6) * 300.0;
         const ClaimResult third = checkClaim(drop(e), c);
-        QVERIFY2(third.holds, third.explanation.c_str());
+        VERIFY2(third.holds, third.explanation.c_str());
     }
 }
 
 // Thrown up at 600 px/s from the floor: it turns after v/g = 0.6 s, at
 // v²/(2g) = 180 px.
-void TestClaims::turnTimeOfAThrowIsVOverG()
+TEST_CASE("TestClaims::turnTimeOfAThrowIsVOverG")
 {
     Scene s = drop(1.0);
     s.balls[0].position.y() = 400 - 10;
     s.balls[0].velocity.y() = -600.0;
     const ClaimResult t = checkClaim(s, near("turn_time", 0.6, 1e-12, 2.0));
-    QVERIFY2(t.holds, t.explanation.c_str());
+    VERIFY2(t.holds, t.explanation.c_str());
     const ClaimResult h = checkClaim(s, near("max_height", 180.0, 1.0 / 60 * 600, 2.0)); // sampled once a step
-    QVERIFY2(h.holds, h.explanation.c_str());
+    VERIFY2(h.holds, h.explanation.c_str());
     const ClaimResult apex = checkClaim(s, near("apex", 180.0, 1e-9, 2.0)); // found between two steps
-    QVERIFY2(apex.holds, apex.explanation.c_str());
+    VERIFY2(apex.holds, apex.explanation.c_str());
 }
 
 // a = −k (x − anchor): a swing lasts T = 2π/√k; rk4 at dt = 1/600 s keeps
 // it to far better than 1e-6 over ten swings.
-void TestClaims::springPeriodIsTwoPiOverRootK()
+TEST_CASE("TestClaims::springPeriodIsTwoPiOverRootK")
 {
     for (const double k : {4.0, 25.0}) {
         Scene s = openScene({ballAt(400, 200)});
@@ -116,62 +109,62 @@ void TestClaims::springPeriodIsTwoPiOverRootK()
         c.axis = 'x';
         c.occurrence = 10;
         const ClaimResult r = checkClaim(s, c);
-        QVERIFY2(r.holds, r.explanation.c_str());
+        VERIFY2(r.holds, r.explanation.c_str());
     }
 }
 
 // Two balls meeting head on, elastic: Σ m v is kept to rounding.
-void TestClaims::elasticCollisionKeepsMomentum()
+TEST_CASE("TestClaims::elasticCollisionKeepsMomentum")
 {
     Scene s = openScene({ballAt(100, 200, 300, 0, 20), ballAt(400, 200, -100, 0, 10)});
     s.settings.collisions.response = Response::Impulse2D;
     Claim c = near("momentum_drift", 0.0, 1e-12, 3.0);
     ClaimResult r = checkClaim(s, c);
-    QVERIFY2(r.holds, r.explanation.c_str());
+    VERIFY2(r.holds, r.explanation.c_str());
     // And they did meet: the gap between their surfaces reached 0 (within a step's travel).
     c = near("min_gap", 0.0, 400.0 / 60, 3.0);
     r = checkClaim(s, c);
-    QVERIFY2(r.holds, r.explanation.c_str());
+    VERIFY2(r.holds, r.explanation.c_str());
 }
 
-void TestClaims::positionAtATime()
+TEST_CASE("TestClaims::positionAtATime")
 {
     // Free flight at 120 px/s: x = 100 + 120 t, at t = 1.5 s x = 280.
     Scene s = openScene({ballAt(100, 200, 120, 0)});
     Claim c = near("position", 280.0, 1e-9, 1.5);
     c.axis = 'x';
     const ClaimResult r = checkClaim(s, c);
-    QVERIFY2(r.holds, r.explanation.c_str());
+    VERIFY2(r.holds, r.explanation.c_str());
 }
 
-void TestClaims::boundsAndFailures()
+TEST_CASE("TestClaims::boundsAndFailures")
 {
     // A wrong number fails and says what was measured.
     ClaimResult r = checkClaim(drop(0.8), near("apex", 250.0, 1.0));
-    QVERIFY(!r.holds);
-    QVERIFY2(r.explanation.starts_with("measured 192 px, stated 250 px ± 1 px"), r.explanation.c_str());
+    VERIFY(!r.holds);
+    VERIFY2(r.explanation.starts_with("measured 192 px, stated 250 px ± 1 px"), r.explanation.c_str());
     // Bounds.
     Claim below = near("apex", 200.0, 0.0);
     below.test = ClaimTest::Below;
-    QVERIFY(checkClaim(drop(0.8), below).holds);
+    VERIFY(checkClaim(drop(0.8), below).holds);
     below.test = ClaimTest::Above;
-    QVERIFY(!checkClaim(drop(0.8), below).holds);
+    VERIFY(!checkClaim(drop(0.8), below).holds);
     // An event that does not come before `at` cannot be measured.
     r = checkClaim(drop(0.8), near("apex", 192.0, 1.0, 0.5));
-    QVERIFY(!r.holds && std::isnan(r.measured));
-    QVERIFY2(r.explanation.find("did not happen before t = 0.5 s") != std::string::npos, r.explanation.c_str());
+    VERIFY(!r.holds && std::isnan(r.measured));
+    VERIFY2(r.explanation.find("did not happen before t = 0.5 s") != std::string::npos, r.explanation.c_str());
     // A ball that is not there.
     Claim missing = near("speed", 0.0, 1.0);
     missing.ball = 3;
     r = checkClaim(drop(0.8), missing);
-    QVERIFY(!r.holds);
-    QVERIFY2(r.explanation == "the scene has 1 ball, so there is no ball 3", r.explanation.c_str());
-    QVERIFY(!checkClaim(drop(0.8), near("apogee", 0.0, 1.0)).holds);
+    VERIFY(!r.holds);
+    VERIFY2(r.explanation == "the scene has 1 ball, so there is no ball 3", r.explanation.c_str());
+    VERIFY(!checkClaim(drop(0.8), near("apogee", 0.0, 1.0)).holds);
 }
 
 // Linear drag with one Euler step: v ← v (1 − k dt). |1 − k dt| > 1 once
 // k dt > 2: the speed grows, and the world stops itself instead of running.
-void TestClaims::dragStopsTheWorldWhenKTimesDtPassesTwo()
+TEST_CASE("TestClaims::dragStopsTheWorldWhenKTimesDtPassesTwo")
 {
     Scene s = openScene({ballAt(300, 200, 100, 0)});
     s.settings.drag.enabled = true;
@@ -180,14 +173,12 @@ void TestClaims::dragStopsTheWorldWhenKTimesDtPassesTwo()
     for (const auto& [k, stops] : {std::pair{150.0, true}, std::pair{90.0, false}}) { // k dt = 2.5 and 1.5
         s.settings.drag.k = k;
         const ClaimResult r = checkClaim(s, c);
-        QVERIFY2(r.holds == stops, r.explanation.c_str());
+        VERIFY2(r.holds == stops, r.explanation.c_str());
     }
     // At k dt = 1.5 each step multiplies v by −0.5: after one step vx = −50 px/s.
     c = near("velocity", -50.0, 1e-12, 1.0 / 60);
     c.axis = 'x';
     const ClaimResult r = checkClaim(s, c);
-    QVERIFY2(r.holds, r.explanation.c_str());
+    VERIFY2(r.holds, r.explanation.c_str());
 }
 
-QTEST_APPLESS_MAIN(TestClaims)
-#include "test_claims.moc"

@@ -4,12 +4,17 @@
 
 #include "sim/collision/collision_system.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <random>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab::sim;
 
@@ -77,23 +82,23 @@ void checkAgreement(const BallState& balls, CollisionSystem& kept, const char* w
     CollisionSystem fresh;
     const CollisionStats refStats = fresh.detect(balls, Detection::Brute, reference);
     const auto n = static_cast<std::int64_t>(balls.size());
-    QCOMPARE(refStats.pairsTested, n * (n > 0 ? n - 1 : 0));
-    QCOMPARE(refStats.contacts, static_cast<std::int64_t>(reference.size()));
+    REQUIRE_SAME(refStats.pairsTested, n * (n > 0 ? n - 1 : 0));
+    REQUIRE_SAME(refStats.contacts, static_cast<std::int64_t>(reference.size()));
     if (checkDefinition) {
         const auto def = byDefinition(balls);
-        QVERIFY2(def == reference, (std::string(what) + ": brute vs definition: " + describe(def, reference)).c_str());
+        VERIFY2(def == reference, (std::string(what) + ": brute vs definition: " + describe(def, reference)).c_str());
     }
     for (Detection m : kMethods) {
         for (CollisionSystem* sys : {&fresh, &kept}) {
             std::vector<Contact> got;
             const CollisionStats st = sys->detect(balls, m, got);
-            QVERIFY2(got == reference, (std::string(what) + ": " + nameOf(m) + ": " + describe(reference, got)).c_str());
-            QCOMPARE(st.contacts, static_cast<std::int64_t>(got.size()));
-            QVERIFY(st.pairsTested >= st.contacts);
+            VERIFY2(got == reference, (std::string(what) + ": " + nameOf(m) + ": " + describe(reference, got)).c_str());
+            REQUIRE_SAME(st.contacts, static_cast<std::int64_t>(got.size()));
+            VERIFY(st.pairsTested >= st.contacts);
             if (m == Detection::Halved)
-                QCOMPARE(st.pairsTested, n * (n > 0 ? n - 1 : 0) / 2);
+                REQUIRE_SAME(st.pairsTested, n * (n > 0 ? n - 1 : 0) / 2);
             if (m == Detection::Sweep || m == Detection::Grid)
-                QVERIFY(st.pairsTested <= std::max<std::int64_t>(n * (n - 1) / 2, 0));
+                VERIFY(st.pairsTested <= std::max<std::int64_t>(n * (n - 1) / 2, 0));
         }
     }
 }
@@ -122,22 +127,8 @@ BallState randomScene(std::mt19937_64& rng, int n, double rMin, double ratio, do
 
 } // namespace
 
-class TestCollisionDetectors : public QObject {
-    Q_OBJECT
-private slots:
-    void emptyAndTiny();
-    void randomScenes();
-    void tenThousandBalls();
-    void mixedRadiiRatio100();
-    void exactlyTouching();
-    void cellBordersAndLattice();
-    void outsideWallsAndFarAway();
-    void onePointAndNonFinite();
-    void movingScenesKeepOrder();
-    void continuousDetectionAgrees();
-};
 
-void TestCollisionDetectors::emptyAndTiny()
+TEST_CASE("TestCollisionDetectors::emptyAndTiny")
 {
     CollisionSystem kept;
     checkAgreement(BallState{}, kept, "empty");
@@ -147,12 +138,12 @@ void TestCollisionDetectors::emptyAndTiny()
     std::vector<Contact> c;
     CollisionSystem sys;
     sys.detect(makeBalls({Vec2(0, 0), Vec2(5, 0)}, {3.0, 3.0}), Detection::Grid, c);
-    QCOMPARE(c.size(), std::size_t(1));
+    REQUIRE_SAME(c.size(), std::size_t(1));
     sys.detect(makeBalls({Vec2(0, 0), Vec2(6, 0)}, {3.0, 3.0}), Detection::Sweep, c);
-    QCOMPARE(c.size(), std::size_t(0)); // touching edges are not a contact
+    REQUIRE_SAME(c.size(), std::size_t(0)); // touching edges are not a contact
 }
 
-void TestCollisionDetectors::randomScenes()
+TEST_CASE("TestCollisionDetectors::randomScenes")
 {
     CollisionSystem kept;
     std::mt19937_64 rng(12345);
@@ -168,10 +159,10 @@ void TestCollisionDetectors::randomScenes()
             ++scenes;
         }
     }
-    QVERIFY(scenes > 200);
+    VERIFY(scenes > 200);
 }
 
-void TestCollisionDetectors::tenThousandBalls()
+TEST_CASE("TestCollisionDetectors::tenThousandBalls")
 {
     CollisionSystem kept;
     std::mt19937_64 rng(777);
@@ -179,7 +170,7 @@ void TestCollisionDetectors::tenThousandBalls()
     checkAgreement(randomScene(rng, 10000, 1.0, 100.0, 0.3), kept, "10k ratio 100", false);
 }
 
-void TestCollisionDetectors::mixedRadiiRatio100()
+TEST_CASE("TestCollisionDetectors::mixedRadiiRatio100")
 {
     CollisionSystem kept;
     std::mt19937_64 rng(99);
@@ -200,7 +191,7 @@ void TestCollisionDetectors::mixedRadiiRatio100()
 
 // Pairs whose distance equals the sum of radii exactly (3-4-5 triangles and
 // integer rows), and the same pairs one ulp closer or farther.
-void TestCollisionDetectors::exactlyTouching()
+TEST_CASE("TestCollisionDetectors::exactlyTouching")
 {
     CollisionSystem kept;
     std::vector<Vec2> p;
@@ -219,7 +210,7 @@ void TestCollisionDetectors::exactlyTouching()
     std::vector<Contact> c;
     for (Detection m : kMethods) {
         kept.detect(exact, m, c);
-        QVERIFY2(c.empty(), nameOf(m));
+        VERIFY2(c.empty(), nameOf(m));
     }
     checkAgreement(exact, kept, "exactly touching");
 
@@ -235,12 +226,12 @@ void TestCollisionDetectors::exactlyTouching()
     for (std::size_t i = 1; i < q.size(); i += 2)
         q[i].x() = std::nextafter(q[i].x(), -1e300);
     kept.detect(makeBalls(q, r), Detection::Grid, closer);
-    QVERIFY(!closer.empty());
+    VERIFY(!closer.empty());
 }
 
 // Balls centred on cell borders of the grid (cell = mean box size = 2r) and
 // on an exact lattice where every neighbour pair touches exactly.
-void TestCollisionDetectors::cellBordersAndLattice()
+TEST_CASE("TestCollisionDetectors::cellBordersAndLattice")
 {
     CollisionSystem kept;
     for (double spacing : {1.0, 2.0, 0.999999999999, 1.5}) {
@@ -267,7 +258,7 @@ void TestCollisionDetectors::cellBordersAndLattice()
     }
 }
 
-void TestCollisionDetectors::outsideWallsAndFarAway()
+TEST_CASE("TestCollisionDetectors::outsideWallsAndFarAway")
 {
     CollisionSystem kept;
     std::mt19937_64 rng(31);
@@ -294,7 +285,7 @@ void TestCollisionDetectors::outsideWallsAndFarAway()
     }
 }
 
-void TestCollisionDetectors::onePointAndNonFinite()
+TEST_CASE("TestCollisionDetectors::onePointAndNonFinite")
 {
     CollisionSystem kept;
     std::vector<Vec2> p(100, Vec2(300.0, 200.0));
@@ -302,19 +293,19 @@ void TestCollisionDetectors::onePointAndNonFinite()
     std::vector<Contact> c;
     checkAgreement(makeBalls(p, r), kept, "100 on one point");
     kept.detect(makeBalls(p, r), Detection::Grid, c);
-    QCOMPARE(c.size(), std::size_t(100 * 99 / 2));
+    REQUIRE_SAME(c.size(), std::size_t(100 * 99 / 2));
     // Broken balls take part in no pair, whatever the detector.
     p[3] = Vec2(std::numeric_limits<double>::quiet_NaN(), 200.0);
     p[7] = Vec2(std::numeric_limits<double>::infinity(), 200.0);
     p[8] = Vec2(300.0, -std::numeric_limits<double>::infinity());
     checkAgreement(makeBalls(p, r), kept, "with NaN and inf");
     kept.detect(makeBalls(p, r), Detection::Sweep, c);
-    QCOMPARE(c.size(), std::size_t(97 * 96 / 2));
+    REQUIRE_SAME(c.size(), std::size_t(97 * 96 / 2));
 }
 
 // The sweep keeps its order between calls: drift a scene for many steps
 // (small moves, then a big shuffle) and compare every step.
-void TestCollisionDetectors::movingScenesKeepOrder()
+TEST_CASE("TestCollisionDetectors::movingScenesKeepOrder")
 {
     std::mt19937_64 rng(2024);
     std::normal_distribution<double> g(0.0, 1.0);
@@ -328,7 +319,7 @@ void TestCollisionDetectors::movingScenesKeepOrder()
     }
 }
 
-void TestCollisionDetectors::continuousDetectionAgrees()
+TEST_CASE("TestCollisionDetectors::continuousDetectionAgrees")
 {
     std::mt19937_64 rng(77);
     std::normal_distribution<double> g(0.0, 1.0);
@@ -345,15 +336,13 @@ void TestCollisionDetectors::continuousDetectionAgrees()
         fresh.detectMoving(end, start, Detection::Brute, reference);
         std::vector<Contact> staticPairs;
         fresh.detect(end, Detection::Brute, staticPairs);
-        QVERIFY(reference.size() > staticPairs.size()); // paths that crossed add pairs
-        QVERIFY(std::includes(reference.begin(), reference.end(), staticPairs.begin(), staticPairs.end(),
+        VERIFY(reference.size() > staticPairs.size()); // paths that crossed add pairs
+        VERIFY(std::includes(reference.begin(), reference.end(), staticPairs.begin(), staticPairs.end(),
                               [](const Contact& x, const Contact& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); }));
         for (Detection m : kMethods) {
             kept.detectMoving(end, start, m, got);
-            QVERIFY2(got == reference, (std::string("continuous ") + nameOf(m) + ": " + describe(reference, got)).c_str());
+            VERIFY2(got == reference, (std::string("continuous ") + nameOf(m) + ": " + describe(reference, got)).c_str());
         }
     }
 }
 
-QTEST_APPLESS_MAIN(TestCollisionDetectors)
-#include "test_collision_detectors.moc"

@@ -10,12 +10,18 @@
 #include "sim/parameters.h"
 #include "sim/world.h"
 
-#include <QFile>
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
 #include <set>
 #include <string>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab::sim;
 using forcelab::test::anotherValue;
@@ -33,38 +39,29 @@ std::vector<double> allValues(const WorldSettings& s)
 
 } // namespace
 
-class TestParameters : public QObject {
-    Q_OBJECT
-private slots:
-    void keysAndControlsAreUnique();
-    void eachRowOwnsOneField();
-    void defaultsAreAllowed();
-    void validationFollowsTheRanges();
-    void referenceIsUpToDate();
-};
 
-void TestParameters::keysAndControlsAreUnique()
+TEST_CASE("TestParameters::keysAndControlsAreUnique")
 {
     std::set<std::string_view> keys, controls;
     for (const Parameter& p : parameters()) {
-        QVERIFY2(keys.insert(p.key).second, p.key.data());
-        QVERIFY2(p.control.empty() || controls.insert(p.control).second, p.control.data());
-        QVERIFY(findParameter(p.key) == &p);
-        QVERIFY(!p.label.empty() && !p.help.empty());
-        QVERIFY(p.get && p.set);
-        QCOMPARE(p.type == ParameterType::Choice, p.choices != nullptr);
+        VERIFY2(keys.insert(p.key).second, p.key.data());
+        VERIFY2(p.control.empty() || controls.insert(p.control).second, p.control.data());
+        VERIFY(findParameter(p.key) == &p);
+        VERIFY(!p.label.empty() && !p.help.empty());
+        VERIFY(p.get && p.set);
+        REQUIRE_SAME(p.type == ParameterType::Choice, p.choices != nullptr);
         if (p.type == ParameterType::Number || p.type == ParameterType::Integer) {
-            QVERIFY2(p.lo < p.hi && p.sliderLo < p.sliderHi, p.key.data());
-            QVERIFY2(p.sliderLo >= p.lo && p.sliderHi <= p.hi, p.key.data());
-            QVERIFY2(p.scale == SliderScale::Linear || p.sliderLo > 0.0, p.key.data());
+            VERIFY2(p.lo < p.hi && p.sliderLo < p.sliderHi, p.key.data());
+            VERIFY2(p.sliderLo >= p.lo && p.sliderHi <= p.hi, p.key.data());
+            VERIFY2(p.scale == SliderScale::Linear || p.sliderLo > 0.0, p.key.data());
         }
     }
-    qInfo("%zu parameters", parameters().size());
+    forcelab::test::report("%zu parameters", parameters().size());
 }
 
 // Writing one row changes that row and no other: no two rows share a field,
 // and no accessor writes somewhere else than it reads.
-void TestParameters::eachRowOwnsOneField()
+TEST_CASE("TestParameters::eachRowOwnsOneField")
 {
     const WorldSettings defaults;
     const std::vector<double> before = allValues(defaults);
@@ -72,30 +69,30 @@ void TestParameters::eachRowOwnsOneField()
         const Parameter& p = parameters()[i];
         WorldSettings s = defaults;
         const double v = anotherValue(p, before[i]);
-        QVERIFY2(!checkValue(p, v), p.key.data());
+        VERIFY2(!checkValue(p, v), p.key.data());
         p.set(s, v);
         const std::vector<double> after = allValues(s);
         for (std::size_t j = 0; j < after.size(); ++j) {
             const double expected = j == i ? v : before[j];
-            QVERIFY2(after[j] == expected, qPrintable(QString("writing %1 changed %2")
+            VERIFY2(after[j] == expected, Text(Text("writing %1 changed %2")
                                                           .arg(p.key.data())
-                                                          .arg(parameters()[j].key.data())));
+                                                          .arg(parameters()[j].key.data())).c_str());
         }
     }
 }
 
-void TestParameters::defaultsAreAllowed()
+TEST_CASE("TestParameters::defaultsAreAllowed")
 {
     for (const Parameter& p : parameters()) {
         const auto problem = checkValue(p, defaultValue(p));
-        QVERIFY2(!problem, qPrintable(QString("%1: %2").arg(p.key.data(), problem ? problem->c_str() : "")));
+        VERIFY2(!problem, Text(Text("%1: %2").arg(p.key.data(), problem ? problem->c_str() : "")).c_str());
     }
-    QVERIFY(!validateSettings(WorldSettings{}));
+    VERIFY(!validateSettings(WorldSettings{}));
 }
 
 // Just outside each end of a number's range the world refuses the settings
 // and names the row's key; at the end itself (when closed) it takes them.
-void TestParameters::validationFollowsTheRanges()
+TEST_CASE("TestParameters::validationFollowsTheRanges")
 {
     for (const Parameter& p : parameters()) {
         if (p.type != ParameterType::Number && p.type != ParameterType::Integer)
@@ -105,33 +102,30 @@ void TestParameters::validationFollowsTheRanges()
             WorldSettings s;
             p.set(s, end + outward * step);
             const auto refused = validateSettings(s);
-            QVERIFY2(refused && refused->keyPath == p.key,
-                     qPrintable(QString("%1 = %2: %3")
+            VERIFY2(refused && refused->keyPath == p.key,
+                     Text(Text("%1 = %2: %3")
                                     .arg(p.key.data())
                                     .arg(end + outward * step)
-                                    .arg(refused ? toString(*refused).c_str() : "accepted")));
+                                    .arg(refused ? toString(*refused).c_str() : "accepted")).c_str());
             WorldSettings t;
             p.set(t, end);
-            QCOMPARE(bool(validateSettings(t)), open);
+            REQUIRE_SAME(bool(validateSettings(t)), open);
         }
     }
 }
 
 // docs/parameters.md is what the table says today (regenerate it with
 // `forcelab-cli params > docs/parameters.md`).
-void TestParameters::referenceIsUpToDate()
+TEST_CASE("TestParameters::referenceIsUpToDate")
 {
-    QFile file(QStringLiteral(FORCELAB_SOURCE_DIR "/docs/parameters.md"));
-    QVERIFY2(file.open(QIODevice::ReadOnly), "docs/parameters.md is missing");
-    const QByteArray onDisk = file.readAll();
+    std::ifstream file(FORCELAB_SOURCE_DIR "/docs/parameters.md", std::ios::binary);
+    VERIFY2(file.good(), "docs/parameters.md is missing");
+    const std::string onDisk((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     const std::string generated = parameterReference();
-    QVERIFY2(onDisk == QByteArray::fromStdString(generated),
-             "docs/parameters.md is out of date: run forcelab-cli params > docs/parameters.md");
+    VERIFY2(onDisk == generated, "docs/parameters.md is out of date: run forcelab-cli params > docs/parameters.md");
     for (const Parameter& p : parameters()) {
         const std::string_view name = p.key.substr(p.key.rfind('.') + 1);
-        QVERIFY(onDisk.contains('`' + QByteArray(name.data(), static_cast<qsizetype>(name.size())) + '`'));
+        VERIFY(onDisk.find(std::string("`").append(name).append("`")) != std::string::npos);
     }
 }
 
-QTEST_APPLESS_MAIN(TestParameters)
-#include "test_parameters.moc"

@@ -4,9 +4,14 @@
 
 #include "sim/names.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab;
 using namespace forcelab::sim;
@@ -42,119 +47,152 @@ double apexHeight(const World& w)
 
 } // namespace
 
-class TestWalls : public QObject {
-    Q_OBJECT
-private slots:
-    void exactKeepsHeight_data();
-    void exactKeepsHeight();
-    void exactRestitutionApexes_data();
-    void exactRestitutionApexes();
-    void clampAndMirrorStayInside_data();
-    void clampAndMirrorStayInside();
-    void exactWallsKeepEnergyBounded_data();
-    void exactWallsKeepEnergyBounded();
-    void clampLosesHeight();
-    void wallsOffLetBallsLeave();
-    void reverseTrapsBallsThatStartOutside();
-    void middleWallKeepsSides();
-    void centreOnlyLetsBallsSinkIn();
-    void exactFastBallFoldsIntoTheBox_data();
-    void exactFastBallFoldsIntoTheBox();
-    void exactTinyHopKeepsHopping();
-    void exactRestingBallStaysPut_data();
-    void exactRestingBallStaysPut();
-    void exactBouncesSettleAtTheClosedFormTime();
+
+namespace {
+
+struct ExactKeepsHeightRow {
+    Text tag;
+    double dt;
 };
 
-void TestWalls::exactKeepsHeight_data()
+std::vector<ExactKeepsHeightRow> exactKeepsHeightRows()
 {
-    QTest::addColumn<double>("dt");
-    QTest::newRow("1/60") << 1.0 / 60;
-    QTest::newRow("1/30") << 1.0 / 30;
-    QTest::newRow("1/240") << 1.0 / 240;
+    std::vector<ExactKeepsHeightRow> rows;
+    rows.push_back({Text("1/60"), 1.0 / 60});
+    rows.push_back({Text("1/30"), 1.0 / 30});
+    rows.push_back({Text("1/240"), 1.0 / 240});
+    return rows;
 }
+
+} // namespace
+
 
 // e = 1 and exact walls: after 1000 bounces the ball still rises to its drop
 // height, within 1e-9 relative.
-void TestWalls::exactKeepsHeight()
+TEST_CASE("TestWalls::exactKeepsHeight")
 {
-    QFETCH(double, dt);
-    World w;
-    QVERIFY(!w.reset(dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, dt)));
-    const double h0 = apexHeight(w);
-    while (w.totals().wallHits < 1000)
-        w.step();
-    QCOMPARE(w.totals().wallHits, std::int64_t(1000));
-    const double rel = std::abs(apexHeight(w) - h0) / h0;
-    qInfo("dt %.4g: after 1000 bounces (t = %.1f s) relative height error %.3g", dt, w.time(), rel);
-    QVERIFY2(rel <= 1e-9, qPrintable(QString::number(rel)));
-    QVERIFY(w.balls().position(1, 0) <= kFloor);
-}
-
-void TestWalls::exactRestitutionApexes_data()
-{
-    exactKeepsHeight_data();
-}
-
-// e = 0.8: each bounce keeps 0.8 of the speed, so 0.64 of the height. The
-// apex after the k-th bounce is 0.64^k of the drop height, to 1e-12 of the drop
-// height, for the first 20 bounces.
-void TestWalls::exactRestitutionApexes()
-{
-    QFETCH(double, dt);
-    World w;
-    QVERIFY(!w.reset(dropScene(WallModel::Exact, 0.8, IntegratorKind::Exact, dt)));
-    const double h0 = apexHeight(w);
-    int checked = 0;
-    while (w.totals().wallHits < 20) {
-        w.step();
-        const auto k = w.totals().wallHits;
-        if (k == 0 || k > 20) // late bounces come many to a step (the ball is settling)
-            continue;
-        const double expected = h0 * std::pow(0.64, static_cast<double>(k));
-        const double err = std::abs(apexHeight(w) - expected) / h0;
-        QVERIFY2(err <= 1e-12, qPrintable(QString("bounce %1: error %2").arg(k).arg(err)));
-        ++checked;
-    }
-    QVERIFY(checked > 20);
-}
-
-void TestWalls::clampAndMirrorStayInside_data()
-{
-    QTest::addColumn<int>("model");
-    QTest::newRow("clamp") << int(WallModel::Clamp);
-    QTest::newRow("mirror") << int(WallModel::Mirror);
-    QTest::newRow("exact") << int(WallModel::Exact);
-}
-
-// A fast ball in a box never ends a step outside it, whichever model.
-void TestWalls::clampAndMirrorStayInside()
-{
-    QFETCH(int, model);
-    Scene s = dropScene(static_cast<WallModel>(model), 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
-    s.balls = {ballAt(300, 200, 5000, -3000, 10), ballAt(50, 50, -700, 900, 30)};
-    World w;
-    QVERIFY(!w.reset(s));
-    for (int k = 0; k < 2000; ++k) {
-        w.step();
-        for (int i = 0; i < 2; ++i) {
-            const double r = w.balls().radius[i];
-            const Vec2 p = w.balls().position.col(i);
-            QVERIFY2(p.x() >= r && p.x() <= 600 - r && p.y() >= r && p.y() <= 400 - r,
-                     qPrintable(QString("step %1 ball %2 at (%3, %4)").arg(k).arg(i).arg(p.x()).arg(p.y())));
+    for (const ExactKeepsHeightRow& row : exactKeepsHeightRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& dt = row.dt;
+            World w;
+            VERIFY(!w.reset(dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, dt)));
+            const double h0 = apexHeight(w);
+            while (w.totals().wallHits < 1000)
+                w.step();
+            REQUIRE_SAME(w.totals().wallHits, std::int64_t(1000));
+            const double rel = std::abs(apexHeight(w) - h0) / h0;
+            forcelab::test::report("dt %.4g: after 1000 bounces (t = %.1f s) relative height error %.3g", dt, w.time(), rel);
+            VERIFY2(rel <= 1e-9, Text(Text::number(rel)).c_str());
+            VERIFY(w.balls().position(1, 0) <= kFloor);
         }
     }
 }
 
-void TestWalls::exactWallsKeepEnergyBounded_data()
+namespace {
+
+// The same time steps as exactKeepsHeight.
+using ExactRestitutionApexesRow = ExactKeepsHeightRow;
+
+std::vector<ExactRestitutionApexesRow> exactRestitutionApexesRows()
 {
-    QTest::addColumn<int>("integrator");
-    QTest::newRow("euler") << int(IntegratorKind::Euler);
-    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler);
-    QTest::newRow("verlet") << int(IntegratorKind::Verlet);
-    QTest::newRow("rk4") << int(IntegratorKind::Rk4);
-    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4);
+    return exactKeepsHeightRows();
 }
+
+} // namespace
+
+
+// e = 0.8: each bounce keeps 0.8 of the speed, so 0.64 of the height. The
+// apex after the k-th bounce is 0.64^k of the drop height, to 1e-12 of the drop
+// height, for the first 20 bounces.
+TEST_CASE("TestWalls::exactRestitutionApexes")
+{
+    for (const ExactRestitutionApexesRow& row : exactRestitutionApexesRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& dt = row.dt;
+            World w;
+            VERIFY(!w.reset(dropScene(WallModel::Exact, 0.8, IntegratorKind::Exact, dt)));
+            const double h0 = apexHeight(w);
+            int checked = 0;
+            while (w.totals().wallHits < 20) {
+                w.step();
+                const auto k = w.totals().wallHits;
+                if (k == 0 || k > 20) // late bounces come many to a step (the ball is settling)
+                    continue;
+                const double expected = h0 * std::pow(0.64, static_cast<double>(k));
+                const double err = std::abs(apexHeight(w) - expected) / h0;
+                VERIFY2(err <= 1e-12, Text(Text("bounce %1: error %2").arg(k).arg(err)).c_str());
+                ++checked;
+            }
+            VERIFY(checked > 20);
+        }
+    }
+}
+
+namespace {
+
+struct ClampAndMirrorStayInsideRow {
+    Text tag;
+    int model;
+};
+
+std::vector<ClampAndMirrorStayInsideRow> clampAndMirrorStayInsideRows()
+{
+    std::vector<ClampAndMirrorStayInsideRow> rows;
+    rows.push_back({Text("clamp"), int(WallModel::Clamp)});
+    rows.push_back({Text("mirror"), int(WallModel::Mirror)});
+    rows.push_back({Text("exact"), int(WallModel::Exact)});
+    return rows;
+}
+
+} // namespace
+
+
+// A fast ball in a box never ends a step outside it, whichever model.
+TEST_CASE("TestWalls::clampAndMirrorStayInside")
+{
+    for (const ClampAndMirrorStayInsideRow& row : clampAndMirrorStayInsideRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& model = row.model;
+            Scene s = dropScene(static_cast<WallModel>(model), 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
+            s.balls = {ballAt(300, 200, 5000, -3000, 10), ballAt(50, 50, -700, 900, 30)};
+            World w;
+            VERIFY(!w.reset(s));
+            for (int k = 0; k < 2000; ++k) {
+                w.step();
+                for (int i = 0; i < 2; ++i) {
+                    const double r = w.balls().radius[i];
+                    const Vec2 p = w.balls().position.col(i);
+                    VERIFY2(p.x() >= r && p.x() <= 600 - r && p.y() >= r && p.y() <= 400 - r,
+                             Text(Text("step %1 ball %2 at (%3, %4)").arg(k).arg(i).arg(p.x()).arg(p.y())).c_str());
+                }
+            }
+        }
+    }
+}
+
+namespace {
+
+struct ExactWallsKeepEnergyBoundedRow {
+    Text tag;
+    int integrator;
+};
+
+std::vector<ExactWallsKeepEnergyBoundedRow> exactWallsKeepEnergyBoundedRows()
+{
+    std::vector<ExactWallsKeepEnergyBoundedRow> rows;
+    rows.push_back({Text("euler"), int(IntegratorKind::Euler)});
+    rows.push_back({Text("semi-implicit-euler"), int(IntegratorKind::SemiImplicitEuler)});
+    rows.push_back({Text("verlet"), int(IntegratorKind::Verlet)});
+    rows.push_back({Text("rk4"), int(IntegratorKind::Rk4)});
+    rows.push_back({Text("yoshida4"), int(IntegratorKind::Yoshida4)});
+    return rows;
+}
+
+} // namespace
+
 
 // Exact walls with every integrator: the bounce happens on the path the
 // integrator itself took through the step (a straight drift for the two
@@ -164,36 +202,41 @@ void TestWalls::exactWallsKeepEnergyBounded_data()
 // follow gravity's parabola exactly (1e-12); the Euler methods carry their own
 // first-order error, an energy that swings by about g h v per step: h v / H ≈
 // 4% of the drop height here, which does not grow.
-void TestWalls::exactWallsKeepEnergyBounded()
+TEST_CASE("TestWalls::exactWallsKeepEnergyBounded")
 {
-    QFETCH(int, integrator);
-    World w;
-    QVERIFY(!w.reset(dropScene(WallModel::Exact, 1.0, static_cast<IntegratorKind>(integrator), 1.0 / 60)));
-    const double h0 = apexHeight(w);
-    double first = 0, all = 0;
-    while (w.totals().wallHits < 400) {
-        w.step();
-        const double err = std::abs(apexHeight(w) - h0) / h0;
-        if (w.totals().wallHits <= 20)
-            first = std::max(first, err);
-        all = std::max(all, err);
+    for (const ExactWallsKeepEnergyBoundedRow& row : exactWallsKeepEnergyBoundedRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& integrator = row.integrator;
+            World w;
+            VERIFY(!w.reset(dropScene(WallModel::Exact, 1.0, static_cast<IntegratorKind>(integrator), 1.0 / 60)));
+            const double h0 = apexHeight(w);
+            double first = 0, all = 0;
+            while (w.totals().wallHits < 400) {
+                w.step();
+                const double err = std::abs(apexHeight(w) - h0) / h0;
+                if (w.totals().wallHits <= 20)
+                    first = std::max(first, err);
+                all = std::max(all, err);
+            }
+            forcelab::test::report("%s: largest height error over 20 bounces %.3g, over 400 bounces %.3g", row.tag.c_str(), first,
+                  all);
+            const bool firstOrder = integrator == int(IntegratorKind::Euler) ||
+                                    integrator == int(IntegratorKind::SemiImplicitEuler);
+            VERIFY2(all <= (firstOrder ? 0.05 : 1e-12), Text(Text::number(all)).c_str());
+            VERIFY2(all <= 1.5 * first + 1e-12, Text(Text("%1 vs %2").arg(all).arg(first)).c_str());
+        }
     }
-    qInfo("%s: largest height error over 20 bounces %.3g, over 400 bounces %.3g", QTest::currentDataTag(), first,
-          all);
-    const bool firstOrder = integrator == int(IntegratorKind::Euler) ||
-                            integrator == int(IntegratorKind::SemiImplicitEuler);
-    QVERIFY2(all <= (firstOrder ? 0.05 : 1e-12), qPrintable(QString::number(all)));
-    QVERIFY2(all <= 1.5 * first + 1e-12, qPrintable(QString("%1 vs %2").arg(all).arg(first)));
 }
 
 // The clamp model forgets the overshoot, and the bounce starts from the floor
 // with the speed of the end of the step: the ball does not come back to its
 // drop height (the point of curriculum stage 9).
-void TestWalls::clampLosesHeight()
+TEST_CASE("TestWalls::clampLosesHeight")
 {
     World clamp, exact;
-    QVERIFY(!clamp.reset(dropScene(WallModel::Clamp, 1.0, IntegratorKind::Exact, 1.0 / 60)));
-    QVERIFY(!exact.reset(dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, 1.0 / 60)));
+    VERIFY(!clamp.reset(dropScene(WallModel::Clamp, 1.0, IntegratorKind::Exact, 1.0 / 60)));
+    VERIFY(!exact.reset(dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, 1.0 / 60)));
     const double h0 = apexHeight(clamp);
     while (clamp.totals().wallHits < 10)
         clamp.step();
@@ -201,34 +244,34 @@ void TestWalls::clampLosesHeight()
         exact.step();
     const double clampErr = std::abs(apexHeight(clamp) - h0) / h0;
     const double exactErr = std::abs(apexHeight(exact) - h0) / h0;
-    qInfo("after 10 bounces: clamp height error %.3g, exact %.3g", clampErr, exactErr);
-    QVERIFY(clampErr > 1e-3);
-    QVERIFY(exactErr < 1e-12);
+    forcelab::test::report("after 10 bounces: clamp height error %.3g, exact %.3g", clampErr, exactErr);
+    VERIFY(clampErr > 1e-3);
+    VERIFY(exactErr < 1e-12);
 }
 
-void TestWalls::wallsOffLetBallsLeave()
+TEST_CASE("TestWalls::wallsOffLetBallsLeave")
 {
     Scene s = dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, 1.0 / 60);
     s.settings.walls.bottom = false;
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     for (int k = 0; k < 120; ++k)
         w.step();
-    QCOMPARE(w.totals().wallHits, std::int64_t(0));
-    QVERIFY(w.balls().position(1, 0) > 400.0);
+    REQUIRE_SAME(w.totals().wallHits, std::int64_t(0));
+    VERIFY(w.balls().position(1, 0) > 400.0);
 }
 
 // The naive wall flips the velocity whenever the ball is past the wall. A
 // ball that starts half outside, moving slowly, flips every step and never
 // gets free; clamp puts it back and it leaves.
-void TestWalls::reverseTrapsBallsThatStartOutside()
+TEST_CASE("TestWalls::reverseTrapsBallsThatStartOutside")
 {
     for (WallModel model : {WallModel::Reverse, WallModel::Clamp}) {
         Scene s = dropScene(model, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
         s.settings.gravity.enabled = false;
         s.balls = {ballAt(595, 200, 60, 0, 20)}; // centre 15 px beyond its allowed 580
         World w;
-        QVERIFY(!w.reset(s));
+        VERIFY(!w.reset(s));
         int flips = 0;
         double previous = w.balls().velocity(0, 0);
         for (int k = 0; k < 120; ++k) {
@@ -238,33 +281,33 @@ void TestWalls::reverseTrapsBallsThatStartOutside()
         }
         const double x = w.balls().position(0, 0);
         if (model == WallModel::Reverse) {
-            QVERIFY2(x > 580 && x < 600, qPrintable(QString::number(x))); // still stuck in the wall
-            QVERIFY(flips >= 100);                                         // jittering: a flip nearly every step
+            VERIFY2(x > 580 && x < 600, Text(Text::number(x)).c_str()); // still stuck in the wall
+            VERIFY(flips >= 100);                                         // jittering: a flip nearly every step
         } else {
-            QVERIFY2(x < 500, qPrintable(QString::number(x))); // bounced off and travelled away
-            QCOMPARE(flips, 1);
+            VERIFY2(x < 500, Text(Text::number(x)).c_str()); // bounced off and travelled away
+            REQUIRE_SAME(flips, 1);
         }
     }
 }
 
-void TestWalls::middleWallKeepsSides()
+TEST_CASE("TestWalls::middleWallKeepsSides")
 {
     Scene s = dropScene(WallModel::Clamp, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
     s.settings.gravity.enabled = false;
     s.settings.walls.middle = true;
     s.balls = {ballAt(100, 100, 400, 0, 10), ballAt(500, 300, -400, 0, 10)};
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     for (int k = 0; k < 600; ++k) {
         w.step();
-        QVERIFY(w.balls().position(0, 0) <= 290.0);
-        QVERIFY(w.balls().position(0, 1) >= 310.0);
+        VERIFY(w.balls().position(0, 0) <= 290.0);
+        VERIFY(w.balls().position(0, 1) >= 310.0);
     }
-    QVERIFY(w.totals().wallHits > 10);
+    VERIFY(w.totals().wallHits > 10);
 }
 
 // Testing the centre instead of the edge lets a ball sink in by its radius.
-void TestWalls::centreOnlyLetsBallsSinkIn()
+TEST_CASE("TestWalls::centreOnlyLetsBallsSinkIn")
 {
     for (bool centreOnly : {true, false}) {
         Scene s = dropScene(WallModel::Clamp, 1.0, IntegratorKind::SemiImplicitEuler, 1.0 / 60);
@@ -272,13 +315,13 @@ void TestWalls::centreOnlyLetsBallsSinkIn()
         s.settings.walls.centreOnly = centreOnly;
         s.balls = {ballAt(300, 200, 300, 0, 40)};
         World w;
-        QVERIFY(!w.reset(s));
+        VERIFY(!w.reset(s));
         double furthest = 0;
         for (int k = 0; k < 300; ++k) {
             w.step();
             furthest = std::max(furthest, w.balls().position(0, 0));
         }
-        QCOMPARE(furthest, centreOnly ? 600.0 : 560.0);
+        REQUIRE_SAME(furthest, centreOnly ? 600.0 : 560.0);
     }
 }
 
@@ -304,51 +347,67 @@ Folded foldIntoBox(double p0, double u, double t, double lo, double hi)
     return f;
 }
 
-void TestWalls::exactFastBallFoldsIntoTheBox_data()
+namespace {
+
+struct ExactFastBallFoldsIntoTheBoxRow {
+    Text tag;
+    double vx;
+    double vy;
+};
+
+std::vector<ExactFastBallFoldsIntoTheBoxRow> exactFastBallFoldsIntoTheBoxRows()
 {
-    QTest::addColumn<double>("vx");
-    QTest::addColumn<double>("vy");
-    QTest::newRow("1e5 along x (the issue's case)") << 1e5 << 0.0;
-    QTest::newRow("corner 1e5, 7e4") << 1e5 << 7e4;
-    QTest::newRow("corner -3e5, -2.5e5") << -3e5 << -2.5e5;
-    QTest::newRow("corner 1e9, -1.2345e8") << 1e9 << -1.2345e8;
+    std::vector<ExactFastBallFoldsIntoTheBoxRow> rows;
+    rows.push_back({Text("1e5 along x (the issue's case)"), 1e5, 0.0});
+    rows.push_back({Text("corner 1e5, 7e4"), 1e5, 7e4});
+    rows.push_back({Text("corner -3e5, -2.5e5"), -3e5, -2.5e5});
+    rows.push_back({Text("corner 1e9, -1.2345e8"), 1e9, -1.2345e8});
+    return rows;
 }
+
+} // namespace
+
 
 // e = 1, no forces, exact walls: a ball fast enough to cross the box several
 // times in one step ends where the unfolded straight line puts it, with its
 // speed unchanged. Before the fix the exact model found the wall the ball
 // had just left at t = 0, "bounced" 16 times in no time and stopped the ball
 // dead (vx = 1e5 ended at x = 580 with vx = 0, kinetic energy ÷ 5e5).
-void TestWalls::exactFastBallFoldsIntoTheBox()
+TEST_CASE("TestWalls::exactFastBallFoldsIntoTheBox")
 {
-    QFETCH(double, vx);
-    QFETCH(double, vy);
-    for (IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Exact}) {
-        Scene s = dropScene(WallModel::Exact, 1.0, kind, 1.0 / 60);
-        s.settings.gravity.enabled = false;
-        s.balls = {ballAt(120, 60, vx, vy, 20)};
-        World w;
-        QVERIFY(!w.reset(s));
-        const int steps = 3;
-        for (int k = 0; k < steps; ++k)
-            w.step();
-        const double t = steps / 60.0;
-        const Folded fx = foldIntoBox(120, vx, t, 20, 580);
-        const Folded fy = foldIntoBox(60, vy, t, 20, 380);
-        const Vec2 p = w.balls().position.col(0), v = w.balls().velocity.col(0);
-        // Rounding of the bounce times grows with the number of bounces: 1e-12
-        // of the distance travelled.
-        const double tol = 1e-12 * std::max(std::abs(vx), std::abs(vy)) * t + 1e-9;
-        QVERIFY2(std::abs(p.x() - fx.position) <= tol && std::abs(p.y() - fy.position) <= tol,
-                 qPrintable(QString("%1: (%2, %3) expected (%4, %5)")
-                                .arg(toString(kind).data())
-                                .arg(p.x(), 0, 'g', 17)
-                                .arg(p.y(), 0, 'g', 17)
-                                .arg(fx.position, 0, 'g', 17)
-                                .arg(fy.position, 0, 'g', 17)));
-        QCOMPARE(v.x(), fx.velocity);
-        QCOMPARE(v.y(), fy.velocity);
-        QCOMPARE(w.totals().wallHits, fx.hits + fy.hits);
+    for (const ExactFastBallFoldsIntoTheBoxRow& row : exactFastBallFoldsIntoTheBoxRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& vx = row.vx;
+            const auto& vy = row.vy;
+            for (IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Exact}) {
+                Scene s = dropScene(WallModel::Exact, 1.0, kind, 1.0 / 60);
+                s.settings.gravity.enabled = false;
+                s.balls = {ballAt(120, 60, vx, vy, 20)};
+                World w;
+                VERIFY(!w.reset(s));
+                const int steps = 3;
+                for (int k = 0; k < steps; ++k)
+                    w.step();
+                const double t = steps / 60.0;
+                const Folded fx = foldIntoBox(120, vx, t, 20, 580);
+                const Folded fy = foldIntoBox(60, vy, t, 20, 380);
+                const Vec2 p = w.balls().position.col(0), v = w.balls().velocity.col(0);
+                // Rounding of the bounce times grows with the number of bounces: 1e-12
+                // of the distance travelled.
+                const double tol = 1e-12 * std::max(std::abs(vx), std::abs(vy)) * t + 1e-9;
+                VERIFY2(std::abs(p.x() - fx.position) <= tol && std::abs(p.y() - fy.position) <= tol,
+                         Text(Text("%1: (%2, %3) expected (%4, %5)")
+                                        .arg(toString(kind).data())
+                                        .arg(p.x(), 0, 'g', 17)
+                                        .arg(p.y(), 0, 'g', 17)
+                                        .arg(fx.position, 0, 'g', 17)
+                                        .arg(fy.position, 0, 'g', 17)).c_str());
+                REQUIRE_SAME(v.x(), fx.velocity);
+                REQUIRE_SAME(v.y(), fy.velocity);
+                REQUIRE_SAME(w.totals().wallHits, fx.hits + fy.hits);
+            }
+        }
     }
 }
 
@@ -356,13 +415,13 @@ void TestWalls::exactFastBallFoldsIntoTheBox()
 // at √(2 g 0.01) = 4.43 px/s and keeps hopping 0.01 px high (a hop lasts
 // 9.0 ms, so about two a step). Before the fix the second bounce of a step
 // found the floor again at t = 0 and the ball was stopped.
-void TestWalls::exactTinyHopKeepsHopping()
+TEST_CASE("TestWalls::exactTinyHopKeepsHopping")
 {
     constexpr double hop = 0.01; // px
     Scene s = dropScene(WallModel::Exact, 1.0, IntegratorKind::Exact, 1.0 / 60);
     s.balls = {ballAt(300, kFloor - hop)};
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     double worst = 0;
     for (int k = 0; k < 600; ++k) {
         w.step();
@@ -370,39 +429,55 @@ void TestWalls::exactTinyHopKeepsHopping()
     }
     const double period = 2.0 * std::sqrt(2.0 * hop / kG); // s, one hop
     const double expectedHits = std::floor((10.0 - 0.5 * period) / period) + 1;
-    qInfo("after 10 s: %lld bounces (closed form %.0f), worst apex error %.3g px",
+    forcelab::test::report("after 10 s: %lld bounces (closed form %.0f), worst apex error %.3g px",
           static_cast<long long>(w.totals().wallHits), expectedHits, worst);
-    QVERIFY2(worst <= 1e-9, qPrintable(QString::number(worst)));
-    QVERIFY(std::abs(static_cast<double>(w.totals().wallHits) - expectedHits) <= 1.0);
+    VERIFY2(worst <= 1e-9, Text(Text::number(worst)).c_str());
+    VERIFY(std::abs(static_cast<double>(w.totals().wallHits) - expectedHits) <= 1.0);
 }
 
-void TestWalls::exactRestingBallStaysPut_data()
+namespace {
+
+struct ExactRestingBallStaysPutRow {
+    Text tag;
+    int integrator;
+    double restitution;
+};
+
+std::vector<ExactRestingBallStaysPutRow> exactRestingBallStaysPutRows()
 {
-    QTest::addColumn<int>("integrator");
-    QTest::addColumn<double>("restitution");
+    std::vector<ExactRestingBallStaysPutRow> rows;
     for (IntegratorKind kind : {IntegratorKind::Verlet, IntegratorKind::Rk4, IntegratorKind::Yoshida4,
                                 IntegratorKind::Exact, IntegratorKind::Rk45, IntegratorKind::Ias15}) {
         for (double e : {1.0, 0.5, 0.0})
-            QTest::addRow("%s e=%g", toString(kind).data(), e) << int(kind) << e;
+            rows.push_back({forcelab::test::format_row("%s e=%g", toString(kind).data(), e), int(kind), e});
     }
+    return rows;
 }
+
+} // namespace
+
 
 // A ball resting on the floor touches it with no speed: that is not a bounce.
 // It stays exactly where it is, with no vertical speed and no wall hits
 // (before the fix: 16 "hits" a step).
-void TestWalls::exactRestingBallStaysPut()
+TEST_CASE("TestWalls::exactRestingBallStaysPut")
 {
-    QFETCH(int, integrator);
-    QFETCH(double, restitution);
-    Scene s = dropScene(WallModel::Exact, restitution, static_cast<IntegratorKind>(integrator), 1.0 / 60);
-    s.balls = {ballAt(300, kFloor)};
-    World w;
-    QVERIFY(!w.reset(s));
-    for (int k = 0; k < 600; ++k)
-        w.step();
-    QCOMPARE(w.balls().position(1, 0), kFloor);
-    QCOMPARE(w.balls().velocity(1, 0), 0.0);
-    QCOMPARE(w.totals().wallHits, std::int64_t(0));
+    for (const ExactRestingBallStaysPutRow& row : exactRestingBallStaysPutRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& integrator = row.integrator;
+            const auto& restitution = row.restitution;
+            Scene s = dropScene(WallModel::Exact, restitution, static_cast<IntegratorKind>(integrator), 1.0 / 60);
+            s.balls = {ballAt(300, kFloor)};
+            World w;
+            VERIFY(!w.reset(s));
+            for (int k = 0; k < 600; ++k)
+                w.step();
+            REQUIRE_SAME(w.balls().position(1, 0), kFloor);
+            REQUIRE_SAME(w.balls().velocity(1, 0), 0.0);
+            REQUIRE_SAME(w.totals().wallHits, std::int64_t(0));
+        }
+    }
 }
 
 // e = 0.8, dropped from H = 290 px: the k-th bounce's apex is e^(2k) H, and
@@ -411,12 +486,12 @@ void TestWalls::exactRestingBallStaysPut()
 // Every step until then keeps the apex law to 1e-12 H; from the first step
 // after t∞ the ball lies still on the floor. Before the fix the sequence
 // ended after bounce 22 (16 bounces in one step stopped the ball).
-void TestWalls::exactBouncesSettleAtTheClosedFormTime()
+TEST_CASE("TestWalls::exactBouncesSettleAtTheClosedFormTime")
 {
     constexpr double e = 0.8;
     const double dt = 1.0 / 60;
     World w;
-    QVERIFY(!w.reset(dropScene(WallModel::Exact, e, IntegratorKind::Exact, dt)));
+    VERIFY(!w.reset(dropScene(WallModel::Exact, e, IntegratorKind::Exact, dt)));
     const double H = apexHeight(w);
     const double t0 = std::sqrt(2.0 * H / kG);
     const double tRest = t0 * (1.0 + e) / (1.0 - e);
@@ -425,21 +500,19 @@ void TestWalls::exactBouncesSettleAtTheClosedFormTime()
         w.step();
         const double k = static_cast<double>(w.totals().wallHits);
         worst = std::max(worst, std::abs(apexHeight(w) - H * std::pow(e, 2.0 * k)) / H);
-        QVERIFY2(w.time() >= tRest - dt || w.balls().velocity(1, 0) != 0.0,
-                 qPrintable(QString("at rest too early, t = %1").arg(w.time())));
+        VERIFY2(w.time() >= tRest - dt || w.balls().velocity(1, 0) != 0.0,
+                 Text(Text("at rest too early, t = %1").arg(w.time())).c_str());
     }
     const std::int64_t bounces = w.totals().wallHits;
     w.step(); // the step that contains t∞
-    QCOMPARE(w.balls().position(1, 0), kFloor);
-    QCOMPARE(w.balls().velocity(1, 0), 0.0);
+    REQUIRE_SAME(w.balls().position(1, 0), kFloor);
+    REQUIRE_SAME(w.balls().velocity(1, 0), 0.0);
     for (int k = 0; k < 60; ++k)
         w.step();
-    QCOMPARE(w.balls().position(1, 0), kFloor);
-    qInfo("t_rest = %.6f s; %lld bounces followed one by one; worst apex error %.3g H", tRest,
+    REQUIRE_SAME(w.balls().position(1, 0), kFloor);
+    forcelab::test::report("t_rest = %.6f s; %lld bounces followed one by one; worst apex error %.3g H", tRest,
           static_cast<long long>(w.totals().wallHits), worst);
-    QVERIFY2(worst <= 1e-12, qPrintable(QString::number(worst)));
-    QVERIFY(bounces > 22);
+    VERIFY2(worst <= 1e-12, Text(Text::number(worst)).c_str());
+    VERIFY(bounces > 22);
 }
 
-QTEST_APPLESS_MAIN(TestWalls)
-#include "test_walls.moc"

@@ -9,10 +9,15 @@
 #include "sim/work_precision.h"
 #include "sim/world.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <atomic>
 #include <cmath>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab;
 using namespace forcelab::sim;
@@ -33,47 +38,52 @@ Scene springScene()
 
 } // namespace
 
-class TestWorkPrecision : public QObject {
-    Q_OBJECT
-private slots:
-    void fittedOrdersMatchTheory_data();
-    void fittedOrdersMatchTheory();
-    void referenceAgainstItselfHasNoError();
-    void errorsAndCostsAreFilledIn();
-    void cancelStopsEarly();
-    void durationMustBeWholeSteps();
-    void fittedOrderOfAPowerLaw();
+
+namespace {
+
+struct FittedOrdersMatchTheoryRow {
+    Text tag;
+    int kind;
+    double dt;
 };
 
-void TestWorkPrecision::fittedOrdersMatchTheory_data()
+std::vector<FittedOrdersMatchTheoryRow> fittedOrdersMatchTheoryRows()
 {
-    QTest::addColumn<int>("kind");
-    QTest::addColumn<double>("dt");
+    std::vector<FittedOrdersMatchTheoryRow> rows;
     // Each method at steps where its error is well above rounding and well
     // below the size of the motion (the asymptotic range of error ≈ C dtᵖ).
-    QTest::newRow("euler") << int(IntegratorKind::Euler) << 1.0 / 1024;
-    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << 1.0 / 512;
-    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 1.0 / 64;
-    QTest::newRow("rk4") << int(IntegratorKind::Rk4) << 1.0 / 16;
-    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << 1.0 / 16;
+    rows.push_back({Text("euler"), int(IntegratorKind::Euler), 1.0 / 1024});
+    rows.push_back({Text("semi-implicit-euler"), int(IntegratorKind::SemiImplicitEuler), 1.0 / 512});
+    rows.push_back({Text("verlet"), int(IntegratorKind::Verlet), 1.0 / 64});
+    rows.push_back({Text("rk4"), int(IntegratorKind::Rk4), 1.0 / 16});
+    rows.push_back({Text("yoshida4"), int(IntegratorKind::Yoshida4), 1.0 / 16});
+    return rows;
 }
 
-void TestWorkPrecision::fittedOrdersMatchTheory()
+} // namespace
+
+
+TEST_CASE("TestWorkPrecision::fittedOrdersMatchTheory")
 {
-    QFETCH(int, kind);
-    QFETCH(double, dt);
-    const auto integrator = static_cast<IntegratorKind>(kind);
-    const ConvergenceResult c = measureConvergence(springScene(), integrator, dt, 2.0);
-    QVERIFY2(!c.study.error, c.study.error.value_or("").c_str());
-    QCOMPARE(c.study.runs.size(), std::size_t(4));
-    for (const PrecisionRun& r : c.study.runs)
-        qInfo("%s dt=%g error=%.3e px", std::string(toString(integrator)).c_str(), r.dt, r.positionError);
-    const double expected = theoreticalOrder(integrator);
-    QVERIFY2(std::abs(c.order - expected) <= 0.15,
-             qPrintable(QStringLiteral("fitted %1, theory %2").arg(c.order).arg(expected)));
+    for (const FittedOrdersMatchTheoryRow& row : fittedOrdersMatchTheoryRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& kind = row.kind;
+            const auto& dt = row.dt;
+            const auto integrator = static_cast<IntegratorKind>(kind);
+            const ConvergenceResult c = measureConvergence(springScene(), integrator, dt, 2.0);
+            VERIFY2(!c.study.error, c.study.error.value_or("").c_str());
+            REQUIRE_SAME(c.study.runs.size(), std::size_t(4));
+            for (const PrecisionRun& r : c.study.runs)
+                forcelab::test::report("%s dt=%g error=%.3e px", std::string(toString(integrator)).c_str(), r.dt, r.positionError);
+            const double expected = theoreticalOrder(integrator);
+            VERIFY2(std::abs(c.order - expected) <= 0.15,
+                     Text(Text("fitted %1, theory %2").arg(c.order).arg(expected)).c_str());
+        }
+    }
 }
 
-void TestWorkPrecision::referenceAgainstItselfHasNoError()
+TEST_CASE("TestWorkPrecision::referenceAgainstItselfHasNoError")
 {
     Scene s = springScene();
     WorkPrecisionSettings settings;
@@ -82,22 +92,22 @@ void TestWorkPrecision::referenceAgainstItselfHasNoError()
     settings.integrators = {IntegratorKind::Ias15};
     s.settings.time.tolerance = settings.referenceTolerance; // the very same run as the reference
     const WorkPrecisionResult r = measureWorkPrecision(s, settings);
-    QVERIFY(!r.error);
-    QCOMPARE(r.runs.size(), std::size_t(1));
-    QVERIFY2(r.runs[0].positionError < 1e-9, qPrintable(QString::number(r.runs[0].positionError)));
-    QVERIFY(r.runs[0].energyError < 1e-12);
+    VERIFY(!r.error);
+    REQUIRE_SAME(r.runs.size(), std::size_t(1));
+    VERIFY2(r.runs[0].positionError < 1e-9, Text(Text::number(r.runs[0].positionError)).c_str());
+    VERIFY(r.runs[0].energyError < 1e-12);
     // And the reference is close to the closed form x = A cos ωt, y = (v₀/ω) sin ωt.
     World w;
     s.settings.time.integrator = IntegratorKind::Ias15;
     s.settings.time.dt = 1.0 / 64;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     for (int k = 0; k < 128; ++k)
         w.step();
     const Vec2 exact = Vec2(300, 200) + Vec2(100 * std::cos(4.0), 60 * std::sin(4.0));
-    QVERIFY((w.balls().position.col(0) - exact).norm() < 1e-8);
+    VERIFY((w.balls().position.col(0) - exact).norm() < 1e-8);
 }
 
-void TestWorkPrecision::errorsAndCostsAreFilledIn()
+TEST_CASE("TestWorkPrecision::errorsAndCostsAreFilledIn")
 {
     WorkPrecisionSettings settings;
     settings.duration = 1.0;
@@ -107,36 +117,36 @@ void TestWorkPrecision::errorsAndCostsAreFilledIn()
     const WorkPrecisionResult r =
         measureWorkPrecision(springScene(), settings, [&](int done, int total) {
             ++calls;
-            QCOMPARE(done, calls);
+            REQUIRE_SAME(done, calls);
             lastTotal = total;
         });
-    QVERIFY(!r.error && !r.cancelled);
-    QCOMPARE(calls, 5);
-    QCOMPARE(lastTotal, 5);
-    QCOMPARE(r.runs.size(), std::size_t(4));
+    VERIFY(!r.error && !r.cancelled);
+    REQUIRE_SAME(calls, 5);
+    REQUIRE_SAME(lastTotal, 5);
+    REQUIRE_SAME(r.runs.size(), std::size_t(4));
     // Euler: one evaluation a step; rk4: four.
-    QCOMPARE(r.runs[0].forceEvaluations, std::int64_t(32));
-    QCOMPARE(r.runs[2].forceEvaluations, std::int64_t(4 * 32));
+    REQUIRE_SAME(r.runs[0].forceEvaluations, std::int64_t(32));
+    REQUIRE_SAME(r.runs[2].forceEvaluations, std::int64_t(4 * 32));
     // At the same cost rk4 is far more accurate than Euler.
-    QVERIFY(r.runs[2].positionError < 1e-3 * r.runs[1].positionError);
-    QVERIFY(r.runs[0].energyError > r.runs[2].energyError);
+    VERIFY(r.runs[2].positionError < 1e-3 * r.runs[1].positionError);
+    VERIFY(r.runs[0].energyError > r.runs[2].energyError);
 
     // On two threads: the same runs, in the same order, with the same numbers.
     settings.threads = 2;
     std::atomic<int> parallelCalls{0};
     const WorkPrecisionResult p =
         measureWorkPrecision(springScene(), settings, [&](int, int) { ++parallelCalls; });
-    QCOMPARE(parallelCalls.load(), 5);
-    QCOMPARE(p.runs.size(), r.runs.size());
+    REQUIRE_SAME(parallelCalls.load(), 5);
+    REQUIRE_SAME(p.runs.size(), r.runs.size());
     for (std::size_t i = 0; i < r.runs.size(); ++i) {
-        QVERIFY(p.runs[i].integrator == r.runs[i].integrator);
-        QCOMPARE(p.runs[i].dt, r.runs[i].dt);
-        QCOMPARE(p.runs[i].positionError, r.runs[i].positionError);
-        QCOMPARE(p.runs[i].forceEvaluations, r.runs[i].forceEvaluations);
+        VERIFY(p.runs[i].integrator == r.runs[i].integrator);
+        REQUIRE_SAME(p.runs[i].dt, r.runs[i].dt);
+        REQUIRE_SAME(p.runs[i].positionError, r.runs[i].positionError);
+        REQUIRE_SAME(p.runs[i].forceEvaluations, r.runs[i].forceEvaluations);
     }
 }
 
-void TestWorkPrecision::cancelStopsEarly()
+TEST_CASE("TestWorkPrecision::cancelStopsEarly")
 {
     WorkPrecisionSettings settings;
     settings.duration = 1.0;
@@ -152,15 +162,15 @@ void TestWorkPrecision::cancelStopsEarly()
                 cancel = true; // the next run sees it at its first step
         },
         &cancel);
-    QVERIFY(r.cancelled);
-    QCOMPARE(calls, 2);
-    QCOMPARE(r.runs.size(), std::size_t(1));
+    VERIFY(r.cancelled);
+    REQUIRE_SAME(calls, 2);
+    REQUIRE_SAME(r.runs.size(), std::size_t(1));
 
     // Cancelled before it starts: not even the reference runs.
     const WorkPrecisionResult none = measureWorkPrecision(springScene(), settings, {}, &cancel);
-    QVERIFY(none.cancelled);
-    QVERIFY(none.runs.empty());
-    QCOMPARE(none.reference.forceEvaluations, std::int64_t(0));
+    VERIFY(none.cancelled);
+    VERIFY(none.runs.empty());
+    REQUIRE_SAME(none.reference.forceEvaluations, std::int64_t(0));
 
     // On two threads both workers stop.
     cancel = false;
@@ -168,30 +178,28 @@ void TestWorkPrecision::cancelStopsEarly()
     settings.duration = 500.0;
     const WorkPrecisionResult both = measureWorkPrecision(
         springScene(), settings, [&](int done, int) { if (done == 1) cancel = true; }, &cancel);
-    QVERIFY(both.cancelled);
-    QVERIFY(both.runs.empty());
+    VERIFY(both.cancelled);
+    VERIFY(both.runs.empty());
 }
 
-void TestWorkPrecision::durationMustBeWholeSteps()
+TEST_CASE("TestWorkPrecision::durationMustBeWholeSteps")
 {
     WorkPrecisionSettings settings;
     settings.duration = 1.0;
     settings.dts = {0.3};
     settings.integrators = {IntegratorKind::Euler};
     const WorkPrecisionResult r = measureWorkPrecision(springScene(), settings);
-    QVERIFY(r.error);
-    QVERIFY(r.runs.empty());
+    VERIFY(r.error);
+    VERIFY(r.runs.empty());
 }
 
-void TestWorkPrecision::fittedOrderOfAPowerLaw()
+TEST_CASE("TestWorkPrecision::fittedOrderOfAPowerLaw")
 {
     const std::vector<double> dt{0.1, 0.05, 0.025};
     const std::vector<double> err{3 * std::pow(0.1, 3), 3 * std::pow(0.05, 3), 3 * std::pow(0.025, 3)};
-    QVERIFY(std::abs(fittedOrder(dt, err) - 3.0) < 1e-12);
+    VERIFY(std::abs(fittedOrder(dt, err) - 3.0) < 1e-12);
     // Unusable errors are left out; one point is not a slope.
     const std::vector<double> bad{0.0, std::nan(""), 1e-3};
-    QVERIFY(std::isnan(fittedOrder(dt, bad)));
+    VERIFY(std::isnan(fittedOrder(dt, bad)));
 }
 
-QTEST_APPLESS_MAIN(TestWorkPrecision)
-#include "test_work_precision.moc"
