@@ -170,7 +170,9 @@ inline void report(const char* format, ...)
 /// QtTest's QVERIFY and QVERIFY2: stop the test case when `condition` is
 /// false (the condition is one boolean, so it may use && and ||).
 #define VERIFY(condition) REQUIRE(static_cast<bool>(condition))
-#define VERIFY2(condition, message) REQUIRE_MESSAGE(static_cast<bool>(condition), message)
+#define VERIFY2(condition, message) REQUIRE_MESSAGE(static_cast<bool>(condition), (message))
+/// QtTest's qFatal in a test: the test case fails with the printf-style message.
+#define FAIL_PRINTF(...) FAIL(::forcelab::test::format_row(__VA_ARGS__).str())
 
 /// QtTest's QCOMPARE: stops the test case when `actual` is not the same as
 /// `expected` (see same()), showing both.

@@ -3,11 +3,16 @@
 
 #include "sim/world.h"
 
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
 #include <numbers>
 #include <random>
+
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab::sim;
 
@@ -32,31 +37,15 @@ Scene boxOfBalls(int count, double width, double height, Detection detection, do
 
 } // namespace
 
-class TestCollisionWorld : public QObject {
-    Q_OBJECT
-private slots:
-    void boxKeepsKineticEnergy();
-    void openSpaceKeepsMomentum();
-    void detectorsGiveTheSameRun();
-    void flagLeavesMotionAlone();
-    void continuousWithExactWalls();
-    void columnStandsUnderGravity_data();
-    void columnStandsUnderGravity();
-    void pileSettlesUnderGravity_data();
-    void pileSettlesUnderGravity();
-    void gravityFreeStepIsOnePass();
-    void columnSinksWithOnePass();
-    void restingSolverKeepsMomentumAndCentre();
-};
 
 // 2,000 balls in a box, 2d-impulse with e = 1, walls with e = 1, no gravity or
 // drag: kinetic energy within 1e-9 relative over 10,000 steps.
-void TestCollisionWorld::boxKeepsKineticEnergy()
+TEST_CASE("TestCollisionWorld::boxKeepsKineticEnergy")
 {
     World w(boxOfBalls(2000, 1000.0, 800.0, Detection::Grid, 1.0));
-    QCOMPARE(w.balls().size(), 2000);
+    REQUIRE_SAME(w.balls().size(), 2000);
     const double ke0 = w.energy().kinetic;
-    QVERIFY(ke0 > 0.0);
+    VERIFY(ke0 > 0.0);
     double worst = 0.0;
     std::int64_t contacts = 0;
     for (int step = 0; step < 10000; ++step) {
@@ -66,14 +55,14 @@ void TestCollisionWorld::boxKeepsKineticEnergy()
             worst = std::max(worst, std::abs(w.energy().kinetic - ke0) / ke0);
     }
     worst = std::max(worst, std::abs(w.energy().kinetic - ke0) / ke0);
-    qInfo("largest relative change of kinetic energy: %.3g", worst);
-    QVERIFY2(worst <= 1e-9, qPrintable(QString("relative KE change %1").arg(worst)));
-    QVERIFY(contacts > 100000); // the balls really collided
-    QVERIFY(w.balls().position.allFinite());
+    forcelab::test::report("largest relative change of kinetic energy: %.3g", worst);
+    VERIFY2(worst <= 1e-9, Text(Text("relative KE change %1").arg(worst)).c_str());
+    VERIFY(contacts > 100000); // the balls really collided
+    VERIFY(w.balls().position.allFinite());
 }
 
 // No walls, e = 0.8: every collision loses energy but none changes momentum.
-void TestCollisionWorld::openSpaceKeepsMomentum()
+TEST_CASE("TestCollisionWorld::openSpaceKeepsMomentum")
 {
     Scene s = boxOfBalls(800, 500.0, 500.0, Detection::Sweep, 0.8);
     s.settings.walls = WallSettings{false, false, false, false, WallModel::Clamp, 1.0};
@@ -86,12 +75,12 @@ void TestCollisionWorld::openSpaceKeepsMomentum()
         w.step();
         contacts += w.lastStep().contacts;
     }
-    QVERIFY(contacts > 1000);
-    QVERIFY((w.momentum() - p0).norm() <= 1e-12 * scale);
-    QVERIFY(w.energy().kinetic < ke0);
+    VERIFY(contacts > 1000);
+    VERIFY((w.momentum() - p0).norm() <= 1e-12 * scale);
+    VERIFY(w.energy().kinetic < ke0);
 }
 
-void TestCollisionWorld::detectorsGiveTheSameRun()
+TEST_CASE("TestCollisionWorld::detectorsGiveTheSameRun")
 {
     std::vector<BallState> finals;
     std::vector<std::int64_t> contacts, tested;
@@ -106,18 +95,18 @@ void TestCollisionWorld::detectorsGiveTheSameRun()
         tested.push_back(w.totals().pairsTested);
     }
     for (std::size_t k = 1; k < finals.size(); ++k) {
-        QCOMPARE(finals[k].position, finals[0].position);
-        QCOMPARE(finals[k].velocity, finals[0].velocity);
-        QCOMPARE(contacts[k], contacts[0]);
+        REQUIRE_SAME(finals[k].position, finals[0].position);
+        REQUIRE_SAME(finals[k].velocity, finals[0].velocity);
+        REQUIRE_SAME(contacts[k], contacts[0]);
     }
     // Why the workbench shows the counters: brute tests twice what halved does,
     // and sweep and grid a tiny share of it.
-    QCOMPARE(tested[0], 2 * tested[1]);
-    QVERIFY(tested[2] * 20 < tested[1]);
-    QVERIFY(tested[3] * 20 < tested[1]);
+    REQUIRE_SAME(tested[0], 2 * tested[1]);
+    VERIFY(tested[2] * 20 < tested[1]);
+    VERIFY(tested[3] * 20 < tested[1]);
 }
 
-void TestCollisionWorld::flagLeavesMotionAlone()
+TEST_CASE("TestCollisionWorld::flagLeavesMotionAlone")
 {
     Scene s = boxOfBalls(500, 400.0, 300.0, Detection::Sweep, 1.0);
     s.settings.gravity.enabled = true;
@@ -132,16 +121,16 @@ void TestCollisionWorld::flagLeavesMotionAlone()
     }
     for (auto f : flagged.balls().colliding)
         marked += f;
-    QVERIFY(marked > 0);
-    QVERIFY(flagged.lastStep().contacts > 0);
-    QCOMPARE(flagged.balls().position, plain.balls().position);
-    QCOMPARE(flagged.balls().velocity, plain.balls().velocity);
+    VERIFY(marked > 0);
+    VERIFY(flagged.lastStep().contacts > 0);
+    REQUIRE_SAME(flagged.balls().position, plain.balls().position);
+    REQUIRE_SAME(flagged.balls().velocity, plain.balls().velocity);
 }
 
 // A ball moving 100 radii per step towards a resting ball near the right wall
 // (exact wall model): it hits the ball and neither passes through the other
 // or the wall.
-void TestCollisionWorld::continuousWithExactWalls()
+TEST_CASE("TestCollisionWorld::continuousWithExactWalls")
 {
     Scene s;
     s.settings.box = BoxSettings{3000.0, 400.0};
@@ -159,10 +148,10 @@ void TestCollisionWorld::continuousWithExactWalls()
     for (int step = 0; step < 20; ++step) {
         w.step();
         const auto& x = w.balls().position;
-        QVERIFY2(x(0, 0) < x(0, 1), qPrintable(QString("step %1: %2 %3").arg(step).arg(x(0, 0)).arg(x(0, 1))));
-        QVERIFY(x(0, 0) >= 10.0 && x(0, 1) <= 2990.0);
+        VERIFY2(x(0, 0) < x(0, 1), Text(Text("step %1: %2 %3").arg(step).arg(x(0, 0)).arg(x(0, 1))).c_str());
+        VERIFY(x(0, 0) >= 10.0 && x(0, 1) <= 2990.0);
     }
-    QVERIFY(std::abs(w.energy().kinetic - 0.5 * w.balls().mass[0] * std::pow(1000.0 / s.settings.time.dt, 2)) <=
+    VERIFY(std::abs(w.energy().kinetic - 0.5 * w.balls().mass[0] * std::pow(1000.0 / s.settings.time.dt, 2)) <=
             1e-9 * w.energy().kinetic);
 }
 
@@ -219,72 +208,104 @@ bool allInside(const World& w)
 
 } // namespace
 
-void TestCollisionWorld::columnStandsUnderGravity_data()
+namespace {
+
+struct ColumnStandsUnderGravityRow {
+    Text tag;
+    int wallModel;
+    int substeps;
+};
+
+std::vector<ColumnStandsUnderGravityRow> columnStandsUnderGravityRows()
 {
-    QTest::addColumn<int>("wallModel");
-    QTest::addColumn<int>("substeps");
-    QTest::newRow("clamp, 1 sub-step") << int(WallModel::Clamp) << 1;
-    QTest::newRow("exact, 1 sub-step") << int(WallModel::Exact) << 1;
-    QTest::newRow("clamp, 4 sub-steps") << int(WallModel::Clamp) << 4;
+    std::vector<ColumnStandsUnderGravityRow> rows;
+    rows.push_back({Text("clamp, 1 sub-step"), int(WallModel::Clamp), 1});
+    rows.push_back({Text("exact, 1 sub-step"), int(WallModel::Exact), 1});
+    rows.push_back({Text("clamp, 4 sub-steps"), int(WallModel::Clamp), 4});
+    return rows;
 }
+
+} // namespace
+
 
 // A column of 20 balls (r = 10 px) standing on the floor, dropped from 1 px
 // gaps, gravity 980 px/s², e = 0.9 for balls and walls, 60 Hz: after 10 s it
 // is still a column 20 diameters tall (within 2%), no pair overlaps by more
 // than 1% of a radius, and it never did during the run.
-void TestCollisionWorld::columnStandsUnderGravity()
+TEST_CASE("TestCollisionWorld::columnStandsUnderGravity")
 {
-    QFETCH(int, wallModel);
-    QFETCH(int, substeps);
-    World w(columnScene(static_cast<WallModel>(wallModel), substeps));
-    const double r = w.balls().radius[0], height = w.settings().box.height;
-    double worstOverlap = 0.0;
-    double intoFloor = 0.0; // fastest a ball on the floor ends a step moving into it, px/s
-    for (int step = 0; step < 600; ++step) {
-        w.step();
-        if (step >= 60) // after the first second, once the 1 px drops have landed
-            worstOverlap = std::max(worstOverlap, deepestOverlap(w));
-        const BallState& b = w.balls();
-        for (int i = 0; i < b.size(); ++i)
-            if (b.position(1, i) >= height - r)
-                intoFloor = std::max(intoFloor, b.velocity(1, i));
+    for (const ColumnStandsUnderGravityRow& row : columnStandsUnderGravityRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& wallModel = row.wallModel;
+            const auto& substeps = row.substeps;
+            World w(columnScene(static_cast<WallModel>(wallModel), substeps));
+            const double r = w.balls().radius[0], height = w.settings().box.height;
+            double worstOverlap = 0.0;
+            double intoFloor = 0.0; // fastest a ball on the floor ends a step moving into it, px/s
+            for (int step = 0; step < 600; ++step) {
+                w.step();
+                if (step >= 60) // after the first second, once the 1 px drops have landed
+                    worstOverlap = std::max(worstOverlap, deepestOverlap(w));
+                const BallState& b = w.balls();
+                for (int i = 0; i < b.size(); ++i)
+                    if (b.position(1, i) >= height - r)
+                        intoFloor = std::max(intoFloor, b.velocity(1, i));
+            }
+            // A ball the solver leaves on the floor is not still moving into it: the
+            // next wall stage would bounce it up again, every step (the exact wall
+            // model's floor ball did, at up to 146 px/s, and the column sank to 289 px).
+            // 1e-9 px/s leaves room for the rounding of the impulse sums (~1e-13).
+            VERIFY2(intoFloor <= 1e-9, Text(Text::number(intoFloor)).c_str());
+            const BallState& b = w.balls();
+            VERIFY(b.position.allFinite() && b.velocity.allFinite());
+            const double top = b.position.row(1).minCoeff() - r, bottom = b.position.row(1).maxCoeff() + r;
+            const double columnHeight = bottom - top;
+            forcelab::test::report("column height %.4f px (20 diameters = 400), deepest overlap %.3g r", columnHeight, worstOverlap);
+            // Known gap (see docs/performance.md, "Piles"). Speculative contacts hold
+            // a column that stands at touching distance, and with 4 sub-steps no pair
+            // overlaps by more than 1% of a radius. With 1 sub-step the first impacts
+            // of the 1 px drops are still too hard for one pass of contacts per
+            // sub-step.
+            VERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, Text(Text::number(columnHeight)).c_str());
+            // 1 sub-step: the first hard impacts overlap by 26% r (clamp) to 89% r
+            // (exact), a known gap; the day it holds, this check says so.
+            if (substeps == 1)
+                CHECK_MESSAGE(!(worstOverlap <= 0.01), "known gap closed at 1 sub-step: check for it as for the others");
+            else
+                VERIFY2(worstOverlap <= 0.01, Text(Text::number(worstOverlap)).c_str());
+            // Still one column: no ball moved sideways, and they are still in order.
+            VERIFY((b.position.row(0).array() == 100.0).all());
+            bool ordered = true;
+            for (int i = 0; i + 1 < 20; ++i)
+                ordered = ordered && b.position(1, i + 1) < b.position(1, i);
+            // 1 sub-step: the first hard impacts push two balls through each other (known gap).
+            if (substeps == 1)
+                CHECK_MESSAGE(!ordered, "known gap closed at 1 sub-step: check for it as for the others");
+            else
+                VERIFY(ordered);
+            VERIFY(allInside(w));
+        }
     }
-    // A ball the solver leaves on the floor is not still moving into it: the
-    // next wall stage would bounce it up again, every step (the exact wall
-    // model's floor ball did, at up to 146 px/s, and the column sank to 289 px).
-    // 1e-9 px/s leaves room for the rounding of the impulse sums (~1e-13).
-    QVERIFY2(intoFloor <= 1e-9, qPrintable(QString::number(intoFloor)));
-    const BallState& b = w.balls();
-    QVERIFY(b.position.allFinite() && b.velocity.allFinite());
-    const double top = b.position.row(1).minCoeff() - r, bottom = b.position.row(1).maxCoeff() + r;
-    const double columnHeight = bottom - top;
-    qInfo("column height %.4f px (20 diameters = 400), deepest overlap %.3g r", columnHeight, worstOverlap);
-    // Known gap (see docs/performance.md, "Piles"). Speculative contacts hold
-    // a column that stands at touching distance, and with 4 sub-steps no pair
-    // overlaps by more than 1% of a radius. With 1 sub-step the first impacts
-    // of the 1 px drops are still too hard for one pass of contacts per
-    // sub-step.
-    QVERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, qPrintable(QString::number(columnHeight)));
-    if (substeps == 1)
-        QEXPECT_FAIL("", "1 sub-step: the first hard impacts overlap by 26% r (clamp) to 89% r (exact)", Continue);
-    QVERIFY2(worstOverlap <= 0.01, qPrintable(QString::number(worstOverlap)));
-    // Still one column: no ball moved sideways, and they are still in order.
-    QVERIFY((b.position.row(0).array() == 100.0).all());
-    bool ordered = true;
-    for (int i = 0; i + 1 < 20; ++i)
-        ordered = ordered && b.position(1, i + 1) < b.position(1, i);
-    if (substeps == 1)
-        QEXPECT_FAIL("", "1 sub-step: the first hard impacts push two balls through each other", Continue);
-    QVERIFY(ordered);
-    QVERIFY(allInside(w));
 }
 
-void TestCollisionWorld::pileSettlesUnderGravity_data()
+namespace {
+
+struct PileSettlesUnderGravityRow {
+    Text tag;
+    int substeps;
+};
+
+std::vector<PileSettlesUnderGravityRow> pileSettlesUnderGravityRows()
 {
-    QTest::addColumn<int>("substeps");
-    QTest::newRow("1 sub-step") << 1;
-    QTest::newRow("8 sub-steps") << 8;
+    std::vector<PileSettlesUnderGravityRow> rows;
+    rows.push_back({Text("1 sub-step"), 1});
+    rows.push_back({Text("8 sub-steps"), 8});
+    return rows;
 }
+
+} // namespace
+
 
 // 2,000 balls (r = 3–5 px) on a jittered grid filling 30% of a box, random
 // speeds, gravity, e = 0.9, 60 Hz with 1 sub-step (the bench's scene) or 8:
@@ -292,85 +313,92 @@ void TestCollisionWorld::pileSettlesUnderGravity_data()
 // potential energy it started with, it is about as dense as packed discs
 // (a hexagonal packing has 3 contacts per ball), no pair overlaps by more than
 // 2% of the smaller radius, and every ball is inside the box.
-void TestCollisionWorld::pileSettlesUnderGravity()
+TEST_CASE("TestCollisionWorld::pileSettlesUnderGravity")
 {
-    QFETCH(int, substeps);
-    const int n = 2000;
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Ball> balls(n);
-    double area = 0.0;
-    for (Ball& b : balls) {
-        b.radius = 3.0 + 2.0 * u(rng);
-        area += std::numbers::pi * b.radius * b.radius;
+    for (const PileSettlesUnderGravityRow& row : pileSettlesUnderGravityRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& substeps = row.substeps;
+            const int n = 2000;
+            std::mt19937_64 rng(11);
+            std::uniform_real_distribution<double> u(0.0, 1.0);
+            std::vector<Ball> balls(n);
+            double area = 0.0;
+            for (Ball& b : balls) {
+                b.radius = 3.0 + 2.0 * u(rng);
+                area += std::numbers::pi * b.radius * b.radius;
+            }
+            const double side = std::sqrt(area / 0.3);
+            const int cols = static_cast<int>(std::ceil(std::sqrt(double(n))));
+            const double cell = side / cols;
+            for (int i = 0; i < n; ++i) {
+                Ball& b = balls[static_cast<std::size_t>(i)];
+                const double slack = std::max(0.0, 0.5 * cell - b.radius);
+                b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
+                                  (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
+                const double angle = 2.0 * std::numbers::pi * u(rng);
+                b.velocity = 100.0 * u(rng) * Vec2(std::cos(angle), std::sin(angle));
+            }
+            Scene s;
+            s.settings.box = BoxSettings{side, side};
+            s.settings.time.substeps = substeps;
+            s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
+            s.settings.gravity.enabled = true;
+            s.settings.collisions.detection = Detection::Grid;
+            s.settings.collisions.response = Response::Impulse2D;
+            s.settings.collisions.restitution = 0.9;
+            s.balls = balls;
+            World w(s);
+            // Potential energy above the floor: Σ m g (H − r − y).
+            auto potential = [&](const World& world) {
+                const BallState& b = world.balls();
+                double pe = 0.0;
+                for (int i = 0; i < b.size(); ++i)
+                    pe += b.mass[i] * 980.0 * (side - b.radius[i] - b.position(1, i));
+                return pe;
+            };
+            const double pe0 = potential(w);
+            for (int step = 0; step < 1200; ++step) {
+                w.step();
+                VERIFY(w.halted() == std::nullopt);
+            }
+            const BallState& b = w.balls();
+            VERIFY(b.position.allFinite() && b.velocity.allFinite());
+            const double ke = w.energy().kinetic;
+            const double perBall = double(w.lastStep().contacts) / n / substeps; // the step counts every sub-step
+            const double overlap = deepestOverlap(w);
+            forcelab::test::report("after 20 s: KE / PE0 = %.3g, PE / PE0 = %.3f, %.2f contacts per ball, deepest overlap %.3g r",
+                  ke / pe0, potential(w) / pe0, perBall, overlap);
+            VERIFY2(ke <= 1e-3 * pe0, Text(Text::number(ke / pe0)).c_str());
+            VERIFY2(perBall <= 4.0 && perBall >= 1.5, Text(Text::number(perBall)).c_str());
+            // Known gap at 1 sub-step (docs/performance.md, "Piles"): balls land at
+            // up to 3 radii per step, and the pairs that meet that hard stay deeply
+            // overlapped under the weight above them. 8 sub-steps meet the target.
+            // 1 sub-step: a few pairs that met hard stay deeply overlapped (~1.2 r), a known gap.
+            if (substeps == 1)
+                CHECK_MESSAGE(!(overlap <= 0.02), "known gap closed at 1 sub-step: check for it as for the others");
+            else
+                VERIFY2(overlap <= 0.02, Text(Text::number(overlap)).c_str());
+            VERIFY(allInside(w));
+        }
     }
-    const double side = std::sqrt(area / 0.3);
-    const int cols = static_cast<int>(std::ceil(std::sqrt(double(n))));
-    const double cell = side / cols;
-    for (int i = 0; i < n; ++i) {
-        Ball& b = balls[static_cast<std::size_t>(i)];
-        const double slack = std::max(0.0, 0.5 * cell - b.radius);
-        b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
-                          (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
-        const double angle = 2.0 * std::numbers::pi * u(rng);
-        b.velocity = 100.0 * u(rng) * Vec2(std::cos(angle), std::sin(angle));
-    }
-    Scene s;
-    s.settings.box = BoxSettings{side, side};
-    s.settings.time.substeps = substeps;
-    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
-    s.settings.gravity.enabled = true;
-    s.settings.collisions.detection = Detection::Grid;
-    s.settings.collisions.response = Response::Impulse2D;
-    s.settings.collisions.restitution = 0.9;
-    s.balls = balls;
-    World w(s);
-    // Potential energy above the floor: Σ m g (H − r − y).
-    auto potential = [&](const World& world) {
-        const BallState& b = world.balls();
-        double pe = 0.0;
-        for (int i = 0; i < b.size(); ++i)
-            pe += b.mass[i] * 980.0 * (side - b.radius[i] - b.position(1, i));
-        return pe;
-    };
-    const double pe0 = potential(w);
-    for (int step = 0; step < 1200; ++step) {
-        w.step();
-        QVERIFY(w.halted() == std::nullopt);
-    }
-    const BallState& b = w.balls();
-    QVERIFY(b.position.allFinite() && b.velocity.allFinite());
-    const double ke = w.energy().kinetic;
-    const double perBall = double(w.lastStep().contacts) / n / substeps; // the step counts every sub-step
-    const double overlap = deepestOverlap(w);
-    qInfo("after 20 s: KE / PE0 = %.3g, PE / PE0 = %.3f, %.2f contacts per ball, deepest overlap %.3g r",
-          ke / pe0, potential(w) / pe0, perBall, overlap);
-    QVERIFY2(ke <= 1e-3 * pe0, qPrintable(QString::number(ke / pe0)));
-    QVERIFY2(perBall <= 4.0 && perBall >= 1.5, qPrintable(QString::number(perBall)));
-    // Known gap at 1 sub-step (docs/performance.md, "Piles"): balls land at
-    // up to 3 radii per step, and the pairs that meet that hard stay deeply
-    // overlapped under the weight above them. 8 sub-steps meet the target.
-    if (substeps == 1)
-        QEXPECT_FAIL("", "1 sub-step: a few pairs that met hard stay deeply overlapped (~1.2 r)", Continue);
-    QVERIFY2(overlap <= 0.02, qPrintable(QString::number(overlap)));
-    QVERIFY(allInside(w));
 }
 
 // Without gravity nothing rests: the collision stage makes its one pass and
 // the resting-contact solver is never used, so gravity-free scenes keep the
 // textbook step (and the energy test above).
-void TestCollisionWorld::gravityFreeStepIsOnePass()
+TEST_CASE("TestCollisionWorld::gravityFreeStepIsOnePass")
 {
     World w(boxOfBalls(500, 400.0, 300.0, Detection::Sweep, 0.9));
     CollisionSystem sys;
     BallState b = w.balls();
     const Matrix2X start = b.position;
     sys.step(b, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0);
-    QVERIFY(!sys.contacts().empty());
-    QCOMPARE(sys.lastVelocityPasses(), 0);
+    VERIFY(!sys.contacts().empty());
+    REQUIRE_SAME(sys.lastVelocityPasses(), 0);
     BallState g = w.balls();
     sys.step(g, start, w.settings().collisions, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
-    QVERIFY(sys.lastVelocityPasses() >= 2);
+    VERIFY(sys.lastVelocityPasses() >= 2);
     // With resting contacts switched off (collisions.resting: false), gravity
     // changes nothing in the stage: the same one pass, to the bit.
     CollisionSettings onePass = w.settings().collisions;
@@ -378,8 +406,8 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
     CollisionSystem fresh;
     BallState o = w.balls();
     fresh.step(o, start, onePass, w.settings().box, w.settings().walls, 1.0 / 60.0, Vec2(0.0, 980.0));
-    QCOMPARE(fresh.lastVelocityPasses(), 0);
-    QVERIFY(o.position == b.position && o.velocity == b.velocity);
+    REQUIRE_SAME(fresh.lastVelocityPasses(), 0);
+    VERIFY(o.position == b.position && o.velocity == b.velocity);
 }
 
 // What the resting-contact solver is for, as a student sees it when they
@@ -388,7 +416,7 @@ void TestCollisionWorld::gravityFreeStepIsOnePass()
 // push of gravity reaches one ball further down per pass, and positional
 // correction cannot hold the weight: after 10 s the column is well under
 // 90% of its 400 px (measured: 221.5 px), where the solver keeps it at 397 px.
-void TestCollisionWorld::columnSinksWithOnePass()
+TEST_CASE("TestCollisionWorld::columnSinksWithOnePass")
 {
     const Scene s = columnScene(WallModel::Clamp, 1);
     const double r = s.balls.front().radius;
@@ -404,9 +432,9 @@ void TestCollisionWorld::columnSinksWithOnePass()
         return b.position.row(1).maxCoeff() - b.position.row(1).minCoeff() + 2.0 * r;
     };
     const double solved = heightAfter10s(true), onePass = heightAfter10s(false);
-    qInfo("column after 10 s: %.1f px with resting contacts, %.1f px with one pass", solved, onePass);
-    QVERIFY2(solved >= 0.98 * 400.0, qPrintable(QString::number(solved)));
-    QVERIFY2(onePass < 0.9 * 400.0, qPrintable(QString::number(onePass)));
+    forcelab::test::report("column after 10 s: %.1f px with resting contacts, %.1f px with one pass", solved, onePass);
+    VERIFY2(solved >= 0.98 * 400.0, Text(Text::number(solved)).c_str());
+    VERIFY2(onePass < 0.9 * 400.0, Text(Text::number(onePass)).c_str());
 }
 
 // The resting-contact solver (gravity on) only exchanges equal and opposite
@@ -420,7 +448,7 @@ void TestCollisionWorld::columnSinksWithOnePass()
 // balls, so each solve starts from the last one's state and warm start. The
 // masses differ (∝ r³, radii 3–6 px), so a ball's result written back to
 // another ball would show in the momentum.
-void TestCollisionWorld::restingSolverKeepsMomentumAndCentre()
+TEST_CASE("TestCollisionWorld::restingSolverKeepsMomentumAndCentre")
 {
     Scene s = boxOfBalls(800, 500.0, 500.0, Detection::Sweep, 0.9);
     s.settings.walls = WallSettings{false, false, false, false, WallModel::Clamp, 1.0};
@@ -451,24 +479,22 @@ void TestCollisionWorld::restingSolverKeepsMomentumAndCentre()
         const Matrix2X v0 = b.velocity, x0 = b.position;
         sys.step(b, x0, s.settings.collisions, s.settings.box, s.settings.walls, 1.0 / 60.0, Vec2(0.0, 980.0));
         if (k == 0)
-            QVERIFY(sys.lastVelocityPasses() >= 2); // later stages settle and may stop after one pass
+            VERIFY(sys.lastVelocityPasses() >= 2); // later stages settle and may stop after one pass
         contacts += sys.contacts().size();
         worstP = std::max(worstP, (b.velocity * b.mass - p0).norm() / momentumScale);
         worstC = std::max(worstC, (b.position * b.mass - c0).norm() / centreScale);
         for (int i : isolated) {
-            QCOMPARE(b.velocity.col(i), v0.col(i));
-            QCOMPARE(b.position.col(i), x0.col(i));
+            REQUIRE_SAME(b.velocity.col(i), v0.col(i));
+            REQUIRE_SAME(b.position.col(i), x0.col(i));
         }
         untouched += isolated.size();
     }
-    qInfo("resting solver, 10 stages: momentum change %.3g of sum m|v|, centre of mass change %.3g of the box "
+    forcelab::test::report("resting solver, 10 stages: momentum change %.3g of sum m|v|, centre of mass change %.3g of the box "
           "(%zu contacts, %zu isolated balls left alone)",
           worstP, worstC, contacts, untouched);
-    QVERIFY(contacts > 1000); // the solver really had work
-    QVERIFY(untouched > 500);
-    QVERIFY2(worstP <= 1e-13, qPrintable(QString::number(worstP)));
-    QVERIFY2(worstC <= 1e-13, qPrintable(QString::number(worstC)));
+    VERIFY(contacts > 1000); // the solver really had work
+    VERIFY(untouched > 500);
+    VERIFY2(worstP <= 1e-13, Text(Text::number(worstP)).c_str());
+    VERIFY2(worstC <= 1e-13, Text(Text::number(worstC)).c_str());
 }
 
-QTEST_APPLESS_MAIN(TestCollisionWorld)
-#include "test_collision_world.moc"

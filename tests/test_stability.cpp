@@ -5,10 +5,15 @@
 
 #include "sim/stability.h"
 
-#include <QRegularExpression>
-#include <QTest>
+#include "sim_check.h"
 
 #include <cmath>
+
+#include <regex>
+#include <string>
+#include <vector>
+
+using forcelab::test::Text;
 
 using namespace forcelab;
 using namespace forcelab::sim;
@@ -33,183 +38,194 @@ bool finiteState(const World& w)
 
 } // namespace
 
-class TestStability : public QObject {
-    Q_OBJECT
-private slots:
-    void growthMatchesClosedForm();
-    void springLimitIsTwoOverOmega_data();
-    void springLimitIsTwoOverOmega();
-    void dragLimitIsTwoOverK();
-    void messagesSayWhyAndTheFix();
-    void newSettingsClearTheHalt();
-    void runawayIsUndoneAndExplained();
-    void closePassWithoutSofteningStaysFinite();
-    void adaptiveIntegratorsGiveUpInTime_data();
-    void adaptiveIntegratorsGiveUpInTime();
-    void linearGrowthAtTheLimitIsRefused();
-    void messagesNeverContradictThemselves_data();
-    void messagesNeverContradictThemselves();
-    void dragAsAForceLimitsTheLightestBall();
-    void weakDragAndSoftSpringsAreStable();
-    void dragLimitWithSubsteps();
-    void perFrameAdvisesSubsteps();
-};
 
 // One step of semi-implicit Euler on x'' = −ω² x is [[1 − ω²h², h], [−ω²h, 1]]:
 // determinant 1, so |λ| = 1 while ωh ≤ 2. Explicit Euler's eigenvalues are
 // 1 ± iωh: |λ| = √(1 + ω²h²) > 1 at every h.
-void TestStability::growthMatchesClosedForm()
+TEST_CASE("TestStability::growthMatchesClosedForm")
 {
     WorldSettings s;
     s.spring = SpringSettings{true, Vec2(0, 0), 4.0};
     s.time.integrator = IntegratorKind::Euler;
-    QCOMPARE(linearGrowthPerStep(s, 0.1), std::sqrt(1.0 + 4.0 * 0.01));
+    REQUIRE_SAME(linearGrowthPerStep(s, 0.1), std::sqrt(1.0 + 4.0 * 0.01));
     s.time.integrator = IntegratorKind::SemiImplicitEuler;
-    QVERIFY(std::abs(linearGrowthPerStep(s, 0.5) - 1.0) < 1e-12);
+    VERIFY(std::abs(linearGrowthPerStep(s, 0.5) - 1.0) < 1e-12);
     // ωh = 2.5 > 2: λ = (2 − ω²h² ∓ √((2 − ω²h²)² − 4)) / 2, the larger |λ| is 4.
     s.spring.k = 25.0;
-    QVERIFY(std::abs(linearGrowthPerStep(s, 0.5) - (4.25 + std::sqrt(4.25 * 4.25 - 4)) / 2) < 1e-12);
+    VERIFY(std::abs(linearGrowthPerStep(s, 0.5) - (4.25 + std::sqrt(4.25 * 4.25 - 4)) / 2) < 1e-12);
 }
 
-void TestStability::springLimitIsTwoOverOmega_data()
+namespace {
+
+struct SpringLimitIsTwoOverOmegaRow {
+    Text tag;
+    int integrator;
+    double limit;
+};
+
+std::vector<SpringLimitIsTwoOverOmegaRow> springLimitIsTwoOverOmegaRows()
 {
-    QTest::addColumn<int>("integrator");
-    QTest::addColumn<double>("limit"); // largest stable ω h
-    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << 2.0;
-    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 2.0;
-    QTest::newRow("rk4") << int(IntegratorKind::Rk4) << 2.0 * std::sqrt(2.0);
+    std::vector<SpringLimitIsTwoOverOmegaRow> rows;
+    rows.push_back({Text("semi-implicit-euler"), int(IntegratorKind::SemiImplicitEuler), 2.0});
+    rows.push_back({Text("verlet"), int(IntegratorKind::Verlet), 2.0});
+    rows.push_back({Text("rk4"), int(IntegratorKind::Rk4), 2.0 * std::sqrt(2.0)});
+    return rows;
 }
+
+} // namespace
+
 
 // ω = 100 rad/s: stable a little below ωh = limit, halted a little above.
-void TestStability::springLimitIsTwoOverOmega()
+TEST_CASE("TestStability::springLimitIsTwoOverOmega")
 {
-    QFETCH(int, integrator);
-    QFETCH(double, limit);
-    const double omega = 100.0;
-    World below, above;
-    QVERIFY(!below.reset(springScene(static_cast<IntegratorKind>(integrator), omega * omega, 0.98 * limit / omega)));
-    QVERIFY(!above.reset(springScene(static_cast<IntegratorKind>(integrator), omega * omega, 1.02 * limit / omega)));
-    QVERIFY(!below.halted());
-    QVERIFY(above.halted());
-    // Bounded swing: symplectic Euler and Verlet keep an ellipse whose x reach
-    // is at most A / √(1 − (ωh/2)²) = 5.03 A at ωh = 0.98 × 2 (A = 10 px).
-    double reach = 0;
-    for (int k = 0; k < 1000; ++k) {
-        below.step();
-        reach = std::max(reach, std::abs(below.balls().position(0, 0) - 100.0));
+    for (const SpringLimitIsTwoOverOmegaRow& row : springLimitIsTwoOverOmegaRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& integrator = row.integrator;
+            const auto& limit = row.limit;
+            const double omega = 100.0;
+            World below, above;
+            VERIFY(!below.reset(springScene(static_cast<IntegratorKind>(integrator), omega * omega, 0.98 * limit / omega)));
+            VERIFY(!above.reset(springScene(static_cast<IntegratorKind>(integrator), omega * omega, 1.02 * limit / omega)));
+            VERIFY(!below.halted());
+            VERIFY(above.halted());
+            // Bounded swing: symplectic Euler and Verlet keep an ellipse whose x reach
+            // is at most A / √(1 − (ωh/2)²) = 5.03 A at ωh = 0.98 × 2 (A = 10 px).
+            double reach = 0;
+            for (int k = 0; k < 1000; ++k) {
+                below.step();
+                reach = std::max(reach, std::abs(below.balls().position(0, 0) - 100.0));
+            }
+            VERIFY2(reach <= 10.0 / std::sqrt(1.0 - 0.98 * 0.98) * 1.001, Text(Text::number(reach)).c_str());
+            above.step();
+            REQUIRE_SAME(above.stepCount(), std::int64_t(0)); // halted: nothing moves
+            REQUIRE_SAME(above.balls().position(0, 0), 110.0);
+        }
     }
-    QVERIFY2(reach <= 10.0 / std::sqrt(1.0 - 0.98 * 0.98) * 1.001, qPrintable(QString::number(reach)));
-    above.step();
-    QCOMPARE(above.stepCount(), std::int64_t(0)); // halted: nothing moves
-    QCOMPARE(above.balls().position(0, 0), 110.0);
 }
 
 // Linear drag with explicit or semi-implicit Euler: v ← (1 − k dt) v, which
 // flips sign and grows once k dt > 2.
-void TestStability::dragLimitIsTwoOverK()
+TEST_CASE("TestStability::dragLimitIsTwoOverK")
 {
     Scene s = openScene({ballAt(100, 100, 50, 0)});
     s.settings.drag = DragSettings{true, DragLaw::Linear, 100.0};
     s.settings.time.dt = 0.019;
     World ok, bad;
-    QVERIFY(!ok.reset(s));
-    QVERIFY(!ok.halted());
+    VERIFY(!ok.reset(s));
+    VERIFY(!ok.halted());
     s.settings.time.dt = 0.021;
-    QVERIFY(!bad.reset(s));
-    QVERIFY(bad.halted());
-    QVERIFY2(QString::fromStdString(*bad.halted()).contains("k·dt = 2.1"), bad.halted()->c_str());
+    VERIFY(!bad.reset(s));
+    VERIFY(bad.halted());
+    VERIFY2(Text(*bad.halted()).contains("k·dt = 2.1"), bad.halted()->c_str());
 }
 
-void TestStability::messagesSayWhyAndTheFix()
+TEST_CASE("TestStability::messagesSayWhyAndTheFix")
 {
     World w;
-    QVERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 4444.0, 0.05)));
-    QVERIFY(w.halted());
-    QCOMPARE(QString::fromStdString(*w.halted()),
-             QString("semi-implicit-euler is unstable for this spring at dt = 0.05 s (ω = √k = 66.7 rad/s): the "
+    VERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 4444.0, 0.05)));
+    VERIFY(w.halted());
+    REQUIRE_SAME(Text(*w.halted()),
+             Text("semi-implicit-euler is unstable for this spring at dt = 0.05 s (ω = √k = 66.7 rad/s): the "
                      "motion grows more than a million times every second. Lower dt below 0.03 s"));
     // Explicit Euler gains energy on any spring; when it doubles within 10 s
     // it is stopped and verlet is suggested.
-    QVERIFY(!w.reset(springScene(IntegratorKind::Euler, 400.0, 1.0 / 60)));
-    QVERIFY(w.halted());
-    QVERIFY2(QString::fromStdString(*w.halted()).startsWith("euler is unstable for this spring"), w.halted()->c_str());
-    QVERIFY2(QString::fromStdString(*w.halted()).endsWith("or pick verlet"), w.halted()->c_str());
+    VERIFY(!w.reset(springScene(IntegratorKind::Euler, 400.0, 1.0 / 60)));
+    VERIFY(w.halted());
+    VERIFY2(Text(*w.halted()).startsWith("euler is unstable for this spring"), w.halted()->c_str());
+    VERIFY2(Text(*w.halted()).endsWith("or pick verlet"), w.halted()->c_str());
 }
 
-void TestStability::newSettingsClearTheHalt()
+TEST_CASE("TestStability::newSettingsClearTheHalt")
 {
     World w;
-    QVERIFY(!w.reset(springScene(IntegratorKind::Verlet, 10000.0, 0.05)));
-    QVERIFY(w.halted());
+    VERIFY(!w.reset(springScene(IntegratorKind::Verlet, 10000.0, 0.05)));
+    VERIFY(w.halted());
     WorldSettings s = w.settings();
     s.time.dt = 0.001;
-    QVERIFY(!w.setSettings(s));
-    QVERIFY(!w.halted());
+    VERIFY(!w.setSettings(s));
+    VERIFY(!w.halted());
     w.step();
-    QCOMPARE(w.stepCount(), std::int64_t(1));
+    REQUIRE_SAME(w.stepCount(), std::int64_t(1));
 }
 
 // An attracting point with no clamp: a ball dropped straight at it gains
 // unbounded speed at the centre. The world takes the step back, stops, and
 // names the clamp as the fix; the state stays finite.
-void TestStability::runawayIsUndoneAndExplained()
+TEST_CASE("TestStability::runawayIsUndoneAndExplained")
 {
     Scene s = openScene({ballAt(300, 200.0 + 1e-7, 0, 0)});
     s.settings.point = PointForceSettings{true, PointKind::Attract, Vec2(300, 200), 1e12, 0.0, ForceScale::None};
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     for (int k = 0; k < 100 && !w.halted(); ++k)
         w.step();
-    QVERIFY(w.halted());
-    QVERIFY(finiteState(w));
-    QVERIFY(w.balls().velocity.cwiseAbs().maxCoeff() < 1e12);
-    QVERIFY2(QString::fromStdString(*w.halted()).contains("set max_accel"), w.halted()->c_str());
+    VERIFY(w.halted());
+    VERIFY(finiteState(w));
+    VERIFY(w.balls().velocity.cwiseAbs().maxCoeff() < 1e12);
+    VERIFY2(Text(*w.halted()).contains("set max_accel"), w.halted()->c_str());
 }
 
 // Two bodies on a collision course, mutual gravity with no softening: the
 // force never becomes Inf or NaN, and if the pass is too close for dt the
 // world stops with softening as the fix.
-void TestStability::closePassWithoutSofteningStaysFinite()
+TEST_CASE("TestStability::closePassWithoutSofteningStaysFinite")
 {
     Scene s = openScene({ballAt(100, 200, 0, 0, 1, 1e6), ballAt(200, 200, 0, 0, 1, 1e6)});
     s.settings.mutualGravity = MutualGravitySettings{true, 1e6, 0.0};
     World w;
-    QVERIFY(!w.reset(s));
+    VERIFY(!w.reset(s));
     for (int k = 0; k < 2000 && !w.halted(); ++k) {
         w.step();
-        QVERIFY(finiteState(w));
-        QVERIFY(w.accelerations().allFinite());
+        VERIFY(finiteState(w));
+        VERIFY(w.accelerations().allFinite());
     }
     if (w.halted())
-        QVERIFY2(QString::fromStdString(*w.halted()).contains("add softening"), w.halted()->c_str());
+        VERIFY2(Text(*w.halted()).contains("add softening"), w.halted()->c_str());
 }
 
-void TestStability::adaptiveIntegratorsGiveUpInTime_data()
+namespace {
+
+struct AdaptiveIntegratorsGiveUpInTimeRow {
+    Text tag;
+    int integrator;
+};
+
+std::vector<AdaptiveIntegratorsGiveUpInTimeRow> adaptiveIntegratorsGiveUpInTimeRows()
 {
-    QTest::addColumn<int>("integrator");
-    QTest::newRow("rk45") << int(IntegratorKind::Rk45);
-    QTest::newRow("ias15") << int(IntegratorKind::Ias15);
+    std::vector<AdaptiveIntegratorsGiveUpInTimeRow> rows;
+    rows.push_back({Text("rk45"), int(IntegratorKind::Rk45)});
+    rows.push_back({Text("ias15"), int(IntegratorKind::Ias15)});
+    return rows;
 }
+
+} // namespace
+
 
 // Three heavy bodies falling together with no softening, at a tight
 // tolerance: near the collision an adaptive integrator asks for ever shorter
 // sub-steps. It stops after its budget instead of freezing the program, the
 // step is undone, and the world says why.
-void TestStability::adaptiveIntegratorsGiveUpInTime()
+TEST_CASE("TestStability::adaptiveIntegratorsGiveUpInTime")
 {
-    QFETCH(int, integrator);
-    Scene s = openScene({ballAt(100, 200, 0, 0, 1, 1e6), ballAt(200, 200, 0, 0, 1, 1e6), ballAt(150, 280, 0, 0, 1, 1e6)});
-    s.settings.mutualGravity = MutualGravitySettings{true, 1e9, 0.0};
-    s.settings.time.integrator = static_cast<IntegratorKind>(integrator);
-    s.settings.time.tolerance = 1e-12;
-    World w;
-    QVERIFY(!w.reset(s));
-    for (int k = 0; k < 600 && !w.halted(); ++k)
-        w.step();
-    QVERIFY(w.halted());
-    QVERIFY(finiteState(w));
-    QVERIFY2(QString::fromStdString(*w.halted()).contains("add softening"), w.halted()->c_str());
-    QVERIFY(w.lastStep().acceptedSteps + w.lastStep().rejectedSteps <= kMaxAdaptiveSubSteps);
+    for (const AdaptiveIntegratorsGiveUpInTimeRow& row : adaptiveIntegratorsGiveUpInTimeRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& integrator = row.integrator;
+            Scene s = openScene({ballAt(100, 200, 0, 0, 1, 1e6), ballAt(200, 200, 0, 0, 1, 1e6), ballAt(150, 280, 0, 0, 1, 1e6)});
+            s.settings.mutualGravity = MutualGravitySettings{true, 1e9, 0.0};
+            s.settings.time.integrator = static_cast<IntegratorKind>(integrator);
+            s.settings.time.tolerance = 1e-12;
+            World w;
+            VERIFY(!w.reset(s));
+            for (int k = 0; k < 600 && !w.halted(); ++k)
+                w.step();
+            VERIFY(w.halted());
+            VERIFY(finiteState(w));
+            VERIFY2(Text(*w.halted()).contains("add softening"), w.halted()->c_str());
+            VERIFY(w.lastStep().acceptedSteps + w.lastStep().rejectedSteps <= kMaxAdaptiveSubSteps);
+        }
+    }
 }
 
 // Semi-implicit Euler at exactly ω dt = 2: the step matrix [[−3, h], [−4/h, 1]]
@@ -217,56 +233,72 @@ void TestStability::adaptiveIntegratorsGiveUpInTime()
 // one swing's worth every step (×707 in 50 s at ω = 10), though |λ| = 1.
 // Before, a spectral radius of 1 was taken as stable. Just below the limit
 // the eigenvalues are two and on the unit circle: stable.
-void TestStability::linearGrowthAtTheLimitIsRefused()
+TEST_CASE("TestStability::linearGrowthAtTheLimitIsRefused")
 {
     World w;
-    QVERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.2)));
-    QVERIFY(w.halted());
-    qInfo("%s", w.halted()->c_str());
-    QVERIFY2(QString::fromStdString(*w.halted()).contains("Lower dt below 0.199 s"), w.halted()->c_str());
-    QVERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.199)));
-    QVERIFY(!w.halted());
-    QVERIFY(!w.reset(springScene(IntegratorKind::Verlet, 100.0, 0.2)));
-    QVERIFY(w.halted());
+    VERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.2)));
+    VERIFY(w.halted());
+    forcelab::test::report("%s", w.halted()->c_str());
+    VERIFY2(Text(*w.halted()).contains("Lower dt below 0.199 s"), w.halted()->c_str());
+    VERIFY(!w.reset(springScene(IntegratorKind::SemiImplicitEuler, 100.0, 0.199)));
+    VERIFY(!w.halted());
+    VERIFY(!w.reset(springScene(IntegratorKind::Verlet, 100.0, 0.2)));
+    VERIFY(w.halted());
 }
 
-void TestStability::messagesNeverContradictThemselves_data()
+namespace {
+
+struct MessagesNeverContradictThemselvesRow {
+    Text tag;
+    int integrator;
+    double limit;
+};
+
+std::vector<MessagesNeverContradictThemselvesRow> messagesNeverContradictThemselvesRows()
 {
-    QTest::addColumn<int>("integrator");
-    QTest::addColumn<double>("limit"); // ω h
-    QTest::newRow("rk4 at 0.284 (limit 2√2/ω = 0.28284)") << int(IntegratorKind::Rk4) << 2.0 * std::sqrt(2.0);
-    QTest::newRow("semi-implicit-euler") << int(IntegratorKind::SemiImplicitEuler) << 2.0;
-    QTest::newRow("verlet") << int(IntegratorKind::Verlet) << 2.0;
+    std::vector<MessagesNeverContradictThemselvesRow> rows;
+    rows.push_back({Text("rk4 at 0.284 (limit 2√2/ω = 0.28284)"), int(IntegratorKind::Rk4), 2.0 * std::sqrt(2.0)});
+    rows.push_back({Text("semi-implicit-euler"), int(IntegratorKind::SemiImplicitEuler), 2.0});
+    rows.push_back({Text("verlet"), int(IntegratorKind::Verlet), 2.0});
     // Where the trace of the three Verlet matrices of weights w₁, w₀, w₁
     // reaches 2 (bisection on the product, to 1e-15).
-    QTest::newRow("yoshida4") << int(IntegratorKind::Yoshida4) << 1.5734019474345;
+    rows.push_back({Text("yoshida4"), int(IntegratorKind::Yoshida4), 1.5734019474345});
+    return rows;
 }
+
+} // namespace
+
 
 // ω = 10 rad/s and dt a hair above the limit, at many dt: the message names
 // the dt with enough figures to tell it from the advice, and advises a dt
 // below the true limit (rounded down, not to the nearest). Before: "unstable
 // at dt = 0.284 s … lower dt below 0.284 s" for rk4, whose limit is 0.28284.
-void TestStability::messagesNeverContradictThemselves()
+TEST_CASE("TestStability::messagesNeverContradictThemselves")
 {
-    QFETCH(int, integrator);
-    QFETCH(double, limit);
-    const double trueLimit = limit / 10.0;
-    // From 0.4% above the limit (rk4's 0.284 s against 0.28284 s) to 10%:
-    // near enough that three figures could round onto the limit.
-    for (const double above : {1.0041, 1.006, 1.01, 1.03, 1.1}) {
-        const double dt = trueLimit * above;
-        World w;
-        QVERIFY(!w.reset(springScene(static_cast<IntegratorKind>(integrator), 100.0, dt)));
-        QVERIFY(w.halted());
-        const QString m = QString::fromStdString(*w.halted());
-        const QRegularExpression re(QStringLiteral("at dt = ([0-9.e-]+) s.*Lower dt below ([0-9.e-]+) s"));
-        const auto match = re.match(m);
-        QVERIFY2(match.hasMatch(), qPrintable(m));
-        const double said = match.captured(1).toDouble(), advised = match.captured(2).toDouble();
-        QVERIFY2(match.captured(1) != match.captured(2), qPrintable(m));
-        QVERIFY2(advised < said && advised < trueLimit, qPrintable(m));
-        QVERIFY2(std::abs(said / dt - 1.0) < 5e-3, qPrintable(m));
-        QVERIFY2(advised > 0.99 * trueLimit, qPrintable(m)); // three figures, not a loose guess
+    for (const MessagesNeverContradictThemselvesRow& row : messagesNeverContradictThemselvesRows()) {
+        SUBCASE(row.tag.c_str())
+        {
+            const auto& integrator = row.integrator;
+            const auto& limit = row.limit;
+            const double trueLimit = limit / 10.0;
+            // From 0.4% above the limit (rk4's 0.284 s against 0.28284 s) to 10%:
+            // near enough that three figures could round onto the limit.
+            for (const double above : {1.0041, 1.006, 1.01, 1.03, 1.1}) {
+                const double dt = trueLimit * above;
+                World w;
+                VERIFY(!w.reset(springScene(static_cast<IntegratorKind>(integrator), 100.0, dt)));
+                VERIFY(w.halted());
+                const Text m = Text(*w.halted());
+                static const std::regex re("at dt = ([0-9.e-]+) s.*Lower dt below ([0-9.e-]+) s");
+                std::smatch match;
+                VERIFY2(std::regex_search(m.str(), match, re), m.c_str());
+                const double said = std::stod(match[1].str()), advised = std::stod(match[2].str());
+                VERIFY2(match[1].str() != match[2].str(), m.c_str());
+                VERIFY2(advised < said && advised < trueLimit, Text(m).c_str());
+                VERIFY2(std::abs(said / dt - 1.0) < 5e-3, Text(m).c_str());
+                VERIFY2(advised > 0.99 * trueLimit, Text(m).c_str()); // three figures, not a loose guess
+            }
+        }
     }
 }
 
@@ -274,29 +306,29 @@ void TestStability::messagesNeverContradictThemselves()
 // reference mass has c = 10 k. k = 20 /s at dt = 16 ms is k·dt = 0.32 for a
 // 10 px ball, fine, but c·dt = 3.2 > 2 for the light one: semi-implicit Euler
 // flips its velocity back and forth, growing. The check sees the lightest ball.
-void TestStability::dragAsAForceLimitsTheLightestBall()
+TEST_CASE("TestStability::dragAsAForceLimitsTheLightestBall")
 {
     Scene s = openScene({ballAt(100, 100, 50, 0), ballAt(200, 100, 50, 0, 10, sphereMass(10) / 10)});
     s.settings.drag = DragSettings{true, DragLaw::Linear, 20.0};
     s.settings.time.dt = 0.016;
     World w;
-    QVERIFY(!w.reset(s));
-    QVERIFY(w.halted());
-    QVERIFY2(QString::fromStdString(*w.halted()).contains("c·dt = 3.2 for the lightest ball"), w.halted()->c_str());
+    VERIFY(!w.reset(s));
+    VERIFY(w.halted());
+    VERIFY2(Text(*w.halted()).contains("c·dt = 3.2 for the lightest ball"), w.halted()->c_str());
     s.balls.pop_back();
-    QVERIFY(!w.reset(s));
-    QVERIFY(!w.halted());
+    VERIFY(!w.reset(s));
+    VERIFY(!w.halted());
     s.settings.drag.scale = ForceScale::None; // the tutorial's drag: every ball c = k
     s.balls.push_back(ballAt(200, 100, 50, 0, 10, sphereMass(10) / 10));
-    QVERIFY(!w.reset(s));
-    QVERIFY(!w.halted());
+    VERIFY(!w.reset(s));
+    VERIFY(!w.halted());
     // Scaled by radius, c = k × 10 px / r: a 1 px ball has c = 10 k, and the
     // message names it by its size, not its mass.
     s.settings.drag.scale = ForceScale::Radius;
     s.balls.back() = ballAt(200, 100, 50, 0, 1);
-    QVERIFY(!w.reset(s));
-    QVERIFY(w.halted());
-    QVERIFY2(QString::fromStdString(*w.halted()).contains("(c·dt = 3.2 for the smallest ball, c = k × 10 px / r = 200/s)"),
+    VERIFY(!w.reset(s));
+    VERIFY(w.halted());
+    VERIFY2(Text(*w.halted()).contains("(c·dt = 3.2 for the smallest ball, c = k × 10 px / r = 200/s)"),
              w.halted()->c_str());
 }
 
@@ -306,7 +338,7 @@ void TestStability::dragAsAForceLimitsTheLightestBall()
 // end. Lower dt below 3.1e-10 s") once k ≲ 6e-5 /s or ω ≲ 3e-5 rad/s: a tiny
 // drag, or drag as a force on a heavy ball (k m₁₀ / m = 4e-7 /s at m = 1e9),
 // halted the world.
-void TestStability::weakDragAndSoftSpringsAreStable()
+TEST_CASE("TestStability::weakDragAndSoftSpringsAreStable")
 {
     for (const IntegratorKind kind :
          {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Rk4, IntegratorKind::Yoshida4}) {
@@ -315,18 +347,18 @@ void TestStability::weakDragAndSoftSpringsAreStable()
             s.settings.drag = DragSettings{true, DragLaw::Linear, k};
             s.settings.time.integrator = kind;
             World w;
-            QVERIFY(!w.reset(s));
-            QVERIFY2(!w.halted(), w.halted()->c_str());
+            VERIFY(!w.reset(s));
+            VERIFY2(!w.halted(), w.halted()->c_str());
         }
         Scene heavy = openScene({ballAt(100, 100, 50, 0, 10, 1e9)});
         heavy.settings.drag = DragSettings{true, DragLaw::Linear, 0.1};
         heavy.settings.time.integrator = kind;
         World w;
-        QVERIFY(!w.reset(heavy));
-        QVERIFY2(!w.halted(), w.halted()->c_str());
+        VERIFY(!w.reset(heavy));
+        VERIFY2(!w.halted(), w.halted()->c_str());
         for (const double k : {1e-10, 1e-14}) {
-            QVERIFY(!w.reset(springScene(kind, k, 1.0 / 60)));
-            QVERIFY2(!w.halted(), w.halted()->c_str());
+            VERIFY(!w.reset(springScene(kind, k, 1.0 / 60)));
+            VERIFY2(!w.halted(), w.halted()->c_str());
         }
     }
 }
@@ -335,23 +367,23 @@ void TestStability::weakDragAndSoftSpringsAreStable()
 // with 8 sub-steps the limit is dt = 8 × 2 / c = 0.008 s at c = 2000 /s. The
 // advice must say so (before: "Lower dt below 3.65e-07 s", the bisection
 // misled by rounding in tr² − 4 det near the double eigenvalue 1).
-void TestStability::dragLimitWithSubsteps()
+TEST_CASE("TestStability::dragLimitWithSubsteps")
 {
     Scene s = openScene({ballAt(100, 100, 50, 0)});
     s.settings.drag = DragSettings{true, DragLaw::Linear, 2000.0};
     s.settings.time.substeps = 8;
     World w;
-    QVERIFY(!w.reset(s));
-    QVERIFY(w.halted());
-    const QString m = QString::fromStdString(*w.halted());
-    QVERIFY2(m.contains("(k·h = 4.17, h the sub-step)"), qPrintable(m));
-    const auto match = QRegularExpression(QStringLiteral("Lower dt below ([0-9.e-]+) s")).match(m);
-    QVERIFY2(match.hasMatch(), qPrintable(m));
-    const double advised = match.captured(1).toDouble();
-    QVERIFY2(advised <= 0.008 && advised > 0.99 * 0.008, qPrintable(m));
+    VERIFY(!w.reset(s));
+    VERIFY(w.halted());
+    const Text m = Text(*w.halted());
+    VERIFY2(m.contains("(k·h = 4.17, h the sub-step)"), Text(m).c_str());
+    std::smatch match;
+    VERIFY2(std::regex_search(m.str(), match, std::regex("Lower dt below ([0-9.e-]+) s")), m.c_str());
+    const double advised = std::stod(match[1].str());
+    VERIFY2(advised <= 0.008 && advised > 0.99 * 0.008, Text(m).c_str());
     s.settings.time.dt = advised;
-    QVERIFY(!w.reset(s));
-    QVERIFY2(!w.halted(), w.halted()->c_str());
+    VERIFY(!w.reset(s));
+    VERIFY2(!w.halted(), w.halted()->c_str());
 }
 
 // Per-frame steps ignore dt: each step is 1/60 s in `substeps` pieces. A
@@ -359,25 +391,23 @@ void TestStability::dragLimitWithSubsteps()
 // n ≥ ω / (60 × 2) = 8.33: 9 sub-steps. Before, the message named the
 // ignored dt and advised a dt above it ("at dt = 0.001 s … Lower dt below
 // 0.00799 s").
-void TestStability::perFrameAdvisesSubsteps()
+TEST_CASE("TestStability::perFrameAdvisesSubsteps")
 {
     Scene s = springScene(IntegratorKind::SemiImplicitEuler, 1e6, 0.001);
     s.settings.time.perFrame = true;
     s.settings.time.substeps = 4;
     World w;
-    QVERIFY(!w.reset(s));
-    QVERIFY(w.halted());
-    const QString m = QString::fromStdString(*w.halted());
-    QVERIFY2(m.contains("with per-frame steps of 1/60 s (dt is ignored)"), qPrintable(m));
-    QVERIFY2(!m.contains("at dt =") && !m.contains("Lower dt"), qPrintable(m));
-    QVERIFY2(m.endsWith("Raise substeps to 9 or more"), qPrintable(m));
+    VERIFY(!w.reset(s));
+    VERIFY(w.halted());
+    const Text m = Text(*w.halted());
+    VERIFY2(m.contains("with per-frame steps of 1/60 s (dt is ignored)"), Text(m).c_str());
+    VERIFY2(!m.contains("at dt =") && !m.contains("Lower dt"), Text(m).c_str());
+    VERIFY2(m.endsWith("Raise substeps to 9 or more"), Text(m).c_str());
     s.settings.time.substeps = 9;
-    QVERIFY(!w.reset(s));
-    QVERIFY(!w.halted());
+    VERIFY(!w.reset(s));
+    VERIFY(!w.halted());
     s.settings.time.substeps = 8;
-    QVERIFY(!w.reset(s));
-    QVERIFY(w.halted());
+    VERIFY(!w.reset(s));
+    VERIFY(w.halted());
 }
 
-QTEST_APPLESS_MAIN(TestStability)
-#include "test_stability.moc"
