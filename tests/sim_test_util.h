@@ -16,6 +16,13 @@ namespace forcelab::test {
 using sim::ballAt;
 using sim::openScene;
 
+/// `b` painted `color` (for tests that look at the picture).
+inline sim::Ball coloured(sim::Ball b, sim::Rgb color)
+{
+    b.color = color;
+    return b;
+}
+
 /// Starts `world` on the scene with this integrator and step and takes
 /// `steps` steps (fewer if the world halts). Returns why the scene was
 /// refused, or nullopt.

@@ -36,11 +36,6 @@ BallState makeBalls(const std::vector<Ball>& balls)
     return s;
 }
 
-Ball ball(double x, double y, double vx, double vy, double r = 10.0, double mass = 0.0)
-{
-    return ballAt(x, y, vx, vy, r, mass);
-}
-
 WallSettings noWalls() { return WallSettings{false, false, false, false, WallModel::Clamp, 1.0}; }
 
 CollisionSettings settingsFor(Response r, double e = 1.0, Detection d = Detection::Sweep, bool continuous = false)
@@ -204,7 +199,7 @@ TEST_CASE("TestCollisions::separatingPairsAreSkipped")
 {
     for (Response r : {Response::Reverse1D, Response::Elastic1D, Response::Axis2D, Response::Impulse2D}) {
         // Overlapping but moving apart: velocities stay, the overlap is pushed apart.
-        BallState b = makeBalls({ball(100, 100, -50, -10), ball(115, 105, 50, 10)});
+        BallState b = makeBalls({ballAt(100, 100, -50, -10), ballAt(115, 105, 50, 10)});
         const Matrix2X v0 = b.velocity;
         CollisionSystem sys;
         const Matrix2X start = b.position;
@@ -218,7 +213,7 @@ TEST_CASE("TestCollisions::separatingPairsAreSkipped")
 TEST_CASE("TestCollisions::equalMassesSwap")
 {
     for (Response r : {Response::Elastic1D, Response::Axis2D, Response::Impulse2D}) {
-        BallState b = makeBalls({ball(100, 100, 300, 0), ball(125, 100, -120, 0)});
+        BallState b = makeBalls({ballAt(100, 100, 300, 0), ballAt(125, 100, -120, 0)});
         CollisionSystem sys;
         drift(sys, b, settingsFor(r));
         REQUIRE_SAME(sys.contacts().size(), std::size_t(1));
@@ -233,7 +228,7 @@ TEST_CASE("TestCollisions::heavyBallBarelyMoves")
 {
     // A light ball hits a ball 10⁶ times heavier at rest: it bounces back at
     // almost the same speed, the heavy one moves at 2 v / (1 + 10⁶).
-    BallState b = makeBalls({ball(100, 100, 600, 0, 10, 1.0), ball(125, 100, 0, 0, 10, 1e6)});
+    BallState b = makeBalls({ballAt(100, 100, 600, 0, 10, 1.0), ballAt(125, 100, 0, 0, 10, 1e6)});
     CollisionSystem sys;
     drift(sys, b, settingsFor(Response::Impulse2D));
     const double heavy = 2.0 * 600.0 / (1.0 + 1e6);
@@ -253,9 +248,9 @@ TEST_CASE("TestCollisions::newtonsCradle")
 {
     for (Detection d : {Detection::Brute, Detection::Halved, Detection::Sweep, Detection::Grid}) {
         std::vector<Ball> balls;
-        balls.push_back(ball(40.0, 100.0, 240.0, 0.0)); // the striker, 40 px away
+        balls.push_back(ballAt(40.0, 100.0, 240.0, 0.0)); // the striker, 40 px away
         for (int i = 0; i < 5; ++i)
-            balls.push_back(ball(100.0 + 20.0 * i, 100.0, 0.0, 0.0)); // touching: distance = 2r exactly
+            balls.push_back(ballAt(100.0 + 20.0 * i, 100.0, 0.0, 0.0)); // touching: distance = 2r exactly
         BallState b = makeBalls(balls);
         CollisionSystem sys;
         for (int step = 0; step < 30; ++step)
@@ -277,7 +272,7 @@ TEST_CASE("TestCollisions::offCentreHit")
 {
     const double off = 10.0; // vertical offset of the centres (r = 10)
     auto run = [&](Response r) {
-        BallState b = makeBalls({ball(100, 100, 300, 0), ball(100 + 17.0 + 300 * kDt, 100 + off, 0, 0)});
+        BallState b = makeBalls({ballAt(100, 100, 300, 0), ballAt(100 + 17.0 + 300 * kDt, 100 + off, 0, 0)});
         b.position(0, 1) = 100.0 + std::sqrt(400.0 - off * off) - 0.5 + 300.0 * kDt;
         CollisionSystem sys;
         drift(sys, b, settingsFor(r));
@@ -302,7 +297,7 @@ TEST_CASE("TestCollisions::continuousCatchesFastBalls")
     // detection they end 1 radius apart on the wrong sides and pass through.
     auto run = [&](bool continuous, double gapRadii, double closingRadii, Detection d) {
         const double v = 0.5 * closingRadii * r / kDt;
-        BallState b = makeBalls({ball(0.0, 0.0, v, 0.0, r), ball(gapRadii * r, 0.0, -v, 0.0, r)});
+        BallState b = makeBalls({ballAt(0.0, 0.0, v, 0.0, r), ballAt(gapRadii * r, 0.0, -v, 0.0, r)});
         CollisionSystem sys;
         for (int step = 0; step < 3; ++step)
             drift(sys, b, settingsFor(Response::Impulse2D, 1.0, d, continuous));
@@ -315,7 +310,7 @@ TEST_CASE("TestCollisions::continuousCatchesFastBalls")
         VERIFY(caught.position(0, 0) < caught.position(0, 1));
         VERIFY(caught.velocity(0, 0) < 0.0 && caught.velocity(0, 1) > 0.0);
         // One step exactly: impact at t = 9/12, then a quarter step back out.
-        BallState one = makeBalls({ball(0.0, 0.0, 60.0 / kDt, 0.0, r), ball(110.0, 0.0, -60.0 / kDt, 0.0, r)});
+        BallState one = makeBalls({ballAt(0.0, 0.0, 60.0 / kDt, 0.0, r), ballAt(110.0, 0.0, -60.0 / kDt, 0.0, r)});
         CollisionSystem sys;
         drift(sys, one, settingsFor(Response::Impulse2D, 1.0, d, true));
         VERIFY(std::abs(one.position(0, 0) - 30.0) <= 1e-9);
@@ -334,7 +329,7 @@ TEST_CASE("TestCollisions::flagOnlyMarks")
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<Ball> balls;
     for (int i = 0; i < 300; ++i)
-        balls.push_back(ball(300 * u(rng), 300 * u(rng), 100 * u(rng), 100 * u(rng), 5 + 5 * u(rng)));
+        balls.push_back(ballAt(300 * u(rng), 300 * u(rng), 100 * u(rng), 100 * u(rng), 5 + 5 * u(rng)));
     BallState b = makeBalls(balls);
     const BallState before = b;
     CollisionSystem sys;
@@ -380,7 +375,7 @@ TEST_CASE("TestCollisions::hundredBallsOnOnePoint")
         for (bool moving : {false, true}) {
             std::vector<Ball> balls;
             for (int i = 0; i < 100; ++i)
-                balls.push_back(ball(300.0, 200.0, moving ? 30.0 * std::cos(i) : 0.0, moving ? 30.0 * std::sin(i) : 0.0));
+                balls.push_back(ballAt(300.0, 200.0, moving ? 30.0 * std::cos(i) : 0.0, moving ? 30.0 * std::sin(i) : 0.0));
             BallState b = makeBalls(balls);
             const double ke0 = 0.5 * b.mass.dot(b.velocity.colwise().squaredNorm().transpose());
             CollisionSystem sys;
@@ -420,7 +415,7 @@ TEST_CASE("TestCollisions::responseDoesNotDependOnDetector")
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<Ball> balls;
     for (int i = 0; i < 400; ++i)
-        balls.push_back(ball(20 + 560 * u(rng), 20 + 360 * u(rng), 200 * u(rng) - 100, 200 * u(rng) - 100, 4 + 6 * u(rng)));
+        balls.push_back(ballAt(20 + 560 * u(rng), 20 + 360 * u(rng), 200 * u(rng) - 100, 200 * u(rng) - 100, 4 + 6 * u(rng)));
     for (Response r : {Response::Elastic1D, Response::Axis2D, Response::Impulse2D}) {
         std::vector<BallState> finals;
         for (Detection d : {Detection::Brute, Detection::Halved, Detection::Sweep, Detection::Grid}) {

@@ -2,6 +2,7 @@
 // the canvas shows balls where the world says they are, keyboard shortcuts
 // act, pointer events reach the world, and the frame loop takes whole steps.
 
+#include "tests/sim_test_util.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
@@ -37,19 +38,9 @@ sim::Scene threeBalls()
 {
     sim::Scene scene;
     scene.settings.box = {600.0, 400.0};
-    sim::Ball a;
-    a.position = {110.0, 120.0};
-    a.radius = 20.0;
-    a.color = 0xe05050;
-    sim::Ball b;
-    b.position = {310.0, 210.0};
-    b.radius = 30.0;
-    b.color = 0x50b050;
-    sim::Ball c;
-    c.position = {520.0, 330.0};
-    c.radius = 15.0;
-    c.color = 0x3090d0;
-    scene.balls = {a, b, c};
+    scene.balls = {forcelab::test::coloured(sim::ballAt(110, 120, 0, 0, 20), 0xe05050),
+                   forcelab::test::coloured(sim::ballAt(310, 210, 0, 0, 30), 0x50b050),
+                   forcelab::test::coloured(sim::ballAt(520, 330, 0, 0, 15), 0x3090d0)};
     return scene;
 }
 

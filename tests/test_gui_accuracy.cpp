@@ -5,6 +5,7 @@
 // spring or an orbit, and the trade-off and convergence studies run in the
 // background, can be cancelled, and report what theory predicts.
 
+#include "tests/sim_test_util.h"
 #include "ui/accuracy_dock.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
@@ -45,12 +46,7 @@ sim::Scene springScene(sim::IntegratorKind integrator, double dt, bool drag)
         s.settings.drag = sim::DragSettings{true, sim::DragLaw::Linear, 0.5, sim::ForceScale::None};
     s.settings.time.integrator = integrator;
     s.settings.time.dt = dt;
-    sim::Ball b;
-    b.position = {400.0, 200.0};
-    b.velocity = {0.0, 120.0};
-    b.radius = 10.0;
-    b.mass = 1.0;
-    s.balls = {b};
+    s.balls = {sim::ballAt(400, 200, 0, 120, 10, 1)};
     return s;
 }
 

@@ -5,6 +5,7 @@
 // the CSV holds the states the world went through, and the plots sample once
 // per step and never while paused.
 
+#include "tests/sim_test_util.h"
 #include "ui/canvas.h"
 #include "ui/plots_dock.h"
 #include "ui/simulation_controller.h"
@@ -55,12 +56,7 @@ QRgb pixelAt(const QImage& image, QPointF p)
 
 sim::Ball ball(sim::Vec2 position, sim::Vec2 velocity, double radius, sim::Rgb color = 0x3070c0)
 {
-    sim::Ball b;
-    b.position = position;
-    b.velocity = velocity;
-    b.radius = radius;
-    b.color = color;
-    return b;
+    return forcelab::test::coloured(sim::ballAt(position.x(), position.y(), velocity.x(), velocity.y(), radius), color);
 }
 
 // A 600 × 400 box (shown at scale 1.2 in a 900 × 500 canvas) without the grid.

@@ -51,18 +51,8 @@ sim::Scene plainScene()
 {
     sim::Scene scene;
     scene.settings.box = {600.0, 400.0};
-    sim::Ball a;
-    a.position = {150.0, 120.0};
-    a.velocity = {40.0, -10.0};
-    a.radius = 20.0;
-    a.color = 0xe05050;
-    sim::Ball b;
-    b.position = {420.0, 260.0};
-    b.velocity = {-25.0, 30.0};
-    b.radius = 12.0;
-    b.mass = 3.5;
-    b.color = 0x3090d0;
-    scene.balls = {a, b};
+    scene.balls = {forcelab::test::coloured(sim::ballAt(150, 120, 40, -10, 20), 0xe05050),
+                   forcelab::test::coloured(sim::ballAt(420, 260, -25, 30, 12, 3.5), 0x3090d0)};
     scene.spawn.count = 3;
     return scene;
 }
