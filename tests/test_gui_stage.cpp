@@ -25,6 +25,7 @@ private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
     void stageFillsTheScreen_data();
     void stageFillsTheScreen();
+    void quittingFromTheStageKeepsTheNormalLayout();
 };
 
 void GuiStageTest::stageFillsTheScreen_data()
@@ -78,6 +79,24 @@ void GuiStageTest::stageFillsTheScreen()
     QVERIFY(!stage->isChecked());
     QVERIFY(window.menuBar()->isVisible());
     QVERIFY(!window.findChild<QWidget*>(QStringLiteral("stageBar"))->isVisible());
+}
+
+// Quitting in the stage view: the next start has its docks, menus and toolbars.
+void GuiStageTest::quittingFromTheStageKeepsTheNormalLayout()
+{
+    {
+        MainWindow window(QStringLiteral("gravity"));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
+        window.close(); // saves the settings
+    }
+    MainWindow again(QStringLiteral("gravity"));
+    again.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&again));
+    QVERIFY(again.menuBar()->isVisible());
+    QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("parametersDock"))->isVisible());
+    QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("lessonsDock"))->isVisible());
 }
 
 QTEST_MAIN(GuiStageTest)

@@ -443,8 +443,10 @@ void MainWindow::readSettings()
 void MainWindow::writeSettings() const
 {
     QSettings settings;
-    settings.setValue(kGeometryKey, saveGeometry());
-    settings.setValue(kStateKey, saveState());
+    // Quitting from the stage view keeps the normal layout for next time.
+    const bool staged = m_stageBar && m_stageBar->isVisible();
+    settings.setValue(kGeometryKey, staged ? m_normalGeometry : saveGeometry());
+    settings.setValue(kStateKey, staged ? m_normalDocks : saveState());
     if (!m_lesson.source.isEmpty())
         settings.setValue(kLastLessonKey, m_lesson.source);
     settings.setValue(kDirectoryKey, m_lastDirectory);
