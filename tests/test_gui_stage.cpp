@@ -17,6 +17,9 @@
 #include <QTest>
 #include <QToolButton>
 
+#include <algorithm>
+#include <vector>
+
 using namespace forcelab;
 
 class GuiStageTest : public QObject {
@@ -26,6 +29,9 @@ private slots:
     void stageFillsTheScreen_data();
     void stageFillsTheScreen();
     void quittingFromTheStageKeepsTheNormalLayout();
+    void showMenuTogglesWhatIsDrawn();
+    void autoArrowsAreReadable_data();
+    void autoArrowsAreReadable();
 };
 
 void GuiStageTest::stageFillsTheScreen_data()
@@ -97,6 +103,74 @@ void GuiStageTest::quittingFromTheStageKeepsTheNormalLayout()
     QVERIFY(again.menuBar()->isVisible());
     QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("parametersDock"))->isVisible());
     QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("lessonsDock"))->isVisible());
+}
+
+namespace {
+
+// Pixels of the velocity arrows' green in a picture of the canvas.
+int velocityPixels(Canvas* canvas)
+{
+    const QImage image = canvas->renderImage();
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            n += image.pixel(x, y) == canvas_colors::kVelocity ? 1 : 0;
+    return n;
+}
+
+} // namespace
+
+// The View menu's Show actions switch what the stage draws; a lesson change
+// brings back the lesson's own choice.
+void GuiStageTest::showMenuTogglesWhatIsDrawn()
+{
+    MainWindow window(QStringLiteral("the-line-of-impact")); // lesson 29 draws velocity arrows
+    QAction* velocity = window.findChild<QAction*>(QStringLiteral("showVelocity"));
+    QVERIFY(velocity && velocity->isChecked());
+    window.canvas()->resize(800, 560);
+    QVERIFY(velocityPixels(window.canvas()) > 50);
+    velocity->setChecked(false);
+    QVERIFY(!window.canvas()->overlays().velocity);
+    QCOMPARE(velocityPixels(window.canvas()), 0);
+    QAction* trails = window.findChild<QAction*>(QStringLiteral("showTrails"));
+    trails->setChecked(true);
+    QVERIFY(window.canvas()->overlays().trails);
+    QVERIFY(window.openLesson(QStringLiteral("gravity")));
+    QVERIFY(window.openLesson(QStringLiteral("the-line-of-impact")));
+    QVERIFY(velocity->isChecked() && window.canvas()->overlays().velocity);
+    QCOMPARE(trails->isChecked(), window.canvas()->overlays().trails);
+}
+
+void GuiStageTest::autoArrowsAreReadable_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::newRow("29 line of impact") << "the-line-of-impact";
+    QTest::newRow("32 gas") << "gas-in-a-box";
+}
+
+// With "arrows of a readable length" (on by default) the median velocity
+// arrow is 45 px on screen, within the 30–60 px a class can read; the
+// lesson's fixed scale gave 8 px in lesson 29.
+void GuiStageTest::autoArrowsAreReadable()
+{
+    QFETCH(QString, lesson);
+    MainWindow window(lesson);
+    Canvas* canvas = window.canvas();
+    canvas->resize(800, 560);
+    const sim::World& world = window.controller()->world();
+    const ViewTransform view = canvas->viewTransform();
+    std::vector<double> lengths;
+    const WorldPainter::ArrowScales scales = WorldPainter::arrowScales(world, view, canvas->paintOptions(), nullptr);
+    for (int i = 0; i < world.balls().size(); ++i) {
+        const double v = world.balls().velocity.col(i).norm();
+        if (v > 0.0)
+            lengths.push_back(view.toWidget(scales.velocity * v));
+    }
+    QVERIFY(!lengths.empty());
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    const double median = lengths[lengths.size() / 2];
+    qInfo("%s: median velocity arrow %.1f px", qPrintable(lesson), median);
+    QVERIFY2(median >= 30.0 && median <= 60.0, qPrintable(QString::number(median)));
 }
 
 QTEST_MAIN(GuiStageTest)

@@ -90,6 +90,12 @@ void Canvas::setLineScale(double scale)
     update();
 }
 
+void Canvas::setAutoArrows(bool on)
+{
+    m_options.autoArrows = on;
+    update();
+}
+
 void Canvas::setBoxMargin(double pixels)
 {
     m_options.margin = pixels;

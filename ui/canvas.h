@@ -42,6 +42,8 @@ public:
     void setLineScale(double scale);
     /// px of free space kept around the box (10; the stage view uses 4).
     void setBoxMargin(double pixels);
+    /// Arrows scaled so a typical one is readable (WorldPainter::kArrowPixels).
+    void setAutoArrows(bool on);
     const PaintOptions& paintOptions() const { return m_options; }
 
     /// Switches the trails overlay (same as setOverlays with overlays.trails).

@@ -2,6 +2,7 @@
 
 #include "accuracy_dock.h"
 #include "canvas.h"
+#include "overlay_actions.h"
 #include "stage_bar.h"
 #include "handbook.h"
 #include "code_dock.h"
@@ -34,6 +35,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QShortcut>
+#include <QToolButton>
 #include <QBoxLayout>
 #include <QSettings>
 #include <QStatusBar>
@@ -96,6 +98,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_trajectory = new TrajectoryExport(m_controller, this);
 
     createActions();
+    m_overlayActions = new OverlayActions(m_canvas, this);
     m_stageBar = new StageBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction}, central);
     m_stageLayout->addWidget(m_stageBar);
     m_stageBar->hide();
@@ -265,6 +268,7 @@ void MainWindow::createMenus()
     // Also filled by createToolBars and createDocks with their toggle actions.
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addMenu(m_overlayActions->menu());
     m_viewMenu->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -283,6 +287,18 @@ void MainWindow::createToolBars()
     m_simulationToolBar->addAction(m_slowerAction);
     m_simulationToolBar->addAction(m_fasterAction);
     m_simulationToolBar->addAction(m_presentationAction);
+    {
+        // The drawing aids, one click away: a button with the View menu's "Show" menu.
+        auto* show = new QToolButton(m_simulationToolBar);
+        show->setObjectName(QStringLiteral("showButton"));
+        show->setText(tr("Show"));
+        show->setIcon(style()->standardIcon(QStyle::SP_FileDialogContentsView));
+        show->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        show->setPopupMode(QToolButton::InstantPopup);
+        show->setMenu(m_overlayActions->menu());
+        show->setAccessibleName(tr("Show: what the stage draws"));
+        m_simulationToolBar->addWidget(show);
+    }
 
     m_fileToolBar = addToolBar(tr("File"));
     m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
@@ -503,6 +519,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
         overlays.readout = overlays.totals = false;
     }
     m_canvas->setOverlays(overlays);
+    m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
     m_inspectorDock->setSelectedBall(-1);

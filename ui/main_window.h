@@ -27,6 +27,7 @@ namespace forcelab {
 class AccuracyDock;
 class CodeDock;
 class StageBar;
+class OverlayActions;
 class Canvas;
 class InspectorDock;
 class LessonsDock;
@@ -124,6 +125,7 @@ private:
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StageBar* m_stageBar = nullptr;
+    OverlayActions* m_overlayActions = nullptr;
     QBoxLayout* m_stageLayout = nullptr;
     QByteArray m_normalGeometry; // before the stage view
     QByteArray m_normalDocks;

@@ -429,12 +429,15 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
         which.append(options.selected);
     }
     const double head = 9.0 * options.lineScale;
+    const ArrowScales scales = arrowScales(world, view, options, accelerations);
+    p.save();
+    p.setClipRect(view.boxRect(), Qt::IntersectClip); // arrows stay on the stage, out of the panels
     p.setRenderHint(QPainter::Antialiasing, true);
     if (options.overlays.velocity) {
         QList<QLineF> lines;
         for (int i : which) {
             const sim::Vec2 x = at.col(i);
-            appendArrow(lines, view.toWidget(x), view.toWidget(x + options.velocityScale * balls.velocity.col(i)), head);
+            appendArrow(lines, view.toWidget(x), view.toWidget(x + scales.velocity * balls.velocity.col(i)), head);
         }
         p.setPen(QPen(QColor::fromRgb(canvas_colors::kVelocity), 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
         p.drawLines(lines);
@@ -443,13 +446,51 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
         QList<QLineF> lines;
         for (int i : which) {
             const sim::Vec2 x = at.col(i);
-            appendArrow(lines, view.toWidget(x), view.toWidget(x + options.accelerationScale * accelerations->col(i)),
+            appendArrow(lines, view.toWidget(x), view.toWidget(x + scales.acceleration * accelerations->col(i)),
                         head);
         }
         p.setPen(QPen(QColor::fromRgb(canvas_colors::kAcceleration), 2.0 * options.lineScale, Qt::SolidLine,
                       Qt::RoundCap));
         p.drawLines(lines);
     }
+    p.restore();
+}
+
+namespace {
+
+// The median of the nonzero lengths of the columns of m (0 when none).
+double medianLength(const sim::Matrix2X& m)
+{
+    std::vector<double> lengths;
+    lengths.reserve(static_cast<std::size_t>(m.cols()));
+    for (Eigen::Index i = 0; i < m.cols(); ++i) {
+        const double l = m.col(i).norm();
+        if (l > 0.0 && std::isfinite(l))
+            lengths.push_back(l);
+    }
+    if (lengths.empty())
+        return 0.0;
+    const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), mid, lengths.end());
+    return *mid;
+}
+
+} // namespace
+
+WorldPainter::ArrowScales WorldPainter::arrowScales(const sim::World& world, const ViewTransform& view,
+                                                    const PaintOptions& options, const sim::Matrix2X* accelerations)
+{
+    ArrowScales s{options.velocityScale, options.accelerationScale};
+    if (!options.autoArrows || !(view.scale() > 0.0))
+        return s;
+    // A scale of k seconds draws a speed v as k v world px, k v scale screen px.
+    const double v = medianLength(world.balls().velocity);
+    if (v > 0.0)
+        s.velocity = kArrowPixels / (view.scale() * v);
+    const double a = accelerations ? medianLength(*accelerations) : 0.0;
+    if (a > 0.0)
+        s.acceleration = kArrowPixels / (view.scale() * a);
+    return s;
 }
 
 void WorldPainter::paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,

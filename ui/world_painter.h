@@ -61,6 +61,7 @@ struct PaintOptions {
     double lineScale = 1.0;         ///< thicker lines and larger text for a projector
     double margin = 10.0;           ///< px, free space around the box (the stage view uses less)
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
+    bool autoArrows = false;        ///< scale the arrows so the median one is kArrowPixels long on screen
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
@@ -110,6 +111,18 @@ public:
     void setMarkedColor(sim::Rgb color) { m_sprites.setMarkedColor(color); }
     sim::Rgb markedColor() const { return m_sprites.markedColor(); }
     const BallSprites& sprites() const { return m_sprites; }
+
+    /// The on-screen length of the median arrow with autoArrows, px.
+    static constexpr double kArrowPixels = 45.0;
+    /// The velocity and acceleration scales the arrows are drawn with (s and
+    /// s²): the options' own, or with autoArrows those that make the median
+    /// arrow of the balls that move kArrowPixels long.
+    struct ArrowScales {
+        double velocity = 0.25;
+        double acceleration = 0.05;
+    };
+    static ArrowScales arrowScales(const sim::World& world, const ViewTransform& view, const PaintOptions& options,
+                                   const sim::Matrix2X* accelerations);
 
     /// Above this many balls, arrows are drawn for the selected ball only.
     static constexpr int kMaxArrowBalls = 2000;
