@@ -178,8 +178,8 @@ inline void report(const char* format, ...)
 /// `expected` (see same()), showing both.
 #define REQUIRE_SAME(actual, expected)                                                                             \
     do {                                                                                                           \
-        const auto& requireActual_ = (actual);                                                                     \
-        const auto& requireExpected_ = (expected);                                                                 \
+        const auto requireActual_ = (actual); /* copies: the value may live in a temporary */                     \
+        const auto requireExpected_ = (expected);                                                                  \
         REQUIRE_MESSAGE(::forcelab::test::same(requireActual_, requireExpected_),                                 \
                         #actual " is " << ::forcelab::test::show(requireActual_) << ", expected " #expected " = "  \
                                        << ::forcelab::test::show(requireExpected_));                               \

@@ -69,7 +69,7 @@ void StageBar::setVertical(bool vertical)
 {
     m_vertical = vertical;
     while (m_grid->count() > 0)
-        m_grid->takeAt(0);
+        delete m_grid->takeAt(0); // the layout item only; the widget stays
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);
