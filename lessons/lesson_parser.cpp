@@ -676,7 +676,8 @@ void parseTeacher(Reader& r, const QJsonObject& o, qsizetype challenges, Teacher
     r.string(o, p, "goal", t.goal);
     r.integer(o, p, "minutes", 0, 600, t.minutes);
     r.stringList(o, p, "misconceptions", t.misconceptions);
-    if (r.stringList(o, p, "answers", t.answers) && t.answers.size() != challenges)
+    // No answers yet is allowed; once given, one per challenge.
+    if (r.stringList(o, p, "answers", t.answers) && !t.answers.isEmpty() && t.answers.size() != challenges)
         r.fail(join(p, "answers"), QStringLiteral("%1 %2 for %3 %4; give one answer per challenge, in order")
                                        .arg(t.answers.size())
                                        .arg(t.answers.size() == 1 ? "answer" : "answers")

@@ -315,19 +315,24 @@ QByteArray saveLesson(const Lesson& lesson)
         {"overlays", strings(lesson.overlays, false)},
     };
     if (!lesson.teacher.empty()) {
+        // Only what the notes hold: an empty list or goal is left out.
         const TeacherNotes& t = lesson.teacher;
-        QByteArray block = "{\n";
-        block += "    \"goal\": " + str(t.goal) + ",\n";
-        block += "    \"minutes\": " + num(t.minutes) + ",\n";
-        QList<QByteArray> items;
-        for (const QString& m : t.misconceptions)
-            items << str(m);
-        block += "    \"misconceptions\": " + blockArray(items, 4) + ",\n";
-        items.clear();
-        for (const QString& a : t.answers)
-            items << str(a);
-        block += "    \"answers\": " + blockArray(items, 4) + "\n  }";
-        top.push_back({"teacher", block});
+        QList<QByteArray> fields;
+        if (!t.goal.isEmpty())
+            fields << "\"goal\": " + str(t.goal);
+        if (t.minutes > 0)
+            fields << "\"minutes\": " + num(t.minutes);
+        auto list = [](const QStringList& texts) {
+            QList<QByteArray> items;
+            for (const QString& text : texts)
+                items << str(text);
+            return blockArray(items, 4);
+        };
+        if (!t.misconceptions.isEmpty())
+            fields << "\"misconceptions\": " + list(t.misconceptions);
+        if (!t.answers.isEmpty())
+            fields << "\"answers\": " + list(t.answers);
+        top.push_back({"teacher", "{\n    " + fields.join(",\n    ") + "\n  }"});
     }
     if (!lesson.claims.empty()) {
         QList<QByteArray> claims;

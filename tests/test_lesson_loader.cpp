@@ -255,6 +255,13 @@ void TestLessonLoader::teacherNotesAreReadAndWritten()
     QVERIFY2(back.ok(), qPrintable(back.errors.join(" | ")));
     compareLessons(*r.lesson, *back.lesson);
 
+    // Notes without answers (not written yet) load, and save and load back.
+    const LoadResult partial = loadText(minimal(R"("challenges": ["How high?", "How long?"], "teacher": {"goal": "g"})"));
+    QVERIFY2(partial.ok(), qPrintable(partial.errors.join(" | ")));
+    const LoadResult partialBack = LessonLoader::loadBytes(saveLesson(*partial.lesson), QStringLiteral("saved.json"));
+    QVERIFY2(partialBack.ok(), qPrintable(partialBack.errors.join(" | ")));
+    compareLessons(*partial.lesson, *partialBack.lesson);
+
     const LoadResult bad = loadText(minimal(R"("challenges": ["How high?"], "teacher": {"answers": ["a", "b"], "time": 3})"));
     QVERIFY(!bad.ok());
     const QString all = bad.errors.join(" | ");
