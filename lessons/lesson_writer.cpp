@@ -9,6 +9,7 @@
 #include "sim/parameters.h"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -172,7 +173,7 @@ QByteArray claimLine(const sim::Claim& c)
     switch (c.test) {
     case sim::ClaimTest::Near:
         f.push_back({"near", num(c.value)});
-        f.push_back(c.relative ? std::pair{"within_percent", num(100.0 * c.tolerance)} : std::pair{"within", num(c.tolerance)});
+        f.push_back(c.relative ? std::pair{"within_percent", num(std::min(100.0, 100.0 * c.tolerance))} : std::pair{"within", num(c.tolerance)});
         break;
     case sim::ClaimTest::Below:
         f.push_back({"below", num(c.value)});
