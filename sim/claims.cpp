@@ -53,6 +53,9 @@ constexpr std::array kMeasures{
     ClaimMeasure{"stopped", "1", W::At, false,
                  "1 when the simulation stopped itself before `at` because the motion blows up (its message says "
                  "why), else 0"},
+    ClaimMeasure{"acceleration_ratio", "1", W::At, true,
+                 "the ball's acceleration along `axis` divided by that of ball `other` at the moment `at`, as the "
+                 "acceleration arrows show them"},
 };
 
 std::string number(double v)
@@ -167,6 +170,11 @@ public:
             return floorHeight(w, b.position(1, i));
         if (name == "distance")
             return (b.position.col(i) - b.position.col(m_claim.other)).norm();
+        if (name == "acceleration_ratio") {
+            const Matrix2X a = w.accelerations();
+            const double other = component(a.col(m_claim.other), m_claim.axis);
+            return other != 0.0 ? component(a.col(i), m_claim.axis) / other : std::numeric_limits<double>::quiet_NaN();
+        }
         if (b.size() == 0)
             return std::numeric_limits<double>::quiet_NaN();
         const Eigen::VectorXd speed = b.velocity.colwise().norm().transpose();
@@ -285,10 +293,10 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
     }
     World& w = *world;
     const int n = w.balls().size();
-    if (row->perBall && (claim.ball < 0 || claim.ball >= n || (row->name == "distance" && (claim.other < 0 || claim.other >= n))))
+    const bool usesOther = row->name == "distance" || row->name == "acceleration_ratio";
+    if (row->perBall && (claim.ball < 0 || claim.ball >= n || (usesOther && (claim.other < 0 || claim.other >= n))))
         return refused(cat({"the scene has ", std::to_string(n), n == 1 ? " ball" : " balls", ", so there is no ball ",
-                            std::to_string(row->name == "distance" && claim.ball >= 0 && claim.ball < n ? claim.other
-                                                                                                        : claim.ball)}));
+                            std::to_string(usesOther && claim.ball >= 0 && claim.ball < n ? claim.other : claim.ball)}));
 
     Measurer m(claim, *row);
     m.start(w);

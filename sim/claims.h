@@ -33,7 +33,7 @@ struct Claim {
     std::string text;       ///< the lesson's sentence this claim checks, in the lesson's words
     std::string measure;    ///< a name of claimMeasures(): "apex", "period", "energy_drift", …
     int ball = 0;           ///< the ball measured, for measurements of one ball
-    int other = 1;          ///< the second ball, for "distance"
+    int other = 1;          ///< the second ball, for "distance" and "acceleration_ratio"
     double at = 1.0;        ///< s: the moment (At), the length of the run (OverRun) or the latest time for the event (Event)
     int occurrence = 1;     ///< Event: which one, 1 for the first
     char axis = 'y';        ///< 'x' or 'y': the coordinate of position, velocity, turning points and period

@@ -182,3 +182,38 @@ TEST_CASE("TestClaims::dragStopsTheWorldWhenKTimesDtPassesTwo")
     VERIFY2(r.holds, r.explanation.c_str());
 }
 
+TEST_CASE("TestClaims::accelerationRatioOfTwoBallsInAPointForce")
+{
+    // A repelling point at (100, 200) acting as a force (scale mass): a = S (m₁₀/m) / d².
+    // Ball 0 (r = 5, so m₁₀/m = 8) at d = 100, ball 1 (r = 10) at d = 200, both to its right:
+    // a₀ / a₁ = 8 × (200/100)² = 32 along x.
+    Scene s = openScene({ballAt(200, 200, 0, 0, 5), ballAt(300, 200, 0, 0, 10)});
+    s.settings.point.enabled = true;
+    s.settings.point.kind = PointKind::Repel;
+    s.settings.point.position = {100.0, 200.0};
+    s.settings.point.scale = ForceScale::Mass;
+    Claim c = near("acceleration_ratio", 32.0, 1e-9, 0.0);
+    c.axis = 'x';
+    ClaimResult r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    // The other way round, and with scale none only the distance counts: 1/4.
+    c.ball = 1;
+    c.other = 0;
+    c.value = 1.0 / 32.0;
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    s.settings.point.scale = ForceScale::None;
+    c.value = 0.25;
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    // Along y both are 0: nothing to divide by, so it cannot be measured.
+    c.axis = 'y';
+    r = checkClaim(s, c);
+    VERIFY(!r.holds && std::isnan(r.measured));
+    // A second ball that is not there.
+    c.axis = 'x';
+    c.other = 2;
+    r = checkClaim(s, c);
+    VERIFY2(r.explanation == "the scene has 2 balls, so there is no ball 2", r.explanation.c_str());
+}
+
