@@ -50,6 +50,9 @@ constexpr std::array kMeasures{
     ClaimMeasure{"period", "s", W::Event, true,
                  "the mean time of one full swing along `axis` over the first n swings, from one turning point "
                  "to the next of the same kind"},
+    ClaimMeasure{"tests_per_step", "tests", W::At, false,
+                 "how many pairs the collision detection tested with the exact distance test in the step that ends "
+                 "at `at` (0 when collisions are off)"},
 };
 
 std::string number(double v)
@@ -164,6 +167,8 @@ public:
             return floorHeight(w, b.position(1, i));
         if (name == "distance")
             return (b.position.col(i) - b.position.col(m_claim.other)).norm();
+        if (name == "tests_per_step")
+            return static_cast<double>(w.lastStep().pairsTested);
         if (b.size() == 0)
             return std::numeric_limits<double>::quiet_NaN();
         const Eigen::VectorXd speed = b.velocity.colwise().norm().transpose();

@@ -50,6 +50,7 @@ private slots:
     void elasticCollisionKeepsMomentum();
     void positionAtATime();
     void boundsAndFailures();
+    void testsPerStepCountPairs();
 };
 
 void TestClaims::everyMeasureIsDocumented()
@@ -157,6 +158,30 @@ void TestClaims::boundsAndFailures()
     QVERIFY(!r.holds);
     QVERIFY2(r.explanation == "the scene has 1 ball, so there is no ball 3", r.explanation.c_str());
     QVERIFY(!checkClaim(drop(0.8), near("apogee", 0.0, 1.0)).holds);
+}
+
+// N balls far apart from each other: brute force tests every ordered pair,
+// N (N − 1); halved tests each pair once, N (N − 1) / 2; sort and sweep tests
+// none, as no two x intervals overlap.
+void TestClaims::testsPerStepCountPairs()
+{
+    std::vector<Ball> balls;
+    for (int i = 0; i < 7; ++i)
+        balls.push_back(ballAt(40.0 + 70.0 * i, 200.0, 0.0, 0.0, 10.0));
+    Scene s = openScene(balls);
+    s.settings.collisions.response = Response::Flag;
+    const int n = static_cast<int>(balls.size());
+    const std::pair<Detection, double> expected[] = {
+        {Detection::Brute, n * (n - 1.0)}, {Detection::Halved, n * (n - 1.0) / 2.0}, {Detection::Sweep, 0.0}};
+    for (const auto& [detection, tests] : expected) {
+        s.settings.collisions.detection = detection;
+        const ClaimResult r = checkClaim(s, near("tests_per_step", tests, 0.0, 0.5));
+        QVERIFY2(r.holds, r.explanation.c_str());
+    }
+    // Collisions off: nothing is tested.
+    s.settings.collisions.response = Response::None;
+    const ClaimResult off = checkClaim(s, near("tests_per_step", 0.0, 0.0, 0.5));
+    QVERIFY2(off.holds, off.explanation.c_str());
 }
 
 QTEST_APPLESS_MAIN(TestClaims)
