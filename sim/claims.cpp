@@ -56,6 +56,9 @@ constexpr std::array kMeasures{
     ClaimMeasure{"acceleration_ratio", "1", W::At, true,
                  "the ball's acceleration along `axis` divided by that of ball `other` at the moment `at`, as the "
                  "acceleration arrows show them"},
+    ClaimMeasure{"tests_per_step", "tests", W::At, false,
+                 "how many pairs the collision detection tested with the exact distance test in the step that ends "
+                 "at `at` (0 when collisions are off)"},
 };
 
 std::string number(double v)
@@ -175,6 +178,8 @@ public:
             const double other = component(a.col(m_claim.other), m_claim.axis);
             return other != 0.0 ? component(a.col(i), m_claim.axis) / other : std::numeric_limits<double>::quiet_NaN();
         }
+        if (name == "tests_per_step")
+            return static_cast<double>(w.lastStep().pairsTested);
         if (b.size() == 0)
             return std::numeric_limits<double>::quiet_NaN();
         const Eigen::VectorXd speed = b.velocity.colwise().norm().transpose();

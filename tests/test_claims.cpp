@@ -217,3 +217,29 @@ TEST_CASE("TestClaims::accelerationRatioOfTwoBallsInAPointForce")
     VERIFY2(r.explanation == "the scene has 2 balls, so there is no ball 2", r.explanation.c_str());
 }
 
+}
+
+// N balls far apart from each other: brute force tests every ordered pair,
+// N (N − 1); halved tests each pair once, N (N − 1) / 2; sort and sweep tests
+// none, as no two x intervals overlap.
+TEST_CASE("TestClaims::testsPerStepCountPairs")
+{
+    std::vector<Ball> balls;
+    for (int i = 0; i < 7; ++i)
+        balls.push_back(ballAt(40.0 + 70.0 * i, 200.0, 0.0, 0.0, 10.0));
+    Scene s = openScene(balls);
+    s.settings.collisions.response = Response::Flag;
+    const int n = static_cast<int>(balls.size());
+    const std::pair<Detection, double> expected[] = {
+        {Detection::Brute, n * (n - 1.0)}, {Detection::Halved, n * (n - 1.0) / 2.0}, {Detection::Sweep, 0.0}};
+    for (const auto& [detection, tests] : expected) {
+        s.settings.collisions.detection = detection;
+        const ClaimResult r = checkClaim(s, near("tests_per_step", tests, 0.0, 0.5));
+        VERIFY2(r.holds, r.explanation.c_str());
+    }
+    // Collisions off: nothing is tested.
+    s.settings.collisions.response = Response::None;
+    const ClaimResult off = checkClaim(s, near("tests_per_step", 0.0, 0.0, 0.5));
+    VERIFY2(off.holds, off.explanation.c_str());
+}
+
