@@ -217,8 +217,6 @@ TEST_CASE("TestClaims::accelerationRatioOfTwoBallsInAPointForce")
     VERIFY2(r.explanation == "the scene has 2 balls, so there is no ball 2", r.explanation.c_str());
 }
 
-}
-
 // N balls far apart from each other: brute force tests every ordered pair,
 // N (N − 1); halved tests each pair once, N (N − 1) / 2; sort and sweep tests
 // none, as no two x intervals overlap.
