@@ -61,7 +61,9 @@ ReferenceProblem keplerProblem(double e, int orbits)
 }
 
 // Falling from rest with linear drag: v = (g/k)(1 − e^(−kt)),
-// y = y₀ + (g/k) t − (g/k²)(1 − e^(−kt)). No energy to conserve.
+// y = y₀ + (g/k) t − (g/k²)(1 − e^(−kt)). No energy to conserve. The
+// closed form is per unit mass, so the drag acts the same on every ball
+// (scale none); as a force it would be k·m₁₀/m on this mass-1 ball.
 ReferenceProblem dragFallProblem()
 {
     const double g = 980.0, k = 1.5, y0 = 0.0;
@@ -73,7 +75,7 @@ ReferenceProblem dragFallProblem()
     p.scene = [=] {
         Scene s = openScene({ballAt(100.0, y0, 0.0, 0.0, 10.0, 1.0)});
         s.settings.gravity = GravitySettings{true, Vec2(0.0, g)};
-        s.settings.drag = DragSettings{true, DragLaw::Linear, k};
+        s.settings.drag = DragSettings{true, DragLaw::Linear, k, ForceScale::None};
         return s;
     };
     p.exact = [=](double t) {
