@@ -23,7 +23,7 @@ std::optional<Lesson> loadLessonWorld(const QString& pathOrId, const QList<Overr
 {
     LoadResult loaded = LessonLoader::load(pathOrId, overrides);
     if (!loaded.ok()) {
-        for (const QString& e : loaded.errors)
+        for (const QString& e : loaded.errors())
             err << e.toStdString() << "\n";
         return std::nullopt;
     }

@@ -24,7 +24,7 @@ int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     for (const QString& name : lessons) {
         const LoadResult r = LessonLoader::load(name);
         if (!r.ok()) {
-            for (const QString& line : r.errors)
+            for (const QString& line : r.errors())
                 err << line.toStdString() << "\n";
             return 2;
         }

@@ -29,7 +29,7 @@ int validateCommand(const QCommandLineParser& parser, std::ostream& out, std::os
             continue;
         }
         allValid = false;
-        for (const QString& line : r.errors)
+        for (const QString& line : r.errors())
             err << line.toStdString() << "\n";
     }
     return allValid ? 0 : 2;

@@ -49,8 +49,6 @@ sim::Error tooLarge(const QString& source, qint64 bytes)
 LoadResult failure(QList<sim::Error> problems)
 {
     LoadResult r;
-    for (const sim::Error& e : problems)
-        r.errors << errorLine(e);
     r.problems = std::move(problems);
     return r;
 }
@@ -122,6 +120,14 @@ QString builtInId(const QString& resource)
 QString errorLine(const sim::Error& error)
 {
     return QString::fromStdString(sim::toString(error));
+}
+
+QStringList LoadResult::errors() const
+{
+    QStringList lines;
+    for (const sim::Error& e : problems)
+        lines << errorLine(e);
+    return lines;
 }
 
 LoadResult LessonLoader::load(const QString& pathOrId, const QList<Override>& overrides)

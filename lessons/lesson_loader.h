@@ -24,7 +24,8 @@ struct Override {
 struct LoadResult {
     std::optional<Lesson> lesson;  ///< set when there was no error
     QList<sim::Error> problems;    ///< what is wrong: source, key path, line and column (in a file), message
-    QStringList errors;            ///< the same problems as the lines a user reads ("file:line:column: key.path: what")
+    /// The problems as the lines a user reads ("file:line:column: key.path: what").
+    QStringList errors() const;
     bool ok() const { return lesson.has_value(); }
 };
 

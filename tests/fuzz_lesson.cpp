@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const LoadResult r = LessonLoader::loadBytes(rest, QStringLiteral("fuzz.json"));
         if (r.ok())
             checkRoundTrip(*r.lesson);
-        else if (r.errors.isEmpty())
+        else if (r.errors().isEmpty())
             std::abort(); // a refusal must say why
         return 0;
     }
@@ -61,7 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const LoadResult r = LessonLoader::loadBytes(kBase, QStringLiteral("base.json"), {*override});
     if (r.ok())
         checkRoundTrip(*r.lesson);
-    else if (r.errors.isEmpty())
+    else if (r.errors().isEmpty())
         std::abort();
     return 0;
 }

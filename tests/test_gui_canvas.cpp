@@ -479,7 +479,7 @@ void GuiCanvasTest::readoutsNeverCoverThePhysics()
     QFETCH(QString, lesson);
     QFETCH(QSize, size);
     const LoadResult r = LessonLoader::load(lesson);
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     SimulationController controller;
     QVERIFY(!controller.setScene(r.lesson->scene));
     Canvas canvas(&controller);

@@ -161,7 +161,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
 
 QString firstError(const LoadResult& r)
 {
-    return r.errors.isEmpty() ? QStringLiteral("<no error>") : r.errors.first();
+    return r.errors().isEmpty() ? QStringLiteral("<no error>") : r.errors().first();
 }
 
 } // namespace
@@ -204,7 +204,7 @@ void TestLessonLoader::claimsAreReadCheckedAndWritten()
         {"says": "Without resting contacts the top falls below 200 px.", "measure": "top_height", "at": 1, "below": 200,
          "set": {"models.collisions.resting": false, "world.wall_model": "exact", "time.dt": 0.001}},
         {"says": "Many balls end at a wall.", "measure": "near_wall", "distance": 5, "other": 0, "at": 5, "above": 30}])"));
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const std::vector<sim::Claim>& c = r.lesson->claims;
     QCOMPARE(c.size(), std::size_t{4});
     QCOMPARE(c[0].text, std::string("After one bounce it rises to 192 px."));
@@ -222,7 +222,7 @@ void TestLessonLoader::claimsAreReadCheckedAndWritten()
     QVERIFY(c[3].test == sim::ClaimTest::Above && c[3].distance == 5.0 && c[3].other == 0);
 
     const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
-    QVERIFY2(back.ok(), qPrintable(back.errors.join(" | ")));
+    QVERIFY2(back.ok(), qPrintable(back.errors().join(" | ")));
     compareLessons(*r.lesson, *back.lesson);
 
     // Wrong claims, each named by its key path.
@@ -233,7 +233,7 @@ void TestLessonLoader::claimsAreReadCheckedAndWritten()
         {"says": "x", "measure": "apex", "at": 1, "below": 1, "set": {"models.drag.kk": 1}},
         {"measure": "apex", "at": 1, "above": 1, "below": 2}])"));
     QVERIFY(!bad.ok());
-    const QString all = bad.errors.join(" | ");
+    const QString all = bad.errors().join(" | ");
     for (const char* expected : {"claims.0.measure: \"apogee\" is not one of position", "claims.1.ball: 3 is outside [0, 0]",
                                  "claims.2: give \"near\" one tolerance", "claims.3.set.models.drag.kk: not a parameter",
                                  "claims.4.says: missing", "claims.4: give exactly one of"})
@@ -245,26 +245,26 @@ void TestLessonLoader::teacherNotesAreReadAndWritten()
     const LoadResult r = loadText(minimal(R"("challenges": ["How high?", "How long?"], "teacher": {
         "goal": "Energy is lost at each bounce.", "minutes": 15,
         "misconceptions": ["The ball bounces back to where it started."], "answers": ["192 px", "0.78 s"]})"));
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const TeacherNotes& t = r.lesson->teacher;
     QCOMPARE(t.goal, QStringLiteral("Energy is lost at each bounce."));
     QCOMPARE(t.minutes, 15);
     QCOMPARE(t.misconceptions, QStringList{QStringLiteral("The ball bounces back to where it started.")});
     QCOMPARE(t.answers, (QStringList{QStringLiteral("192 px"), QStringLiteral("0.78 s")}));
     const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
-    QVERIFY2(back.ok(), qPrintable(back.errors.join(" | ")));
+    QVERIFY2(back.ok(), qPrintable(back.errors().join(" | ")));
     compareLessons(*r.lesson, *back.lesson);
 
     // Notes without answers (not written yet) load, and save and load back.
     const LoadResult partial = loadText(minimal(R"("challenges": ["How high?", "How long?"], "teacher": {"goal": "g"})"));
-    QVERIFY2(partial.ok(), qPrintable(partial.errors.join(" | ")));
+    QVERIFY2(partial.ok(), qPrintable(partial.errors().join(" | ")));
     const LoadResult partialBack = LessonLoader::loadBytes(saveLesson(*partial.lesson), QStringLiteral("saved.json"));
-    QVERIFY2(partialBack.ok(), qPrintable(partialBack.errors.join(" | ")));
+    QVERIFY2(partialBack.ok(), qPrintable(partialBack.errors().join(" | ")));
     compareLessons(*partial.lesson, *partialBack.lesson);
 
     const LoadResult bad = loadText(minimal(R"("challenges": ["How high?"], "teacher": {"answers": ["a", "b"], "time": 3})"));
     QVERIFY(!bad.ok());
-    const QString all = bad.errors.join(" | ");
+    const QString all = bad.errors().join(" | ");
     QVERIFY2(all.contains(QStringLiteral("teacher.answers: 2 answers for 1 challenge;")), qPrintable(all));
     QVERIFY2(all.contains(QStringLiteral("teacher.time: unknown key")), qPrintable(all));
 }
@@ -286,8 +286,8 @@ void TestLessonLoader::everyBuiltInLessonLoads()
     QVERIFY(!files.isEmpty());
     for (const QString& f : files) {
         const LoadResult r = LessonLoader::load(f);
-        QVERIFY2(r.ok(), qPrintable(f + ": " + r.errors.join(" | ")));
-        QVERIFY(r.errors.isEmpty());
+        QVERIFY2(r.ok(), qPrintable(f + ": " + r.errors().join(" | ")));
+        QVERIFY(r.errors().isEmpty());
         const Lesson& l = *r.lesson;
         QCOMPARE(l.source, f);
         QVERIFY(!l.id.isEmpty());
@@ -302,14 +302,14 @@ void TestLessonLoader::everyBuiltInLessonLoads()
 void TestLessonLoader::builtInByIdAndStem()
 {
     const LoadResult byId = LessonLoader::load(QStringLiteral("gravity"));
-    QVERIFY2(byId.ok(), qPrintable(byId.errors.join(" | ")));
+    QVERIFY2(byId.ok(), qPrintable(byId.errors().join(" | ")));
     QCOMPARE(byId.lesson->source, QStringLiteral(":/lessons/07-gravity.json"));
     QCOMPARE(byId.lesson->stage, 7);
     QVERIFY(byId.lesson->scene.settings.gravity.enabled);
     COMPARE_BITS(byId.lesson->scene.settings.gravity.g.y(), 980.0);
 
     const LoadResult byStem = LessonLoader::load(QStringLiteral("00-showcase"));
-    QVERIFY2(byStem.ok(), qPrintable(byStem.errors.join(" | ")));
+    QVERIFY2(byStem.ok(), qPrintable(byStem.errors().join(" | ")));
     QCOMPARE(byStem.lesson->id, QStringLiteral("showcase"));
     const sim::WorldSettings& s = byStem.lesson->scene.settings;
     QVERIFY(!s.gravity.enabled);
@@ -319,10 +319,10 @@ void TestLessonLoader::builtInByIdAndStem()
 
     const LoadResult missing = LessonLoader::load(QStringLiteral("no-such-lesson"));
     QVERIFY(!missing.ok());
-    QCOMPARE(missing.errors.size(), 1);
-    QVERIFY2(missing.errors.first().startsWith("no-such-lesson: no such file or built-in lesson; built-in lessons: "),
-             qPrintable(missing.errors.first()));
-    QVERIFY(missing.errors.first().contains("gravity"));
+    QCOMPARE(missing.errors().size(), 1);
+    QVERIFY2(missing.errors().first().startsWith("no-such-lesson: no such file or built-in lesson; built-in lessons: "),
+             qPrintable(missing.errors().first()));
+    QVERIFY(missing.errors().first().contains("gravity"));
 }
 
 void TestLessonLoader::builtInLessonsRun()
@@ -332,7 +332,7 @@ void TestLessonLoader::builtInLessonsRun()
     // the lesson is not about a wall bug (tests/test_lessons.cpp checks more).
     for (const QString& f : LessonLoader::builtInFiles()) {
         const LoadResult r = LessonLoader::load(f);
-        QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+        QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
         const sim::Scene& scene = r.lesson->scene;
         sim::World world;
         const auto error = world.reset(scene);
@@ -390,7 +390,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
   "controls": ["gravity", "drag"], "overlays": ["velocity"]
 })";
     const LoadResult r = loadText(json);
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const Lesson& l = *r.lesson;
     QCOMPARE(l.id, QStringLiteral("every-key"));
     QCOMPARE(l.title, QStringLiteral("Every key"));
@@ -490,7 +490,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
 void TestLessonLoader::absentModelsAreOff()
 {
     const LoadResult r = loadText(minimal());
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const sim::WorldSettings& s = r.lesson->scene.settings;
     QVERIFY(!s.gravity.enabled);
     QVERIFY(!s.drag.enabled);
@@ -513,7 +513,7 @@ void TestLessonLoader::absentModelsAreOff()
 
     // A model object that is present is on, with the struct defaults for what it leaves out.
     const LoadResult on = loadText(minimal(R"("models": {"drag": {}, "wind": {}, "collisions": {}})"));
-    QVERIFY2(on.ok(), qPrintable(on.errors.join(" | ")));
+    QVERIFY2(on.ok(), qPrintable(on.errors().join(" | ")));
     const sim::WorldSettings& t = on.lesson->scene.settings;
     QVERIFY(t.drag.enabled);
     QCOMPARE(t.drag.k, sim::DragSettings{}.k);
@@ -524,7 +524,7 @@ void TestLessonLoader::absentModelsAreOff()
 void TestLessonLoader::presentModelWithEnabledFalseIsOff()
 {
     const LoadResult r = loadText(minimal(R"("models": {"gravity": {"enabled": false, "y": 123}})"));
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     QVERIFY(!r.lesson->scene.settings.gravity.enabled);
     QCOMPARE(r.lesson->scene.settings.gravity.g.y(), 123.0);
 }
@@ -670,7 +670,7 @@ void TestLessonLoader::badInput()
     const LoadResult r = loadText(json);
     QVERIFY(!r.ok());
     QCOMPARE(firstError(r), error);
-    for (const QString& e : r.errors)
+    for (const QString& e : r.errors())
         QVERIFY2(!e.contains('\n'), qPrintable(e)); // one line each
 }
 
@@ -687,7 +687,7 @@ void TestLessonLoader::everyProblemIsReported()
         "t.json:1:150: balls.0.r: 0 is outside [1e-06, 10000] px",
         R"(t.json:1:159: balls.1: expected a ball object {"x": …, "y": …}, got the number 5)",
     };
-    QCOMPARE(r.errors, expected);
+    QCOMPARE(r.errors(), expected);
 }
 
 void TestLessonLoader::tooLargeFile()
@@ -697,7 +697,7 @@ void TestLessonLoader::tooLargeFile()
     big += QByteArray(16 * 1024 * 1024, 'a') + "\"}";
     const LoadResult r = loadText(big);
     QVERIFY(!r.ok());
-    QCOMPARE(r.errors, QStringList{QStringLiteral("t.json: the file has %1 bytes, more than the limit of 16777216 "
+    QCOMPARE(r.errors(), QStringList{QStringLiteral("t.json: the file has %1 bytes, more than the limit of 16777216 "
                                                   "bytes (16 MiB)").arg(big.size())});
 
     // From disk the size is checked before reading.
@@ -709,7 +709,7 @@ void TestLessonLoader::tooLargeFile()
     QVERIFY(f.resize(20 * 1024 * 1024));
     f.close();
     const LoadResult fromDisk = LessonLoader::loadFile(path);
-    QCOMPARE(fromDisk.errors,
+    QCOMPARE(fromDisk.errors(),
              QStringList{path + ": the file has 20971520 bytes, more than the limit of 16777216 bytes (16 MiB)"});
 }
 
@@ -721,12 +721,12 @@ void TestLessonLoader::tooManyBalls()
     balls += "]";
     const LoadResult r = loadText(minimal("\"balls\": " + balls));
     QVERIFY(!r.ok());
-    QCOMPARE(r.errors, QStringList{"t.json:1:26: balls: 200001 balls is more than the limit of 200000"});
+    QCOMPARE(r.errors(), QStringList{"t.json:1:26: balls: 200001 balls is more than the limit of 200000"});
 
     // Many bad balls: the list stops at 100 lines and counts the rest.
     const LoadResult many = loadText(minimal("\"balls\": [" + QByteArray("{}").repeated(150).replace("}{", "},{") + "]"));
-    QCOMPARE(many.errors.size(), 101);
-    QCOMPARE(many.errors.last(), QStringLiteral("t.json: 200 more problems not listed"));
+    QCOMPARE(many.errors().size(), 101);
+    QCOMPARE(many.errors().last(), QStringLiteral("t.json: 200 more problems not listed"));
 }
 
 void TestLessonLoader::semanticCheckFromTheCore()
@@ -742,8 +742,8 @@ void TestLessonLoader::semanticCheckFromTheCore()
     QCOMPARE(e.line, 2);
     QCOMPARE(e.column, 10);
     QVERIFY2(e.message.starts_with("exact needs a constant acceleration"), e.message.c_str());
-    QCOMPARE(r.errors, QStringList{errorLine(e)});
-    QVERIFY2(r.errors.first().startsWith("t.json:2:10: time.integrator: exact needs"), qPrintable(r.errors.first()));
+    QCOMPARE(r.errors(), QStringList{errorLine(e)});
+    QVERIFY2(r.errors().first().startsWith("t.json:2:10: time.integrator: exact needs"), qPrintable(r.errors().first()));
 }
 
 void TestLessonLoader::overrides()
@@ -758,7 +758,7 @@ void TestLessonLoader::overrides()
          {"balls.0.vx", "5"},
          {"balls.4", R"({"x": 1, "y": 2, "r": 3})"},
          {"title", "\"Gravity, modified\""}});
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const sim::WorldSettings& s = r.lesson->scene.settings;
     QVERIFY(s.gravity.enabled);
     QCOMPARE(s.gravity.g.y(), 0.0);
@@ -779,7 +779,7 @@ void TestLessonLoader::overrides()
 
     // Number forms JSON refuses but people type.
     const LoadResult forms = loadText(minimal(), {{"time.dt", ".5"}, {"models.gravity.y", "+9.5"}});
-    QVERIFY2(forms.ok(), qPrintable(forms.errors.join(" | ")));
+    QVERIFY2(forms.ok(), qPrintable(forms.errors().join(" | ")));
     QCOMPARE(forms.lesson->scene.settings.time.dt, 0.5);
     QCOMPARE(forms.lesson->scene.settings.gravity.g.y(), 9.5);
 }
@@ -822,7 +822,7 @@ void TestLessonLoader::badOverrides()
     QFETCH(QString, error);
     const LoadResult r = LessonLoader::load(QStringLiteral("gravity"), {{keyPath, value}});
     QVERIFY(!r.ok());
-    QCOMPARE(r.errors, QStringList{error});
+    QCOMPARE(r.errors(), QStringList{error});
 }
 
 void TestLessonLoader::parseOverride()
@@ -885,7 +885,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
 
     const QByteArray saved = saveLesson(l);
     const LoadResult r = loadText(saved);
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ") + "\n" + saved));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ") + "\n" + saved));
     compareLessons(l, *r.lesson);
     QCOMPARE(saveLesson(*r.lesson), saved);
     QVERIFY(saved.contains("\"x\": 0.30000000000000004"));
@@ -911,7 +911,7 @@ void TestLessonLoader::builtInLessonsRoundTrip()
 {
     for (const QString& f : LessonLoader::builtInFiles()) {
         const LoadResult first = LessonLoader::load(f);
-        QVERIFY2(first.ok(), qPrintable(first.errors.join(" | ")));
+        QVERIFY2(first.ok(), qPrintable(first.errors().join(" | ")));
         const QByteArray saved = saveLesson(*first.lesson);
         QTemporaryDir dir;
         const QString path = dir.filePath("saved.json");
@@ -920,7 +920,7 @@ void TestLessonLoader::builtInLessonsRoundTrip()
         out.write(saved);
         out.close();
         const LoadResult second = LessonLoader::load(path);
-        QVERIFY2(second.ok(), qPrintable(second.errors.join(" | ")));
+        QVERIFY2(second.ok(), qPrintable(second.errors().join(" | ")));
         QCOMPARE(second.lesson->source, path);
         compareLessons(*first.lesson, *second.lesson);
     }
@@ -951,10 +951,10 @@ void TestLessonLoader::everyParameterRoundTrips()
         }
         const QString key = QString::fromUtf8(p.key.data(), static_cast<qsizetype>(p.key.size()));
         const LoadResult set = LessonLoader::loadBytes(minimal(), QStringLiteral("t.json"), {{key, text}});
-        QVERIFY2(set.ok(), qPrintable(key + ": " + set.errors.join(" | ")));
+        QVERIFY2(set.ok(), qPrintable(key + ": " + set.errors().join(" | ")));
         QVERIFY2(bits(p.get(set.lesson->scene.settings)) == bits(v), qPrintable(key));
         const LoadResult back = LessonLoader::loadBytes(saveLesson(*set.lesson), QStringLiteral("saved.json"));
-        QVERIFY2(back.ok(), qPrintable(key + ": " + back.errors.join(" | ")));
+        QVERIFY2(back.ok(), qPrintable(key + ": " + back.errors().join(" | ")));
         QVERIFY2(bits(p.get(back.lesson->scene.settings)) == bits(v), qPrintable(key));
         ++checked;
     }

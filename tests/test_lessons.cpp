@@ -35,7 +35,7 @@ std::optional<Lesson> builtIn(const QString& stem)
 {
     const LoadResult r = LessonLoader::load(stem);
     if (!r.ok()) {
-        qWarning("%s", qPrintable(stem + ": " + r.errors.join(" | ")));
+        qWarning("%s", qPrintable(stem + ": " + r.errors().join(" | ")));
         return std::nullopt;
     }
     if (r.lesson->source != QStringLiteral(":/lessons/") + stem + QStringLiteral(".json")) {
@@ -163,7 +163,7 @@ void TestLessons::everyLessonKeepsItsInvariants()
 {
     QFETCH(QString, file);
     const LoadResult r = LessonLoader::load(file);
-    QVERIFY2(r.ok(), qPrintable(r.errors.join(" | ")));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     const Lesson& lesson = *r.lesson;
     QVERIFY2(lesson.challenges.size() >= 2 && lesson.challenges.size() <= 4, qPrintable(file));
     QVERIFY(!lesson.text.isEmpty());

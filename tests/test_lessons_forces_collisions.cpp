@@ -28,7 +28,7 @@ namespace {
     sim::Scene var;                                                                                                 \
     do {                                                                                                            \
         const LoadResult loaded_ = LessonLoader::load(QString::fromLatin1(id), QList<Override>{__VA_ARGS__});       \
-        QVERIFY2(loaded_.ok(), qPrintable(loaded_.errors.join(QLatin1Char('\n'))));                                 \
+        QVERIFY2(loaded_.ok(), qPrintable(loaded_.errors().join(QLatin1Char('\n'))));                                 \
         var = loaded_.lesson->scene;                                                                                \
     } while (false)
 
@@ -712,7 +712,7 @@ void TestLessonsForcesCollisions::breakShotMomentumWith(const QList<Override>& o
     sim::Scene scene;
     {
         const LoadResult loaded = LessonLoader::load(QStringLiteral("break-shot"), overrides);
-        QVERIFY2(loaded.ok(), qPrintable(loaded.errors.join(QLatin1Char('\n'))));
+        QVERIFY2(loaded.ok(), qPrintable(loaded.errors().join(QLatin1Char('\n'))));
         scene = loaded.lesson->scene;
     }
     QVERIFY(scene.settings.time.integrator == sim::IntegratorKind::SemiImplicitEuler);

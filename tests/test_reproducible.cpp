@@ -36,7 +36,7 @@ Scene showcase()
 {
     const LoadResult r = LessonLoader::load("showcase");
     if (!r.ok())
-        qFatal("%s", qPrintable(r.errors.join('\n')));
+        qFatal("%s", qPrintable(r.errors().join('\n')));
     return r.lesson->scene;
 }
 

@@ -108,7 +108,7 @@ QList<LessonsDock::Entry> LessonsDock::builtInCourse()
         if (!result.ok()) {
             // A built-in lesson that does not load is a bug of the build; the
             // lesson tests name it. Leave it out of the course.
-            qWarning("Lessons: %s", qPrintable(result.errors.value(0)));
+            qWarning("Lessons: %s", qPrintable(result.errors().value(0)));
             continue;
         }
         entries.append(Entry{result.lesson->source, result.lesson->title, result.lesson->stage});

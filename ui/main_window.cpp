@@ -481,7 +481,7 @@ void MainWindow::openInitialLesson(const QString& requested)
         if (!last.ok())
             m_settingsProblems << tr("%1: %2: %3; opened the first lesson instead")
                                       .arg(QDir::toNativeSeparators(QSettings().fileName()), kLastLessonKey,
-                                           last.errors.value(0));
+                                           last.errors().value(0));
     }
     // The first built-in lesson (the showcase). A built-in lesson that does
     // not load is a bug of the build: say so in the status bar, not a dialog.
@@ -494,14 +494,14 @@ void MainWindow::openInitialLesson(const QString& requested)
     if (first.ok())
         setLesson(*first.lesson);
     else
-        showError(first.errors.value(0));
+        showError(first.errors().value(0));
 }
 
 bool MainWindow::openLesson(const QString& pathOrId)
 {
     LoadResult result = LessonLoader::load(pathOrId);
     if (!result.ok()) {
-        showLoadErrors(result.errors);
+        showLoadErrors(result.errors());
         return false;
     }
     return setLesson(*result.lesson);
@@ -627,7 +627,7 @@ void MainWindow::openLessonFile()
     m_lastDirectory = QFileInfo(path).absolutePath();
     const LoadResult result = LessonLoader::loadFile(path);
     if (!result.ok()) {
-        showLoadErrors(result.errors);
+        showLoadErrors(result.errors());
         return;
     }
     setLesson(*result.lesson);
