@@ -89,8 +89,10 @@ int SimulationController::advance(double elapsedSeconds)
         m_droppedTime += dropped;
         emit timeDropped(dropped);
     }
+    // Slow motion draws between the last two steps: keep where the last one started.
+    const bool slow = m_timeScale < 1.0;
     for (int k = 0; k < steps && !m_world.halted(); ++k) {
-        if (k == steps - 1)
+        if (slow && k == steps - 1)
             m_previous = m_world.balls().position;
         m_world.step();
     }
@@ -216,6 +218,7 @@ void SimulationController::setTimeScale(double scale)
     if (scale == m_timeScale)
         return;
     m_timeScale = scale;
+    m_previous.resize(2, 0); // kept only in slow motion: what is there may be from an earlier slow run
     emit timeScaleChanged(m_timeScale);
 }
 

@@ -164,8 +164,10 @@ WorldPainter::Panels WorldPainter::panels(const sim::World& world, const QRectF&
 void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& world, const PaintOptions& options,
                          qreal dpr)
 {
-    const ViewTransform v = view(world, area, options);
-    const Panels placed = panels(world, area, options);
+    // One layout for the frame: where the box goes and where its panels go.
+    const Layout layout = layoutFor(world.settings().box, area, options);
+    const ViewTransform v = ViewTransform::fit(world.settings().box, layout.stage, options.margin);
+    const Panels& placed = layout.panels;
     p.save();
     p.setClipRect(area);
     p.fillRect(area, QColor::fromRgb(canvas_colors::kLetterbox));
