@@ -69,6 +69,12 @@ void GuiStageTest::stageFillsTheScreen()
     // The caption and the big buttons.
     auto* title = window.findChild<QLabel*>(QStringLiteral("stageTitle"));
     QVERIFY(title && title->isVisible());
+    // The lesson's readout moved into the bar, filled in at once (paused at t = 0),
+    // and off the canvas.
+    auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
+    QVERIFY(readout && readout->isVisible());
+    QVERIFY2(readout->text().contains(QStringLiteral("position")), qPrintable(readout->text()));
+    QVERIFY(!window.canvas()->overlays().readout);
     QCOMPARE(title->text(), window.lesson().title);
     const auto buttons = window.findChild<QWidget*>(QStringLiteral("stageBar"))->findChildren<QToolButton*>();
     QCOMPARE(buttons.size(), 5);

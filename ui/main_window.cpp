@@ -514,11 +514,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_lesson = lesson;
     Overlays overlays = Overlays::fromNames(lesson.overlays);
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
-    if (m_stageBar->isVisible()) { // the stage view shows the readouts in its bar
-        m_stageOverlays = overlays;
-        overlays.readout = overlays.totals = false;
-    }
-    m_canvas->setOverlays(overlays);
+    m_canvas->setOverlays(m_stageBar->isVisible() ? readoutsToStageBar(overlays) : overlays);
     m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
@@ -526,6 +522,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     m_codeDock->setLessonControls(lesson.controls);
     updateStageCaption();
+    updateStageReadout();
     layoutStage(); // the box's shape decides where the stage bar goes
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
     m_lessonsDock->setCurrentLesson(lesson);
@@ -781,14 +778,10 @@ void MainWindow::setPresentationMode(bool on)
         statusBar()->hide();
         m_canvas->setLineScale(1.6);
         m_canvas->setBoxMargin(4.0);
-        // The readout and the totals move from the canvas into the bar.
-        m_stageOverlays = m_canvas->overlays();
-        Overlays inBox = m_stageOverlays;
-        inBox.readout = inBox.totals = false;
-        m_canvas->setOverlays(inBox);
+        m_canvas->setOverlays(readoutsToStageBar(m_canvas->overlays()));
         updateStageCaption();
-        updateStageReadout();
         m_stageBar->show();
+        updateStageReadout(); // shown now, so it fills in
         if (const QScreen* s = screen())
             setGeometry(s->geometry());
         showFullScreen();
@@ -809,6 +802,16 @@ void MainWindow::setPresentationMode(bool on)
         restoreGeometry(m_normalGeometry);
     }
     layoutStage();
+}
+
+// The stage view shows the readout and the totals in its bar, not on the
+// canvas: remembers which of them the canvas had, and returns the canvas's
+// overlays without them.
+Overlays MainWindow::readoutsToStageBar(Overlays overlays)
+{
+    m_stageOverlays = overlays;
+    overlays.readout = overlays.totals = false;
+    return overlays;
 }
 
 void MainWindow::updateStageReadout()

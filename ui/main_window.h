@@ -97,6 +97,7 @@ private slots:
     void setPresentationMode(bool on);
     void updateStageCaption();
     void updateStageReadout();
+    Overlays readoutsToStageBar(Overlays overlays);
     void layoutStage();
     void about();
 

@@ -70,6 +70,10 @@ void StageBar::setVertical(bool vertical)
     m_vertical = vertical;
     while (m_grid->count() > 0)
         delete m_grid->takeAt(0); // the layout item only; the widget stays
+    for (int k = 0; k < m_grid->rowCount(); ++k) // no stretch carries over from the other orientation
+        m_grid->setRowStretch(k, 0);
+    for (int k = 0; k < m_grid->columnCount(); ++k)
+        m_grid->setColumnStretch(k, 0);
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);
