@@ -180,6 +180,8 @@ public:
         }
         if (name == "tests_per_step")
             return static_cast<double>(w.lastStep().pairsTested);
+        if (name == "stopped")
+            return w.halted() ? 1.0 : 0.0;
         if (b.size() == 0)
             return std::numeric_limits<double>::quiet_NaN();
         const Eigen::VectorXd speed = b.velocity.colwise().norm().transpose();
@@ -317,7 +319,7 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
         done = m.afterStep(w, t0, x0, v0);
     }
     ClaimResult r;
-    r.measured = row->name == "stopped" ? (w.halted() ? 1.0 : 0.0) : m.finish(w);
+    r.measured = m.finish(w);
     if (w.halted() && row->name != "stopped")
         return refused(cat({"the simulation stopped itself at t = ", number(w.time()), " s: ", *w.halted()}));
     if (std::isnan(r.measured))
