@@ -707,7 +707,8 @@ void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStr
 const QStringList& overlayNames()
 {
     static const QStringList names{"grid",    "velocity", "acceleration", "readout",   "colliding", "markers",
-                                   "vanes",   "trails",   "impact",       "broadphase", "histogram", "totals"};
+                                   "vanes",   "trails",   "impact",       "broadphase", "histogram", "totals",
+                                   "forces",  "sources",  "centre-of-mass", "momenta"};
     return names;
 }
 

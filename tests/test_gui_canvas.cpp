@@ -471,9 +471,10 @@ void GuiCanvasTest::readoutsNeverCoverThePhysics_data()
                 << QString::fromLatin1(lesson) << size;
 }
 
-// The per-ball readout and the totals sit in a strip outside the box: no
-// ball's disc under either panel at any moment of the first 5 s, the panels
-// apart from each other and from the box, and inside the canvas.
+// The per-ball readout, the totals, the force legend and the momenta inset
+// sit in a strip outside the box: no ball's disc under any panel at any
+// moment of the first 5 s, the panels apart from each other and from the
+// box, and inside the canvas.
 void GuiCanvasTest::readoutsNeverCoverThePhysics()
 {
     QFETCH(QString, lesson);
@@ -487,16 +488,22 @@ void GuiCanvasTest::readoutsNeverCoverThePhysics()
     Overlays o = Overlays::fromNames(r.lesson->overlays);
     o.readout = true;
     o.totals = true;
+    o.forceSources = true; // every panel there is: the legend and the momenta inset too
+    o.momenta = true;
     canvas.setOverlays(o);
     PaintOptions options;
     options.overlays = o;
     const QRectF area(QPointF(0, 0), QSizeF(size));
     const WorldPainter::Panels panels = WorldPainter::panels(controller.world(), area, options);
-    QVERIFY(!panels.readout.isEmpty() && !panels.totals.isEmpty());
-    QVERIFY(!panels.readout.intersects(panels.totals));
-    QVERIFY(area.contains(panels.readout) && area.contains(panels.totals));
+    const QList<QRectF> all{panels.readout, panels.totals, panels.sources, panels.momenta};
     const ViewTransform view = WorldPainter::view(controller.world(), area, options);
-    QVERIFY(!view.boxRect().intersects(panels.readout) && !view.boxRect().intersects(panels.totals));
+    for (qsizetype a = 0; a < all.size(); ++a) {
+        QVERIFY2(!all[a].isEmpty(), qPrintable(QStringLiteral("panel %1 missing").arg(a)));
+        QVERIFY2(area.contains(all[a]), qPrintable(QStringLiteral("panel %1 outside the canvas").arg(a)));
+        QVERIFY(!view.boxRect().intersects(all[a]));
+        for (qsizetype b = a + 1; b < all.size(); ++b)
+            QVERIFY2(!all[a].intersects(all[b]), qPrintable(QStringLiteral("panels %1 and %2 overlap").arg(a).arg(b)));
+    }
     const double dt = controller.world().settings().time.dt;
     for (int k = 0; k < static_cast<int>(5.0 / dt); k += 10) {
         const sim::BallState& b = controller.world().balls();
@@ -504,8 +511,9 @@ void GuiCanvasTest::readoutsNeverCoverThePhysics()
             const QPointF c = view.toWidget(sim::Vec2(b.position.col(i)));
             const double rad = view.toWidget(b.radius[i]);
             const QRectF disc(c - QPointF(rad, rad), QSizeF(2 * rad, 2 * rad));
-            QVERIFY2(!disc.intersects(panels.readout) && !disc.intersects(panels.totals),
-                     qPrintable(QStringLiteral("ball %1 under a panel at t = %2 s").arg(i).arg(controller.world().time())));
+            for (const QRectF& panel : all)
+                QVERIFY2(!disc.intersects(panel),
+                         qPrintable(QStringLiteral("ball %1 under a panel at t = %2 s").arg(i).arg(controller.world().time())));
         }
         for (int s = 0; s < 10; ++s)
             controller.stepOnce();

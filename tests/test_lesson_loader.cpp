@@ -608,7 +608,7 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
                                    << R"(t.json:1:54: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
-                                     << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals)";
+                                     << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals, forces, sources, centre-of-mass, momenta)";
     QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
                                      << "t.json:1:50: controls.1: \"gravity.y\" is not one of " +
                                             LessonLoader::controlNames().join(", ");

@@ -21,6 +21,7 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel
     m_options.trails = &m_trails;
     m_options.collision = &m_collision;
+    m_options.centreOfMassPath = &m_centreOfMassPath;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::framePassed, this, qOverload<>(&QWidget::update));
@@ -39,10 +40,33 @@ void Canvas::setOverlays(const Overlays& overlays)
         m_trails.clear(); // a trail starts when it is switched on
     if (overlays.impact != m_options.overlays.impact)
         resetCollision();
+    if (overlays.centreOfMass != m_options.overlays.centreOfMass)
+        m_centreOfMassPath.clear(); // its path starts when it is switched on
+    const bool changed = !(overlays == m_options.overlays);
     m_options.overlays = overlays;
     if (m_options.overlays.trails)
         m_trails.record(m_controller->world().balls(), m_controller->world().time());
+    if (m_options.overlays.centreOfMass)
+        recordCentreOfMass();
     update();
+    if (changed)
+        emit overlaysChanged();
+}
+
+void Canvas::recordCentreOfMass()
+{
+    const sim::BallState& balls = m_controller->world().balls();
+    const double total = balls.mass.sum();
+    if (balls.empty() || !(total > 0.0))
+        return;
+    const sim::Vec2 centre = (balls.position * balls.mass.matrix()) / total;
+    if (!m_centreOfMassPath.empty() && m_centreOfMassPath.back() == centre)
+        return;
+    // A bounded path: past kMaxCentrePoints the older half goes.
+    if (m_centreOfMassPath.size() >= kMaxCentrePoints)
+        m_centreOfMassPath.erase(m_centreOfMassPath.begin(),
+                                 m_centreOfMassPath.begin() + static_cast<std::ptrdiff_t>(kMaxCentrePoints / 2));
+    m_centreOfMassPath.push_back(centre);
 }
 
 void Canvas::setTrailsEnabled(bool enabled)
@@ -93,6 +117,12 @@ void Canvas::setLineScale(double scale)
 void Canvas::setAutoArrows(bool on)
 {
     m_options.autoArrows = on;
+    update();
+}
+
+void Canvas::setArrowFactor(double factor)
+{
+    m_options.arrowFactor = factor;
     update();
 }
 
@@ -319,6 +349,7 @@ void Canvas::onSceneChanged()
     m_drag = Drag();
     m_press = Press();
     m_trails.clear();
+    m_centreOfMassPath.clear();
     resetCollision();
     if (m_options.selected >= m_controller->world().balls().size())
         setSelectedBall(-1);
@@ -340,6 +371,8 @@ void Canvas::onStepped()
         holdDraggedBall(); // the steps of this frame moved it; the hand holds it
     if (m_options.overlays.trails)
         m_trails.record(world.balls(), world.time());
+    if (m_options.overlays.centreOfMass)
+        recordCentreOfMass();
     if (m_options.overlays.impact)
         trackCollision();
     m_previousTime = world.time();

@@ -19,6 +19,7 @@
 #include <QWidget>
 
 #include <deque>
+#include <vector>
 
 namespace forcelab {
 
@@ -44,6 +45,14 @@ public:
     void setBoxMargin(double pixels);
     /// Arrows scaled so a typical one is readable (WorldPainter::kArrowPixels).
     void setAutoArrows(bool on);
+    /// Without auto arrows: the lesson's arrow scales times `factor`.
+    void setArrowFactor(double factor);
+    /// The painter (what its last frame drew, for tests).
+    const WorldPainter& painter() const { return m_painter; }
+    /// The centre of mass's recorded path (world px, oldest first).
+    const std::vector<sim::Vec2>& centreOfMassPath() const { return m_centreOfMassPath; }
+    /// Points the centre-of-mass path keeps at most (then the older half goes).
+    static constexpr std::size_t kMaxCentrePoints = 4000;
     const PaintOptions& paintOptions() const { return m_options; }
 
     /// Switches the trails overlay (same as setOverlays with overlays.trails).
@@ -89,6 +98,8 @@ public:
 
 signals:
     void selectedBallChanged(int index);
+    /// The overlays changed (by a lesson, an action or a panel).
+    void overlaysChanged();
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -122,11 +133,13 @@ private:
     void dragTo(const QPointF& widget, qint64 timestampMs);
     void startDrag(const QPointF& widget, qint64 timestampMs);
     void resetCollision();
+    void recordCentreOfMass();
 
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
     PaintOptions m_options;
     TrailRecorder m_trails;
+    std::vector<sim::Vec2> m_centreOfMassPath;
     CollisionView m_collision;
     sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
     double m_previousTime = -1.0;

@@ -413,6 +413,13 @@ void MainWindow::createStatusBar()
     connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
     connect(m_controller, &SimulationController::haltedChanged, this, &MainWindow::showHalted);
     connect(m_controller, &SimulationController::timeScaleChanged, this, &MainWindow::updateStatus);
+    // A new lesson or a single step while paused shows at once (while it
+    // runs, the timer below is often enough).
+    connect(m_controller, &SimulationController::sceneChanged, this, &MainWindow::updateStatus);
+    connect(m_controller, &SimulationController::stepped, this, [this] {
+        if (!m_controller->isPlaying())
+            updateStatus();
+    });
 
     m_droppedTimer = new QTimer(this);
     m_droppedTimer->setSingleShot(true);

@@ -26,6 +26,8 @@ public:
     QMenu* menu() const { return m_menu; }
     /// The actions' checks follow the canvas (after a lesson set its overlays).
     void sync();
+    /// The factors the Arrow length menu offers besides auto.
+    static constexpr double kArrowFactors[] = {0.25, 0.5, 1.0, 2.0, 4.0};
 
 private:
     void add(const QString& name, const QString& text, bool Overlays::*member);

@@ -1,6 +1,9 @@
 #include "render_bench.h"
 
+#include "trail_recorder.h"
 #include "world_painter.h"
+
+#include "lessons/lesson_loader.h"
 
 #include "sim/scene.h"
 #include "sim/world.h"
@@ -76,6 +79,50 @@ RenderBenchRow timeFrames(sim::World& world, BallDrawing drawing, const RenderBe
     return row;
 }
 
+RenderBenchRow timeLessonWithPaths(const QString& id, bool incremental, const RenderBenchOptions& options)
+{
+    RenderBenchRow row;
+    row.lesson = id;
+    row.incremental = incremental;
+    const LoadResult loaded = LessonLoader::load(id);
+    if (!loaded.ok())
+        return row;
+    sim::World world(loaded.lesson->scene);
+    TrailRecorder trails;
+    WorldPainter painter;
+    PaintOptions paint;
+    paint.overlays = Overlays::fromNames(loaded.lesson->overlays);
+    paint.overlays.trails = true;
+    paint.trails = &trails;
+    paint.incrementalPaths = incremental;
+    QImage image(options.lessonSize, QImage::Format_ARGB32_Premultiplied);
+    std::vector<double> ms, cpu;
+    for (int frame = 0; frame < options.lessonWarmUp + options.frames; ++frame) {
+        world.step();
+        trails.record(world.balls(), world.time());
+        QElapsedTimer timer;
+        const double cpu0 = threadCpuMs();
+        timer.start();
+        QPainter p(&image);
+        painter.paint(p, QRectF(QPointF(0, 0), QSizeF(options.lessonSize)), world, paint, 1.0);
+        p.end();
+        const double elapsed = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        const double cpuElapsed = threadCpuMs() - cpu0;
+        if (frame >= options.lessonWarmUp) {
+            ms.push_back(elapsed);
+            cpu.push_back(cpuElapsed);
+        }
+    }
+    row.balls = world.balls().size();
+    row.meanRadius = world.balls().empty() ? 0.0 : world.balls().radius.mean();
+    row.medianMs = median(ms);
+    row.cpuMedianMs = median(cpu);
+    row.minMs = *std::min_element(ms.begin(), ms.end());
+    row.maxMs = *std::max_element(ms.begin(), ms.end());
+    row.nsPerBall = row.balls > 0 ? row.medianMs * 1e6 / row.balls : 0.0;
+    return row;
+}
+
 } // namespace
 
 QList<RenderBenchRow> runRenderBench(const RenderBenchOptions& options)
@@ -95,6 +142,10 @@ QList<RenderBenchRow> runRenderBench(const RenderBenchOptions& options)
         if (options.withBaseline)
             rows.append(timeFrames(world, BallDrawing::Ellipses, options));
     }
+    for (const QString& id : options.pathLessons) {
+        rows.append(timeLessonWithPaths(id, true, options));
+        rows.append(timeLessonWithPaths(id, false, options));
+    }
     return rows;
 }
 
@@ -102,6 +153,7 @@ QString formatRenderBench(const QList<RenderBenchRow>& rows, const RenderBenchOp
 {
     QString text;
     QTextStream out(&text);
+    QList<RenderBenchRow> lessonRows;
     out << "render: " << options.size.width() << "x" << options.size.height() << " px image, box 1200x800 px "
         << options.fill * 100 << "% covered, median of " << options.frames
         << " frames (wall clock; cpu = this thread's CPU time)\n";
@@ -114,6 +166,10 @@ QString formatRenderBench(const QList<RenderBenchRow>& rows, const RenderBenchOp
                .arg(QStringLiteral("cpu ms"), 8)
                .arg(QStringLiteral("ns/ball"), 8);
     for (const RenderBenchRow& r : rows) {
+        if (!r.lesson.isEmpty()) {
+            lessonRows.append(r);
+            continue;
+        }
         const QString drawing =
             r.drawing == BallDrawing::Sprites ? QStringLiteral("sprites") : QStringLiteral("drawEllipse");
         out << QStringLiteral("%1  %2  %3  %4  %5  %6  %7\n")
@@ -125,6 +181,19 @@ QString formatRenderBench(const QList<RenderBenchRow>& rows, const RenderBenchOp
                    .arg(r.cpuMedianMs, 8, 'f', 3)
                    .arg(r.nsPerBall, 8, 'f', 1);
     }
+    for (const RenderBenchRow& r : lessonRows)
+        out << QStringLiteral("lesson %1 with paths %10, %2x%3 px, after %4 frames: median %5 ms, min %6, max %7, "
+                              "cpu %8 (%9 balls)\n")
+                   .arg(r.lesson)
+                   .arg(options.lessonSize.width())
+                   .arg(options.lessonSize.height())
+                   .arg(options.lessonWarmUp)
+                   .arg(r.medianMs, 0, 'f', 3)
+                   .arg(r.minMs, 0, 'f', 3)
+                   .arg(r.maxMs, 0, 'f', 3)
+                   .arg(r.cpuMedianMs, 0, 'f', 3)
+                   .arg(r.balls)
+                   .arg(r.incremental ? QStringLiteral("appended to a layer") : QStringLiteral("redrawn whole"));
     return text;
 }
 

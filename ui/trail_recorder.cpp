@@ -39,6 +39,8 @@ void TrailRecorder::clear()
     m_length = 0;
     m_ballCount = -1;
     m_lastTime = 0.0;
+    m_recorded = 0;
+    ++m_generation;
 }
 
 void TrailRecorder::restart(const sim::BallState& balls)
@@ -52,7 +54,9 @@ void TrailRecorder::restart(const sim::BallState& balls)
     } else if (m_selected >= 0 && m_selected < m_ballCount) {
         m_balls = {m_selected};
     }
-    m_ring.assign(static_cast<std::size_t>(m_capacity) * m_balls.size(), QPointF());
+    const int budget = m_balls.empty() ? m_capacity : kPointBudget / static_cast<int>(m_balls.size());
+    m_ringSize = std::min(m_capacity, std::max(std::min(120, m_capacity), budget));
+    m_ring.assign(static_cast<std::size_t>(m_ringSize) * m_balls.size(), QPointF());
 }
 
 void TrailRecorder::record(const sim::BallState& balls, double time)
@@ -70,14 +74,31 @@ void TrailRecorder::record(const sim::BallState& balls, double time)
         const int i = m_balls[k];
         row[k] = QPointF(balls.position(0, i), balls.position(1, i));
     }
-    m_head = (m_head + 1) % m_capacity;
-    m_length = std::min(m_length + 1, m_capacity);
+    m_head = (m_head + 1) % m_ringSize;
+    m_length = std::min(m_length + 1, m_ringSize);
+    ++m_recorded;
 }
 
 QPointF TrailRecorder::at(int slot, int age) const
 {
-    const int record = ((m_head - 1 - age) % m_capacity + m_capacity) % m_capacity;
+    const int record = ((m_head - 1 - age) % m_ringSize + m_ringSize) % m_ringSize;
     return m_ring[static_cast<std::size_t>(record) * m_balls.size() + static_cast<std::size_t>(slot)];
+}
+
+QPointF TrailRecorder::atRecord(int slot, qint64 record) const
+{
+    return at(slot, static_cast<int>(m_recorded - 1 - record));
+}
+
+qint64 TrailRecorder::windowStart() const
+{
+    // The oldest record held is recorded − ringSize once the ring is full;
+    // round it up to a whole number of half rings.
+    const qint64 half = std::max(1, m_ringSize / 2);
+    const qint64 oldest = m_recorded - m_ringSize;
+    if (oldest <= 0)
+        return 0;
+    return (oldest + half - 1) / half * half;
 }
 
 } // namespace forcelab

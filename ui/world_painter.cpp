@@ -2,6 +2,7 @@
 
 #include "trail_recorder.h"
 
+#include "sim/force_models.h"
 #include "sim/names.h"
 
 #include <QFontDatabase>
@@ -39,6 +40,10 @@ Overlays Overlays::fromNames(const QStringList& names)
     o.readout = names.contains(QStringLiteral("readout"));
     o.colliding = names.contains(QStringLiteral("colliding"));
     o.trails = names.contains(QStringLiteral("trails"));
+    o.forces = names.contains(QStringLiteral("forces"));
+    o.forceSources = names.contains(QStringLiteral("sources"));
+    o.centreOfMass = names.contains(QStringLiteral("centre-of-mass"));
+    o.momenta = names.contains(QStringLiteral("momenta"));
     o.vanes = names.contains(QStringLiteral("vanes"));
     o.impact = names.contains(QStringLiteral("impact"));
     o.broadphase = names.contains(QStringLiteral("broadphase"));
@@ -82,50 +87,94 @@ QSizeF totalsSize(double lineScale)
                      kTotalsLines, lineScale);
 }
 
+// The legend of the per-source force arrows: a title and one line per model that is on.
+QStringList sourceLegend(const sim::WorldSettings& settings)
+{
+    QStringList lines{QStringLiteral("forces by source")};
+    for (const sim::ForceModelInfo& m : sim::forceModels())
+        if (m.on(settings))
+            lines.append(QStringLiteral("── ") + QString::fromLatin1(m.name.data(), static_cast<qsizetype>(m.name.size())));
+    return lines;
+}
+
+QSizeF sourcesSize(const sim::WorldSettings& settings, double lineScale)
+{
+    const QStringList lines = sourceLegend(settings);
+    QString widest;
+    for (const QString& l : lines)
+        if (l.size() > widest.size())
+            widest = l;
+    return panelSize(panelFont(kTotalsPixels, lineScale), widest, static_cast<int>(lines.size()), lineScale);
+}
+
+double momentaSide(double lineScale)
+{
+    return 170.0 * lineScale;
+}
+
 struct Layout {
     QRectF stage;                      // where the box is fitted
     WorldPainter::Panels panels;
 };
 
-// The panels go in a strip at the right of the area, stacked, or at the top,
-// side by side, whichever leaves the box larger.
-Layout layoutFor(const sim::BoxSettings& box, const QRectF& area, const PaintOptions& o)
+// The panels go in a strip at the right of the area (one above the other,
+// wrapping into a second column when they do not fit the height) or at the
+// top (side by side, wrapping into rows), whichever leaves the box larger.
+// Their sizes do not depend on the numbers, so nothing moves while a lesson runs.
+Layout layoutFor(const sim::World& world, const QRectF& area, const PaintOptions& o)
 {
     Layout l{area, {}};
-    const QSizeF r = o.overlays.readout ? readoutSize(o.lineScale) : QSizeF();
-    const QSizeF t = o.overlays.totals ? totalsSize(o.lineScale) : QSizeF();
-    if (r.isEmpty() && t.isEmpty())
+    const sim::BoxSettings& box = world.settings().box;
+    const bool any = !world.balls().empty();
+    std::vector<std::pair<QRectF*, QSizeF>> items;
+    if (o.overlays.readout)
+        items.emplace_back(&l.panels.readout, readoutSize(o.lineScale));
+    if (o.overlays.totals)
+        items.emplace_back(&l.panels.totals, totalsSize(o.lineScale));
+    if (o.overlays.forceSources && any)
+        items.emplace_back(&l.panels.sources, sourcesSize(world.settings(), o.lineScale));
+    if (o.overlays.momenta && any)
+        items.emplace_back(&l.panels.momenta, QSizeF(momentaSide(o.lineScale), momentaSide(o.lineScale)));
+    if (items.empty())
         return l;
     const double gap = 8.0 * o.lineScale;
-    const double columnWidth = std::max(r.width(), t.width()) + 2 * gap;
-    const double rowHeight = std::max(r.height(), t.height()) + 2 * gap;
-    const QRectF beside = area.adjusted(0, 0, -columnWidth, 0), below = area.adjusted(0, rowHeight, 0, 0);
+    struct Flow {
+        std::vector<QPointF> at; // offsets from the strip's corner
+        QSizeF extent;
+    };
+    // Places the panels along rows (or columns) no longer than `limit`.
+    auto flow = [&](bool rows, double limit) {
+        Flow f;
+        double along = 0.0, across = 0.0, thickness = 0.0;
+        for (const auto& item : items) {
+            const QSizeF& size = item.second;
+            const double length = rows ? size.width() : size.height();
+            if (along > 0.0 && along + length > limit) { // wrap
+                across += thickness + gap;
+                along = 0.0;
+                thickness = 0.0;
+            }
+            f.at.push_back(rows ? QPointF(along, across) : QPointF(across, along));
+            along += length + gap;
+            thickness = std::max(thickness, rows ? size.height() : size.width());
+            const double endAlong = along - gap, endAcross = across + thickness;
+            f.extent = rows ? QSizeF(std::max(f.extent.width(), endAlong), endAcross)
+                            : QSizeF(endAcross, std::max(f.extent.height(), endAlong));
+        }
+        return f;
+    };
+    const Flow column = flow(false, area.height() - 2 * gap);
+    const Flow row = flow(true, area.width() - 2 * gap);
+    const QRectF beside = area.adjusted(0, 0, -(column.extent.width() + 2 * gap), 0);
+    const QRectF below = area.adjusted(0, row.extent.height() + 2 * gap, 0, 0);
     const double sideScale = ViewTransform::fit(box, beside, o.margin).scale();
     const double topScale = ViewTransform::fit(box, below, o.margin).scale();
-    if (sideScale >= topScale) {
-        l.stage = beside;
-        QPointF at(beside.right() + gap, area.top() + gap);
-        if (!r.isEmpty()) {
-            l.panels.readout = QRectF(at, r);
-            at.ry() += r.height() + gap;
-        }
-        if (!t.isEmpty())
-            l.panels.totals = QRectF(at, t);
-    } else {
-        // Side by side when both fit the width, else one under the other.
-        const bool stacked = !r.isEmpty() && !t.isEmpty() && r.width() + t.width() + 3 * gap > area.width();
-        l.stage = stacked ? area.adjusted(0, r.height() + t.height() + 3 * gap, 0, 0) : below;
-        QPointF at(area.left() + gap, area.top() + gap);
-        if (!r.isEmpty()) {
-            l.panels.readout = QRectF(at, r);
-            if (stacked)
-                at.ry() += r.height() + gap;
-            else
-                at.rx() += r.width() + gap;
-        }
-        if (!t.isEmpty())
-            l.panels.totals = QRectF(at, t);
-    }
+    const bool side = sideScale >= topScale;
+    l.stage = side ? beside : below;
+    const Flow& f = side ? column : row;
+    const QPointF corner = side ? QPointF(beside.right() + gap, area.top() + gap) : area.topLeft() + QPointF(gap, gap);
+    for (std::size_t k = 0; k < items.size(); ++k)
+        *items[k].first = QRectF(corner + f.at[k], items[k].second);
     return l;
 }
 
@@ -152,20 +201,20 @@ void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStrin
 
 ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area, const PaintOptions& options)
 {
-    return ViewTransform::fit(world.settings().box, layoutFor(world.settings().box, area, options).stage,
-                              options.margin);
+    return ViewTransform::fit(world.settings().box, layoutFor(world, area, options).stage, options.margin);
 }
 
 WorldPainter::Panels WorldPainter::panels(const sim::World& world, const QRectF& area, const PaintOptions& options)
 {
-    return layoutFor(world.settings().box, area, options).panels;
+    return layoutFor(world, area, options).panels;
 }
 
 void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& world, const PaintOptions& options,
                          qreal dpr)
 {
     // One layout for the frame: where the box goes and where its panels go.
-    const Layout layout = layoutFor(world.settings().box, area, options);
+    const Layout layout = layoutFor(world, area, options);
+    m_frame = PaintedFrame();
     const ViewTransform v = ViewTransform::fit(world.settings().box, layout.stage, options.margin);
     const Panels& placed = layout.panels;
     p.save();
@@ -175,7 +224,9 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     if (options.overlays.broadphase)
         paintBroadPhase(p, v, world, options);
     if (options.overlays.trails && options.trails)
-        paintTrails(p, v, world, options);
+        paintTrails(p, v, world, options, dpr);
+    if (options.overlays.centreOfMass)
+        paintCentreOfMass(p, v, world, options);
     if (options.overlays.markers)
         paintMarkers(p, v, world, options);
     // Collision responses mark balls; "flag" exists to show exactly that.
@@ -186,10 +237,13 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
         paintGhost(p, v, *options.ghost, options);
 
     std::optional<sim::Matrix2X> accelerations;
-    if ((options.overlays.acceleration || options.overlays.readout) && !world.balls().empty())
+    if ((options.overlays.acceleration || options.overlays.readout || options.overlays.forces ||
+         options.overlays.forceSources) &&
+        !world.balls().empty())
         accelerations = world.accelerations();
     const sim::Matrix2X* a = accelerations ? &*accelerations : nullptr;
-    if (options.overlays.velocity || options.overlays.acceleration)
+    if (options.overlays.velocity || options.overlays.acceleration || options.overlays.forces ||
+        options.overlays.forceSources)
         paintArrows(p, v, world, options, a);
     if (options.overlays.impact && options.collision && options.collision->valid())
         paintCollision(p, v, options);
@@ -199,6 +253,10 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
         paintTotals(p, placed.totals, world, options);
     if (options.overlays.readout)
         paintReadout(p, placed.readout, world, options, a);
+    if (!placed.sources.isEmpty())
+        paintSourceLegend(p, placed.sources, world, options);
+    if (!placed.momenta.isEmpty())
+        paintMomenta(p, placed.momenta, world, options);
     p.restore();
 }
 
@@ -455,6 +513,43 @@ void WorldPainter::paintArrows(QPainter& p, const ViewTransform& view, const sim
                       Qt::RoundCap));
         p.drawLines(lines);
     }
+    m_frame.forceScale = scales.force;
+    if (options.overlays.forces && accelerations) {
+        // The net force F = m a: the same direction as the acceleration arrow,
+        // but a heavy ball's is longer by its mass.
+        QList<QLineF> lines;
+        for (int i : which) {
+            const sim::Vec2 x = at.col(i);
+            const qsizetype before = lines.size();
+            appendArrow(lines, view.toWidget(x),
+                        view.toWidget(x + scales.force * balls.mass[i] * sim::Vec2(accelerations->col(i))), head);
+            if (lines.size() > before)
+                m_frame.forceLengths.push_back(lines[before].length());
+        }
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kForce), 3.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
+        p.drawLines(lines);
+    }
+    if (options.overlays.forceSources) {
+        // Each model's force on a ball, F = m a_model, in the model's colour,
+        // at the net force's scale: on screen the parts add up to the whole.
+        // Few balls: all of them; many: the selected one (each costs a pass
+        // over every model).
+        QList<int> traced;
+        if (n <= kMaxSourceBalls)
+            traced = which;
+        else if (options.selected >= 0 && options.selected < n)
+            traced.append(options.selected);
+        for (int i : traced) {
+            const sim::Vec2 x = at.col(i);
+            for (const sim::World::SourceAcceleration& source : world.accelerationBySource(i)) {
+                QList<QLineF> lines;
+                appendArrow(lines, view.toWidget(x),
+                            view.toWidget(x + scales.force * balls.mass[i] * source.acceleration), 0.8 * head);
+                p.setPen(QPen(sourceColor(source.model), 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
+                p.drawLines(lines);
+            }
+        }
+    }
     p.restore();
 }
 
@@ -482,7 +577,8 @@ double medianLength(const sim::Matrix2X& m)
 WorldPainter::ArrowScales WorldPainter::arrowScales(const sim::World& world, const ViewTransform& view,
                                                     const PaintOptions& options, const sim::Matrix2X* accelerations)
 {
-    ArrowScales s{options.velocityScale, options.accelerationScale};
+    const double f = options.arrowFactor > 0.0 ? options.arrowFactor : 1.0;
+    ArrowScales s{f * options.velocityScale, f * options.accelerationScale, f * options.forceScale};
     if (!options.autoArrows || !(view.scale() > 0.0))
         return s;
     // A scale of k seconds draws a speed v as k v world px, k v scale screen px.
@@ -492,6 +588,16 @@ WorldPainter::ArrowScales WorldPainter::arrowScales(const sim::World& world, con
     const double a = accelerations ? medianLength(*accelerations) : 0.0;
     if (a > 0.0)
         s.acceleration = kArrowPixels / (view.scale() * a);
+    if (accelerations && (options.overlays.forces || options.overlays.forceSources)) {
+        // The net forces m a set the scale; the per-source arrows share it.
+        sim::Matrix2X forces = *accelerations;
+        const sim::BallState& balls = world.balls();
+        for (Eigen::Index i = 0; i < forces.cols() && i < balls.size(); ++i)
+            forces.col(i) *= balls.mass[static_cast<int>(i)];
+        const double m = medianLength(forces);
+        if (m > 0.0)
+            s.force = kArrowPixels / (view.scale() * m);
+    }
     return s;
 }
 
@@ -643,53 +749,236 @@ void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const
 }
 
 void WorldPainter::paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world,
-                               const PaintOptions& options)
+                               const PaintOptions& options, qreal dpr)
 {
     const TrailRecorder& trails = *options.trails;
-    const int length = trails.length();
     const std::vector<int>& tracked = trails.balls();
     const sim::BallState& balls = world.balls();
-    if (length < 2 || tracked.empty())
+    if (trails.length() < 2 || tracked.empty())
         return;
-    // Four bands of age, each more transparent than the one before: the
-    // trail fades towards its oldest end. Up to 200 balls keep their own
-    // colour; more get one colour and a single draw call per band.
-    constexpr int kBands = 4;
+    const qint64 start = trails.windowStart(), newest = trails.recorded() - 1;
+    // Up to 200 balls keep their own colour (paler, so the balls stand out
+    // from their paths); more share one colour and one draw call.
     const bool ownColours = tracked.size() <= 200;
-    p.setRenderHint(QPainter::Antialiasing, true);
-    std::array<QList<QLineF>, kBands> shared;
-    for (std::size_t slot = 0; slot < tracked.size(); ++slot) {
-        const int ball = tracked[slot];
-        if (ball >= balls.size())
-            continue;
-        std::array<QList<QLineF>, kBands> own;
-        auto& lines = ownColours ? own : shared;
-        QPointF previous = view.toWidget(sim::Vec2(trails.at(static_cast<int>(slot), 0).x(),
-                                                   trails.at(static_cast<int>(slot), 0).y()));
-        for (int age = 1; age < length; ++age) {
-            const QPointF w = trails.at(static_cast<int>(slot), age);
-            const QPointF next = view.toWidget(sim::Vec2(w.x(), w.y()));
-            lines[static_cast<std::size_t>(age * kBands / length)].append(QLineF(previous, next));
-            previous = next;
-        }
-        if (ownColours) {
-            const QColor c = QColor::fromRgb(balls.color[static_cast<std::size_t>(ball)]).darker(130);
-            for (int band = 0; band < kBands; ++band) {
-                QColor faded = c;
-                faded.setAlpha(230 - 50 * band);
-                p.setPen(QPen(faded, 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
-                p.drawLines(own[static_cast<std::size_t>(band)]);
+    std::vector<sim::Rgb> colors;
+    colors.reserve(tracked.size());
+    for (int ball : tracked) {
+        const sim::Rgb c = ownColours && ball < balls.size() ? balls.color[static_cast<std::size_t>(ball)]
+                                                              : canvas_colors::kTrail;
+        auto pale = [](int v) { return v + (255 - v) * 35 / 100; };
+        colors.push_back(qRgb(pale(qRed(c)), pale(qGreen(c)), pale(qBlue(c))) & 0xffffffu);
+    }
+    const double width = (ownColours ? 2.0 : 1.5) * options.lineScale;
+    const QRectF box = view.boxRect();
+    // Records from..to as line segments, each ball in its colour.
+    auto drawSegments = [&](QPainter& q, qint64 from, qint64 to) {
+        q.setRenderHint(QPainter::Antialiasing, true);
+        QList<QLineF> shared;
+        for (std::size_t slot = 0; slot < tracked.size(); ++slot) {
+            const int s = static_cast<int>(slot);
+            QList<QLineF> own;
+            QList<QLineF>& lines = ownColours ? own : shared;
+            const QPointF first = trails.atRecord(s, from);
+            QPointF previous = view.toWidget(sim::Vec2(first.x(), first.y()));
+            for (qint64 r = from + 1; r <= to; ++r) {
+                const QPointF w = trails.atRecord(s, r);
+                const QPointF next = view.toWidget(sim::Vec2(w.x(), w.y()));
+                lines.append(QLineF(previous, next));
+                previous = next;
+            }
+            if (ownColours) {
+                q.setPen(QPen(QColor::fromRgb(colors[slot]), width, Qt::SolidLine, Qt::RoundCap));
+                q.drawLines(own);
             }
         }
-    }
-    if (!ownColours) {
-        for (int band = 0; band < kBands; ++band) {
-            QColor faded = QColor::fromRgb(canvas_colors::kTrail);
-            faded.setAlpha(200 - 45 * band);
-            p.setPen(QPen(faded, 1.5 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
-            p.drawLines(shared[static_cast<std::size_t>(band)]);
+        if (!ownColours) {
+            q.setPen(QPen(QColor::fromRgb(colors.front()), width, Qt::SolidLine, Qt::RoundCap));
+            q.drawLines(shared);
         }
+    };
+    if (!options.incrementalPaths) {
+        p.save();
+        p.setClipRect(box, Qt::IntersectClip);
+        drawSegments(p, start, newest);
+        p.restore();
+        return;
     }
+    // The layer covers the box on whole pixels, so a segment lands on the
+    // same pixels as when it is drawn straight onto the picture. Only the
+    // segments recorded since the last frame are drawn into it.
+    const QRectF cover = QRectF(box.toAlignedRect());
+    PathLayer& layer = m_paths;
+    const bool same = layer.generation == trails.generation() && layer.start == start && layer.box == cover &&
+                      layer.scale == view.scale() && layer.dpr == dpr && layer.lineScale == options.lineScale &&
+                      layer.balls == tracked && layer.colors == colors && layer.drawnTo >= start &&
+                      layer.drawnTo <= newest && !layer.image.isNull();
+    if (!same) {
+        const QSize pixels = (cover.size() * dpr).toSize();
+        if (layer.image.size() != pixels || layer.image.devicePixelRatio() != dpr) {
+            layer.image = QImage(pixels, QImage::Format_ARGB32_Premultiplied);
+            layer.image.setDevicePixelRatio(dpr);
+        }
+        layer.image.fill(Qt::transparent);
+        layer.generation = trails.generation();
+        layer.start = start;
+        layer.drawnTo = start;
+        layer.box = cover;
+        layer.scale = view.scale();
+        layer.dpr = dpr;
+        layer.lineScale = options.lineScale;
+        layer.balls = tracked;
+        layer.colors = colors;
+        m_frame.pathLayerRebuilt = true;
+    }
+    if (layer.drawnTo < newest) {
+        QPainter q(&layer.image);
+        q.translate(-cover.topLeft());
+        q.setClipRect(box);
+        drawSegments(q, layer.drawnTo, newest);
+        layer.drawnTo = newest;
+    }
+    p.drawImage(cover.topLeft(), layer.image);
+}
+
+void WorldPainter::paintCentreOfMass(QPainter& p, const ViewTransform& view, const sim::World& world,
+                                     const PaintOptions& options)
+{
+    const sim::BallState& balls = world.balls();
+    const double total = balls.mass.sum();
+    if (balls.empty() || !(total > 0.0))
+        return;
+    // x_cm = (sum of m x) / (sum of m): it moves like one ball of the whole
+    // mass pushed by the outside forces alone; the forces between the balls
+    // cancel in pairs.
+    const sim::Vec2 centre = (drawnPositions(balls, options) * balls.mass.matrix()) / total;
+    const double k = options.lineScale;
+    p.save();
+    p.setClipRect(view.boxRect(), Qt::IntersectClip);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    if (options.centreOfMassPath && options.centreOfMassPath->size() >= 2) {
+        QPolygonF path;
+        path.reserve(static_cast<qsizetype>(options.centreOfMassPath->size()));
+        for (const sim::Vec2& x : *options.centreOfMassPath)
+            path.append(view.toWidget(x));
+        p.setPen(QPen(QColor::fromRgb(canvas_colors::kCentreOfMass), 1.5 * k, Qt::DashLine, Qt::RoundCap));
+        p.setBrush(Qt::NoBrush);
+        p.drawPolyline(path);
+    }
+    // The usual sign: a disc in quarters, two dark and two white.
+    const QPointF c = view.toWidget(centre);
+    const double r = 8.0 * k;
+    const QRectF disc(c - QPointF(r, r), QSizeF(2 * r, 2 * r));
+    p.setPen(Qt::NoPen);
+    p.setBrush(Qt::white);
+    p.drawEllipse(disc);
+    p.setBrush(QColor::fromRgb(canvas_colors::kCentreOfMass));
+    p.drawPie(disc, 0, 90 * 16);
+    p.drawPie(disc, 180 * 16, 90 * 16);
+    p.setPen(QPen(QColor::fromRgb(canvas_colors::kCentreOfMass), 1.5 * k));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(disc);
+    p.restore();
+}
+
+QColor WorldPainter::sourceColor(std::string_view name)
+{
+    // The Okabe-Ito colours (safe for the common colour-vision
+    // deficiencies), with the yellow darkened to show on white and without
+    // the black of the net force arrow.
+    static constexpr QRgb kColors[] = {0xff0072b2, 0xffd55e00, 0xff009e73, 0xffcc79a7,
+                                       0xff56b4e9, 0xffe69f00, 0xffa89a00};
+    std::size_t k = 0;
+    for (const sim::ForceModelInfo& m : sim::forceModels()) {
+        if (m.name == name)
+            break;
+        ++k;
+    }
+    return QColor::fromRgba(kColors[k % std::size(kColors)]);
+}
+
+void WorldPainter::paintSourceLegend(QPainter& p, const QRectF& panel, const sim::World& world,
+                                     const PaintOptions& options)
+{
+    const QStringList lines = sourceLegend(world.settings());
+    QList<QColor> colors{QColor(0x1d, 0x22, 0x2c)};
+    for (const sim::ForceModelInfo& m : sim::forceModels())
+        if (m.on(world.settings()))
+            colors.append(sourceColor(m.name));
+    drawPanel(p, panel, panelFont(kTotalsPixels, options.lineScale), lines, colors, options.lineScale);
+}
+
+void WorldPainter::paintMomenta(QPainter& p, const QRectF& panel, const sim::World& world,
+                                const PaintOptions& options)
+{
+    const sim::BallState& balls = world.balls();
+    const int n = balls.size();
+    const double k = options.lineScale;
+    const QFont font = panelFont(kTotalsPixels, k);
+    drawPanel(p, panel, font, {QStringLiteral("momenta  p = m v")}, {}, k);
+    const QFontMetricsF fm(font);
+    const double pad = 8.0 * k;
+    // Below the title: each ball's momentum drawn from the tip of the one
+    // before, and the sum from the first tail to the last tip. The sum is the
+    // total momentum: a collision between two balls changes both their
+    // arrows but not the sum.
+    const QRectF region = panel.adjusted(pad, pad + fm.lineSpacing(), -pad, -pad);
+    const QPointF origin = region.center();
+    const double room = 0.5 * std::min(region.width(), region.height());
+    std::vector<sim::Vec2>& momenta = m_frame.momenta;
+    momenta.resize(static_cast<std::size_t>(n));
+    sim::Vec2 sum(0, 0);
+    double reach = 0.0;
+    const bool chain = n <= kMaxMomentumChain;
+    for (int i = 0; i < n; ++i) {
+        momenta[static_cast<std::size_t>(i)] = balls.mass[i] * balls.velocity.col(i);
+        sum += momenta[static_cast<std::size_t>(i)];
+        if (chain)
+            reach = std::max(reach, sum.norm());
+    }
+    reach = std::max(reach, sum.norm());
+    m_frame.momentumSum = sum;
+    // A scale from the 1-1.5-2-3-5-7 ladder that fits the farthest tip in the
+    // room, kept while that tip uses between a quarter and all of it.
+    double& scale = m_momentumScale;
+    if (reach > 0.0 && std::isfinite(reach) &&
+        !(scale > 0.0 && reach * scale <= room && reach * scale >= 0.25 * room)) {
+        const double want = 0.8 * room / reach;
+        const double decade = std::pow(10.0, std::floor(std::log10(want)));
+        scale = decade;
+        for (double step : {1.0, 1.5, 2.0, 3.0, 5.0, 7.0})
+            if (step * decade <= want)
+                scale = step * decade;
+    }
+    if (!(scale > 0.0))
+        scale = 1.0;
+    m_frame.momentumScale = scale;
+    auto to = [&](const sim::Vec2& v) { return origin + QPointF(v.x() * scale, v.y() * scale); };
+    p.save();
+    p.setClipRect(panel, Qt::IntersectClip);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const double head = 7.0 * k;
+    sim::Vec2 tail(0, 0);
+    if (chain) {
+        for (int i = 0; i < n; ++i) {
+            const sim::Vec2 tip = tail + momenta[static_cast<std::size_t>(i)];
+            QList<QLineF> lines;
+            appendArrow(lines, to(tail), to(tip), head);
+            p.setPen(QPen(QColor::fromRgb(balls.color[static_cast<std::size_t>(i)]).darker(115), 2.0 * k,
+                          Qt::SolidLine, Qt::RoundCap));
+            p.drawLines(lines);
+            tail = tip;
+        }
+        m_frame.momentumChainTip = to(tail);
+    }
+    QList<QLineF> lines;
+    appendArrow(lines, origin, to(sum), head);
+    m_frame.momentumSumArrow = QLineF(origin, to(sum));
+    p.setPen(QPen(QColor::fromRgb(canvas_colors::kForce), 3.0 * k, Qt::SolidLine, Qt::RoundCap));
+    p.drawLines(lines);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor::fromRgb(canvas_colors::kForce));
+    p.drawEllipse(origin, 2.5 * k, 2.5 * k);
+    p.restore();
 }
 
 void WorldPainter::paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options)

@@ -10,7 +10,12 @@
 #include "sim/world.h"
 
 #include <QColor>
+#include <QImage>
+#include <QLineF>
 #include <QStringList>
+
+#include <string_view>
+#include <vector>
 
 class QPainter;
 
@@ -21,10 +26,14 @@ struct Overlays {
     bool grid = true;          ///< [grid] faint lines every 50 px, labelled every 100 px
     bool velocity = false;     ///< [velocity] velocity arrows
     bool acceleration = false; ///< [acceleration] acceleration arrows
+    bool forces = false;       ///< [forces] net force arrows, F = m a
+    bool forceSources = false; ///< [sources] one force arrow per force model that acts, in the model's colour, with a legend
     bool readout = false;      ///< [readout] position, velocity, acceleration of the selected ball
     bool colliding = false;    ///< [colliding] balls touching another ball drawn in the marked colour
     bool markers = true;       ///< [markers] point-force centre, spring anchor, homes, the pointer's pull or push
-    bool trails = false;       ///< [trails] a fading line behind each ball (or the selected one)
+    bool trails = false;       ///< [trails] the path behind each ball (or the selected one)
+    bool centreOfMass = false; ///< [centre-of-mass] the centre of mass of all balls and its path
+    bool momenta = false;      ///< [momenta] an inset beside the box: each ball's momentum tip to tail, and their sum
     bool vanes = false;        ///< [vanes] one wind vane per wind model (the acting one and wind.compare)
     bool impact = false;       ///< [impact] the selected ball's last collision: line of impact, tangent, velocities before and after
     bool broadphase = false;   ///< [broadphase] the grid cells or the sweep's x-intervals of the collision detection
@@ -62,9 +71,13 @@ struct PaintOptions {
     double margin = 10.0;           ///< px, free space around the box (the stage view uses less)
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
     bool autoArrows = false;        ///< scale the arrows so the median one is kArrowPixels long on screen
+    double arrowFactor = 1.0;       ///< without autoArrows: the fixed scales are multiplied by this
+    double forceScale = 0.05;       ///< s² per unit of mass: a force arrow is F × this
+    bool incrementalPaths = true;   ///< false: every path is redrawn whole each frame (the reference for tests)
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
+    const std::vector<sim::Vec2>* centreOfMassPath = nullptr; ///< world px, oldest first; drawn when overlays.centreOfMass; not owned
     /// px, where to draw the balls instead of their positions (2×N, the
     /// slow-motion interpolation between two steps); not owned
     const sim::Matrix2X* positions = nullptr;
@@ -86,7 +99,22 @@ inline constexpr QRgb kImpactLine = 0xffd9480f;
 inline constexpr QRgb kTangent = 0xff6c757d;
 inline constexpr QRgb kBroadPhase = 0xff4263eb;
 inline constexpr QRgb kGhost = 0xa0202020;      ///< the ghost's outlines (translucent)
+inline constexpr QRgb kForce = 0xff22262e;      ///< net force arrows and the momenta inset's sum
+inline constexpr QRgb kCentreOfMass = 0xff343a40;
 } // namespace canvas_colors
+
+/// What the last paint() drew, for tests: the momenta inset's numbers and
+/// whether the path layer was drawn afresh.
+struct PaintedFrame {
+    std::vector<double> forceLengths; ///< widget px, one per net force arrow drawn
+    double forceScale = 0.0;          ///< s² per unit of mass, the scale the force arrows used
+    std::vector<sim::Vec2> momenta;   ///< mass·px/s, each ball's momentum (the inset's arrows)
+    sim::Vec2 momentumSum{0, 0};      ///< mass·px/s, their sum
+    QLineF momentumSumArrow;          ///< widget px, the sum arrow from its tail to its tip
+    QPointF momentumChainTip;         ///< widget px, the tip of the last ball's arrow in the chain
+    double momentumScale = 0.0;       ///< widget px per mass·px/s in the inset
+    bool pathLayerRebuilt = false;    ///< the path layer was drawn afresh this frame (not appended to)
+};
 
 class WorldPainter {
 public:
@@ -105,6 +133,8 @@ public:
     struct Panels {
         QRectF readout;
         QRectF totals;
+        QRectF sources; ///< the legend of the per-source force arrows
+        QRectF momenta; ///< the momenta inset
     };
     static Panels panels(const sim::World& world, const QRectF& area, const PaintOptions& options);
 
@@ -120,6 +150,7 @@ public:
     struct ArrowScales {
         double velocity = 0.25;
         double acceleration = 0.05;
+        double force = 0.05;
     };
     static ArrowScales arrowScales(const sim::World& world, const ViewTransform& view, const PaintOptions& options,
                                    const sim::Matrix2X* accelerations);
@@ -138,6 +169,15 @@ public:
     static QStringList totalsText(const sim::World& world);
     /// The lines of the readout of ball `selected` (ball 0 when none).
     static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations);
+    /// Above this many balls, per-source force arrows are drawn for the selected ball only.
+    static constexpr int kMaxSourceBalls = 12;
+    /// Above this many balls, the momenta inset shows the sum only.
+    static constexpr int kMaxMomentumChain = 60;
+    /// The colour of force model `name`'s arrows (its place in sim::forceModels()).
+    static QColor sourceColor(std::string_view name);
+
+    /// What the last paint() drew (for tests).
+    const PaintedFrame& lastFrame() const { return m_frame; }
 
 private:
     void paintBox(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
@@ -147,7 +187,12 @@ private:
     void paintArrows(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
                      const sim::Matrix2X* accelerations);
     void paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
+    void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
+                     qreal dpr);
+    void paintCentreOfMass(QPainter& p, const ViewTransform& view, const sim::World& world,
+                           const PaintOptions& options);
+    void paintMomenta(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
+    void paintSourceLegend(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
     void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
     void paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
@@ -155,7 +200,26 @@ private:
     void paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
                       const sim::Matrix2X* accelerations);
 
+    // The paths as a layer the size of the box: each frame draws only the
+    // segments recorded since the last one; it is drawn afresh when the
+    // view, the recorder or the window of records shown changes.
+    struct PathLayer {
+        QImage image;
+        quint64 generation = 0;
+        qint64 start = -1;   // first record shown (TrailRecorder::recorded() numbering)
+        qint64 drawnTo = -1; // last record drawn
+        QRectF box;          // widget px the layer covers
+        double scale = 0.0;
+        qreal dpr = 0.0;
+        double lineScale = 0.0;
+        std::vector<int> balls;
+        std::vector<sim::Rgb> colors;
+    };
+
     BallSprites m_sprites;
+    PathLayer m_paths;
+    PaintedFrame m_frame;
+    double m_momentumScale = 0.0; // the inset's scale, kept while the arrows fit
 };
 
 } // namespace forcelab

@@ -1,0 +1,209 @@
+// The drawing aids a class switches from the View menu: the momenta inset
+// adds up to the world's momentum, the centre of mass is where Σ m x / Σ m
+// says, force arrows by source add up to the net force arrow, the arrow
+// length menu scales arrows by its factor, and the path layer that is
+// appended to each frame gives the picture a whole redraw gives.
+// Real widgets, offscreen.
+#include "ui/canvas.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "ui/world_painter.h"
+
+#include <QAction>
+#include <QPainter>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace forcelab;
+
+namespace {
+
+int colorDistance(QRgb a, QRgb b)
+{
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+}
+
+QAction* action(MainWindow& window, const char* name)
+{
+    return window.findChild<QAction*>(QString::fromLatin1(name));
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+} // namespace
+
+class GuiOverlaysTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void momentaInsetAddsUpToTheTotalMomentum();
+    void centreOfMassIsTheMassWeightedMean();
+    void forcesBySourceAddUpToTheNetForce();
+    void arrowLengthMenuScalesTheArrows();
+    void pathLayerMatchesAWholeRedraw();
+};
+
+void GuiOverlaysTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+}
+
+// Lesson 31 after the break: the inset's sum arrow is the total momentum
+// (to 1e-9 of its size) and ends where the chain of the balls' arrows ends.
+void GuiOverlaysTest::momentaInsetAddsUpToTheTotalMomentum()
+{
+    MainWindow window(QStringLiteral("break-shot"));
+    window.resize(1280, 720);
+    QAction* momenta = action(window, "showMomenta");
+    QVERIFY(momenta && !momenta->isChecked());
+    momenta->trigger();
+    QVERIFY(window.canvas()->overlays().momenta);
+    for (int k = 0; k < 40; ++k)
+        window.controller()->stepOnce(); // past the break: every ball moves
+    window.canvas()->grab();
+    const PaintedFrame& f = window.canvas()->painter().lastFrame();
+    const sim::World& world = window.controller()->world();
+    QCOMPARE(f.momenta.size(), static_cast<std::size_t>(world.balls().size()));
+    const sim::Vec2 total = world.momentum();
+    QVERIFY(total.norm() > 0.0);
+    QVERIFY((f.momentumSum - total).norm() <= 1e-9 * total.norm());
+    QVERIFY(f.momentumScale > 0.0);
+    const QPointF drawn = (f.momentumSumArrow.p2() - f.momentumSumArrow.p1()) / f.momentumScale;
+    QVERIFY(std::abs(drawn.x() - total.x()) <= 1e-9 * total.norm());
+    QVERIFY(std::abs(drawn.y() - total.y()) <= 1e-9 * total.norm());
+    QVERIFY(QLineF(f.momentumChainTip, f.momentumSumArrow.p2()).length() < 1e-6);
+    // A lesson change brings back the lesson's choice: no inset in lesson 19.
+    QVERIFY(window.openLesson(QStringLiteral("two-bodies-in-orbit")));
+    QVERIFY(!window.canvas()->overlays().momenta && !momenta->isChecked());
+}
+
+// Lesson 19 (Earth and Moon): the path's newest point is Σ m x / Σ m, and
+// with no outside force the centre of mass moves at the constant velocity
+// P / M (total momentum over total mass): after time t it has moved P t / M,
+// to 1e-6 px.
+void GuiOverlaysTest::centreOfMassIsTheMassWeightedMean()
+{
+    MainWindow window(QStringLiteral("two-bodies-in-orbit"));
+    action(window, "showCentreOfMass")->trigger();
+    const sim::World& world = window.controller()->world();
+    const double t0 = world.time();
+    for (int k = 0; k < 120; ++k)
+        window.controller()->stepOnce();
+    const std::vector<sim::Vec2>& path = window.canvas()->centreOfMassPath();
+    QVERIFY(path.size() >= 2);
+    const sim::BallState& balls = world.balls();
+    const double total = balls.mass.sum();
+    const sim::Vec2 want = (balls.position * balls.mass.matrix()) / total;
+    QVERIFY((path.back() - want).norm() < 1e-9);
+    const sim::Vec2 moved = world.momentum() * ((world.time() - t0) / total);
+    QVERIFY2((path.back() - path.front() - moved).norm() < 1e-6,
+             qPrintable(QStringLiteral("moved %1 px, P t / M = %2 px").arg((path.back() - path.front()).norm()).arg(moved.norm())));
+}
+
+// Lesson 18 (a spring and drag): with net and per-source force arrows on,
+// every ball gets one arrow per model that is on, in the model's colour, and
+// the models' forces add up to the net force m a the net arrow shows.
+void GuiOverlaysTest::forcesBySourceAddUpToTheNetForce()
+{
+    MainWindow window(QStringLiteral("elastic-band"));
+    window.resize(1280, 720);
+    action(window, "showForces")->trigger();
+    action(window, "showForceSources")->trigger();
+    for (int k = 0; k < 30; ++k)
+        window.controller()->stepOnce();
+    const sim::World& world = window.controller()->world();
+    const sim::Matrix2X a = world.accelerations();
+    for (int i = 0; i < world.balls().size(); ++i) {
+        sim::Vec2 sum(0, 0);
+        int sources = 0;
+        for (const sim::World::SourceAcceleration& s : world.accelerationBySource(i)) {
+            sum += s.acceleration;
+            ++sources;
+        }
+        QVERIFY(sources >= 2);
+        QVERIFY((sum - sim::Vec2(a.col(i))).norm() <= 1e-9 * (1.0 + a.col(i).norm()));
+    }
+    const QImage shot = window.canvas()->grab().toImage();
+    const QRgb gravity = WorldPainter::sourceColor("spring").rgb();
+    int pixels = 0;
+    for (int y = 0; y < shot.height(); ++y)
+        for (int x = 0; x < shot.width(); ++x)
+            pixels += colorDistance(shot.pixel(x, y), gravity) < 30;
+    QVERIFY2(pixels > 60, qPrintable(QString::number(pixels)));
+    QVERIFY(!window.canvas()->painter().lastFrame().forceLengths.empty());
+}
+
+// Off auto, ×2 doubles every net force arrow of ×1 (to rounding).
+void GuiOverlaysTest::arrowLengthMenuScalesTheArrows()
+{
+    MainWindow window(QStringLiteral("drag"));
+    window.resize(1280, 720);
+    action(window, "showForces")->trigger();
+    for (int k = 0; k < 10; ++k)
+        window.controller()->stepOnce();
+    action(window, "arrowFactor1")->trigger();
+    QVERIFY(!action(window, "autoArrows")->isChecked());
+    window.canvas()->grab();
+    const std::vector<double> one = window.canvas()->painter().lastFrame().forceLengths;
+    action(window, "arrowFactor2")->trigger();
+    window.canvas()->grab();
+    const std::vector<double> two = window.canvas()->painter().lastFrame().forceLengths;
+    QCOMPARE(one.size(), two.size());
+    QVERIFY(!one.empty());
+    for (std::size_t k = 0; k < one.size(); ++k)
+        QVERIFY2(std::abs(two[k] - 2.0 * one[k]) < 1e-6 * one[k] + 1e-9, qPrintable(QString::number(two[k] / one[k])));
+    action(window, "autoArrows")->trigger();
+    window.canvas()->grab();
+    const double m = median(window.canvas()->painter().lastFrame().forceLengths);
+    QVERIFY2(std::abs(m - WorldPainter::kArrowPixels) < 1.0, qPrintable(QString::number(m)));
+}
+
+// Lesson 09 with its paths: 150 frames appended to the layer without a
+// rebuild, and the picture is the one a whole redraw of every path gives.
+void GuiOverlaysTest::pathLayerMatchesAWholeRedraw()
+{
+    MainWindow window(QStringLiteral("bounce-at-the-right-moment"));
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    Canvas* canvas = window.canvas();
+    QVERIFY(canvas->overlays().trails);
+    int rebuilt = 0;
+    for (int frame = 0; frame < 150; ++frame) {
+        window.controller()->stepOnce();
+        canvas->repaint();
+        rebuilt += frame > 0 && canvas->painter().lastFrame().pathLayerRebuilt;
+    }
+    QCOMPARE(rebuilt, 0); // drawn once, then appended to
+    const QImage incremental = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    PaintOptions whole = canvas->paintOptions();
+    whole.incrementalPaths = false;
+    QImage image(incremental.size(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(incremental.devicePixelRatio());
+    {
+        QPainter p(&image);
+        WorldPainter painter;
+        painter.paint(p, QRectF(canvas->rect()), window.controller()->world(), whole, image.devicePixelRatio());
+    }
+    image = image.convertToFormat(QImage::Format_RGB32);
+    const QRectF box = canvas->viewTransform().boxRect();
+    int differ = 0, path = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            differ += colorDistance(image.pixel(x, y), incremental.pixel(x, y)) > 40;
+            path += box.contains(x, y) && colorDistance(image.pixel(x, y), canvas_colors::kBackground) > 40;
+        }
+    QVERIFY(path > 1000); // there are paths to compare
+    // Antialiased edges where two appended segments meet may differ a little.
+    QVERIFY2(differ <= path / 100, qPrintable(QStringLiteral("%1 of %2 pixels differ").arg(differ).arg(path)));
+}
+
+QTEST_MAIN(GuiOverlaysTest)
+#include "test_gui_overlays.moc"
