@@ -7,7 +7,13 @@
 #include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/simulation_controller.h"
+#include "ui/theme.h"
 #include "ui/world_painter.h"
+
+#include <QDir>
+#include <QImageReader>
+#include <QScreen>
+#include <QTemporaryDir>
 
 #include <QAction>
 #include <QPainter>
@@ -48,6 +54,10 @@ private slots:
     void forcesBySourceAddUpToTheNetForce();
     void arrowLengthMenuScalesTheArrows();
     void pathLayerMatchesAWholeRedraw();
+    void projectorThemeDrawsOkabeItoBallsWithOutlines();
+    void stageViewAlwaysUsesTheProjectorTheme();
+    void pictureIsAsLargeAsTheScreenShowsIt();
+    void openDialogStartsInTheLessonsFolder();
 };
 
 void GuiOverlaysTest::initTestCase()
@@ -62,8 +72,7 @@ void GuiOverlaysTest::momentaInsetAddsUpToTheTotalMomentum()
     MainWindow window(QStringLiteral("break-shot"));
     window.resize(1280, 720);
     QAction* momenta = action(window, "showMomenta");
-    QVERIFY(momenta && !momenta->isChecked());
-    momenta->trigger();
+    QVERIFY(momenta && momenta->isChecked()); // lesson 31 names it
     QVERIFY(window.canvas()->overlays().momenta);
     for (int k = 0; k < 40; ++k)
         window.controller()->stepOnce(); // past the break: every ball moves
@@ -91,7 +100,7 @@ void GuiOverlaysTest::momentaInsetAddsUpToTheTotalMomentum()
 void GuiOverlaysTest::centreOfMassIsTheMassWeightedMean()
 {
     MainWindow window(QStringLiteral("two-bodies-in-orbit"));
-    action(window, "showCentreOfMass")->trigger();
+    QVERIFY(action(window, "showCentreOfMass")->isChecked()); // lesson 19 names it
     const sim::World& world = window.controller()->world();
     const double t0 = world.time();
     for (int k = 0; k < 120; ++k)
@@ -203,6 +212,86 @@ void GuiOverlaysTest::pathLayerMatchesAWholeRedraw()
     QVERIFY(path > 1000); // there are paths to compare
     // Antialiased edges where two appended segments meet may differ a little.
     QVERIFY2(differ <= path / 100, qPrintable(QStringLiteral("%1 of %2 pixels differ").arg(differ).arg(path)));
+}
+
+// View > Projector Theme: the box turns white, every ball's centre pixel is
+// an Okabe-Ito colour, and each ball has a dark outline at its edge.
+void GuiOverlaysTest::projectorThemeDrawsOkabeItoBallsWithOutlines()
+{
+    MainWindow window(QStringLiteral("break-shot"));
+    window.resize(1280, 720);
+    QAction* theme = action(window, "themeAction");
+    QVERIFY(theme && !theme->isChecked());
+    Canvas* canvas = window.canvas();
+    canvas->setOverlays(Overlays()); // no arrows from the centres
+    const QImage plain = canvas->renderImage();
+    theme->trigger();
+    QVERIFY(canvas->colors().colourBlindSafe);
+    const QImage shot = canvas->renderImage();
+    QVERIFY(plain != shot);
+    const ViewTransform view = canvas->viewTransform();
+    const sim::BallState& balls = window.controller()->world().balls();
+    const double dpr = shot.devicePixelRatio();
+    for (int i = 0; i < balls.size(); ++i) {
+        const QPointF c = view.toWidget(sim::Vec2(balls.position.col(i))) * dpr;
+        const QRgb centre = shot.pixel(c.toPoint());
+        if (std::max({qRed(centre), qGreen(centre), qBlue(centre)}) - std::min({qRed(centre), qGreen(centre), qBlue(centre)}) < 16)
+            continue; // the white cue ball stays white
+        int nearest = 255;
+        for (sim::Rgb k : kOkabeIto)
+            nearest = std::min(nearest, colorDistance(centre, k | 0xff000000u));
+        QVERIFY2(nearest <= 40, qPrintable(QStringLiteral("ball %1 centre #%2").arg(i).arg(centre, 6, 16)));
+        // Just inside the edge: the dark outline.
+        const QPointF edge = c + QPointF(view.toWidget(balls.radius[i]) * dpr - 1.0, 0.0);
+        QVERIFY2(qGray(shot.pixel(edge.toPoint())) < 110,
+                 qPrintable(QStringLiteral("ball %1 edge #%2").arg(i).arg(shot.pixel(edge.toPoint()), 6, 16)));
+    }
+    // Most of the box is its background: white.
+    const QRect box = QRectF(view.boxRect().topLeft() * dpr, view.boxRect().size() * dpr).toRect();
+    int white = 0;
+    for (int y = box.top(); y < box.bottom(); ++y)
+        for (int x = box.left(); x < box.right(); ++x)
+            white += (shot.pixel(x, y) & 0xffffffu) == 0xffffffu;
+    QVERIFY2(white > box.width() * box.height() / 2, qPrintable(QString::number(white)));
+    theme->trigger();
+    QVERIFY(!canvas->colors().colourBlindSafe);
+}
+
+void GuiOverlaysTest::stageViewAlwaysUsesTheProjectorTheme()
+{
+    MainWindow window(QStringLiteral("break-shot"));
+    QVERIFY(!action(window, "themeAction")->isChecked());
+    action(window, "presentationAction")->trigger();
+    QVERIFY(window.canvas()->colors().colourBlindSafe && window.canvas()->colors().ringMarked);
+    action(window, "presentationAction")->trigger();
+    QVERIFY(!window.canvas()->colors().colourBlindSafe);
+}
+
+// The picture is the stage laid out as large as the screen would show it, at
+// the screen's resolution, and twice that for "double size".
+void GuiOverlaysTest::pictureIsAsLargeAsTheScreenShowsIt()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    window.resize(1024, 768);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTemporaryDir dir;
+    const QString one = dir.filePath(QStringLiteral("one.png")), two = dir.filePath(QStringLiteral("two.png"));
+    QVERIFY(window.saveScreenshotTo(one, 1.0));
+    QVERIFY(window.saveScreenshotTo(two, 2.0));
+    const QSize a = QImageReader(one).size(), b = QImageReader(two).size();
+    const QSize screen = window.screen()->size() * window.screen()->devicePixelRatio();
+    const QSize canvas = window.canvas()->size();
+    QVERIFY2(a.width() > canvas.width() || a.height() > canvas.height(),
+             qPrintable(QStringLiteral("%1x%2 from a %3x%4 canvas").arg(a.width()).arg(a.height()).arg(canvas.width()).arg(canvas.height())));
+    QVERIFY(a.width() == screen.width() || a.height() == screen.height()); // grown until it meets the screen's edge
+    QCOMPARE(b, a * 2);
+}
+
+void GuiOverlaysTest::openDialogStartsInTheLessonsFolder()
+{
+    const QDir folder(MainWindow::lessonsFolder());
+    QVERIFY(folder.exists(QStringLiteral("07-gravity.json")));
 }
 
 QTEST_MAIN(GuiOverlaysTest)

@@ -980,12 +980,12 @@ void GuiWorkbenchTest::screenshotAndTrajectoryFiles()
     SimulationController* controller = window.controller();
     controller->pause();
 
-    // The picture is the canvas, at its size.
+    // The picture is the canvas grown to what the screen would show.
     const QString png = dir.filePath(QStringLiteral("shot.png"));
     QVERIFY(window.saveScreenshotTo(png));
     const QImage image(png);
     QVERIFY(!image.isNull());
-    QCOMPARE(image.size(), window.canvas()->size() * window.canvas()->devicePixelRatio());
+    QCOMPARE(image.size(), window.pictureSize() * window.canvas()->devicePixelRatio());
 
     // Record: the selected ball's rows, one per step, as the world has them.
     window.canvas()->setSelectedBall(1);

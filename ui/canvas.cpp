@@ -22,6 +22,7 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     m_options.trails = &m_trails;
     m_options.collision = &m_collision;
     m_options.centreOfMassPath = &m_centreOfMassPath;
+    m_options.colors = &m_colors;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::framePassed, this, qOverload<>(&QWidget::update));
@@ -120,6 +121,12 @@ void Canvas::setAutoArrows(bool on)
     update();
 }
 
+void Canvas::setColors(const CanvasColors& colors)
+{
+    m_colors = colors;
+    update();
+}
+
 void Canvas::setArrowFactor(double factor)
 {
     m_options.arrowFactor = factor;
@@ -172,14 +179,18 @@ QSize Canvas::minimumSizeHint() const
 
 QImage Canvas::renderImage() const
 {
-    const qreal dpr = devicePixelRatioF();
-    QImage image((QSizeF(size()) * dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    return renderImage(size(), devicePixelRatioF());
+}
+
+QImage Canvas::renderImage(const QSize& size, qreal dpr) const
+{
+    QImage image((QSizeF(size) * dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
     image.setDevicePixelRatio(dpr);
     // Its own painter (and sprite cache): a screenshot leaves the canvas as it was.
     WorldPainter painter;
     painter.setMarkedColor(m_painter.markedColor());
     QPainter p(&image);
-    painter.paint(p, QRectF(rect()), m_controller->world(), m_options, dpr);
+    painter.paint(p, QRectF(QPointF(0, 0), QSizeF(size)), m_controller->world(), m_options, dpr);
     return image;
 }
 

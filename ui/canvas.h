@@ -47,6 +47,9 @@ public:
     void setAutoArrows(bool on);
     /// Without auto arrows: the lesson's arrow scales times `factor`.
     void setArrowFactor(double factor);
+    /// The theme's colours and marks (ui/theme.h).
+    void setColors(const CanvasColors& colors);
+    const CanvasColors& colors() const { return m_colors; }
     /// The painter (what its last frame drew, for tests).
     const WorldPainter& painter() const { return m_painter; }
     /// The centre of mass's recorded path (world px, oldest first).
@@ -73,6 +76,8 @@ public:
     /// The picture the canvas shows now, at its size and device pixel ratio
     /// (for screenshots).
     QImage renderImage() const;
+    /// The same picture laid out for `size` (logical px) at `devicePixelRatio`.
+    QImage renderImage(const QSize& size, qreal devicePixelRatio) const;
 
     /// The ball held by the pointer, or -1.
     int draggedBall() const { return m_drag.ball; }
@@ -140,6 +145,7 @@ private:
     PaintOptions m_options;
     TrailRecorder m_trails;
     std::vector<sim::Vec2> m_centreOfMassPath;
+    CanvasColors m_colors;
     CollisionView m_collision;
     sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
     double m_previousTime = -1.0;

@@ -12,6 +12,7 @@
 #include "parameter_panel.h"
 #include "plots_dock.h"
 #include "simulation_controller.h"
+#include "theme.h"
 #include "trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
@@ -55,6 +56,7 @@ const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/layout2"); // the docks since the plots moved to the right
 const QString kLastLessonKey = QStringLiteral("lesson/last");
 const QString kDirectoryKey = QStringLiteral("lesson/directory");
+const QString kThemeKey = QStringLiteral("view/projectorTheme");
 
 // A red dot: the usual sign for recording.
 QIcon recordIcon()
@@ -171,7 +173,7 @@ void MainWindow::createActions()
     m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
     m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_screenshotAction->setStatusTip(tr("Save a picture of the canvas as PNG"));
-    connect(m_screenshotAction, &QAction::triggered, this, &MainWindow::saveScreenshot);
+    connect(m_screenshotAction, &QAction::triggered, this, [this] { saveScreenshot(1.0); });
 
     m_recordAction = new QAction(recordIcon(), tr("Re&cord Trajectory"), this);
     m_recordAction->setIconText(tr("Record"));
@@ -230,6 +232,20 @@ void MainWindow::createActions()
     m_presentationAction->setIcon(style()->standardIcon(QStyle::SP_TitleBarMaxButton));
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
 
+    m_themeAction = new QAction(tr("P&rojector Theme"), this);
+    m_themeAction->setObjectName(QStringLiteral("themeAction"));
+    m_themeAction->setCheckable(true);
+    m_themeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_themeAction->setStatusTip(tr("White box, dark thick outlines, colour-blind-safe balls and larger text "
+                                   "everywhere (always on in the stage view)"));
+    connect(m_themeAction, &QAction::toggled, this, &MainWindow::setProjectorTheme);
+
+    m_screenshotDoubleAction = new QAction(tr("Picture at &Double Size…"), this);
+    m_screenshotDoubleAction->setObjectName(QStringLiteral("screenshotDoubleAction"));
+    m_screenshotDoubleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    m_screenshotDoubleAction->setStatusTip(tr("Save the stage at twice the screen's resolution, for print"));
+    connect(m_screenshotDoubleAction, &QAction::triggered, this, [this] { saveScreenshot(2.0); });
+
     m_aboutAction = new QAction(tr("&About ForceLab"), this);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
 }
@@ -241,6 +257,7 @@ void MainWindow::createMenus()
     file->addAction(m_saveAction);
     file->addSeparator();
     file->addAction(m_screenshotAction);
+    file->addAction(m_screenshotDoubleAction);
     file->addAction(m_recordAction);
     file->addAction(m_exportAction);
     file->addAction(m_handbookAction);
@@ -268,6 +285,7 @@ void MainWindow::createMenus()
     // Also filled by createToolBars and createDocks with their toggle actions.
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addAction(m_themeAction);
     m_viewMenu->addMenu(m_overlayActions->menu());
     m_viewMenu->addSeparator();
 
@@ -461,6 +479,12 @@ void MainWindow::readSettings()
         refuse(kDirectoryKey, tr("%1 is not a folder; using the home folder").arg(directory));
     else
         m_lastDirectory = directory;
+    const QVariant theme = settings.value(kThemeKey, false);
+    if (theme.typeId() != QMetaType::Bool && theme.toString() != QLatin1String("true") &&
+        theme.toString() != QLatin1String("false"))
+        refuse(kThemeKey, tr("not true or false; using the plain theme"));
+    else if (theme.toBool())
+        m_themeAction->setChecked(true); // applied through toggled
 }
 
 void MainWindow::writeSettings() const
@@ -473,6 +497,7 @@ void MainWindow::writeSettings() const
     if (!m_lesson.source.isEmpty())
         settings.setValue(kLastLessonKey, m_lesson.source);
     settings.setValue(kDirectoryKey, m_lastDirectory);
+    settings.setValue(kThemeKey, m_themeAction->isChecked());
 }
 
 void MainWindow::openInitialLesson(const QString& requested)
@@ -624,7 +649,7 @@ void MainWindow::showLoadErrors(const QStringList& errors)
 
 void MainWindow::openLessonFile()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Lesson"), m_lastDirectory,
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Lesson"), lessonsFolder(),
                                                       tr("Lesson files (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
@@ -688,9 +713,38 @@ void MainWindow::saveLessonFile()
     saveLessonTo(path);
 }
 
-bool MainWindow::saveScreenshotTo(const QString& path)
+QString MainWindow::lessonsFolder()
 {
-    const QImage image = m_canvas->renderImage();
+    // Installed (share/forcelab/lessons), beside the program, or the source
+    // tree's folder for a build that was not installed.
+    const QDir app(QCoreApplication::applicationDirPath());
+    const QStringList candidates{app.filePath(QStringLiteral("../share/forcelab/lessons")),
+                                 app.filePath(QStringLiteral("lessons")), app.filePath(QStringLiteral("../lessons")),
+                                 QStringLiteral(FORCELAB_SOURCE_LESSONS)};
+    for (const QString& folder : candidates)
+        if (QFileInfo(folder).isDir() && !QDir(folder).entryList({QStringLiteral("*.json")}, QDir::Files).isEmpty())
+            return QDir::cleanPath(folder);
+    return QDir::homePath();
+}
+
+QSize MainWindow::pictureSize() const
+{
+    // The stage as large as the whole screen would show it, whatever the
+    // size of the canvas now: a small window still gives a large picture.
+    const QScreen* s = m_canvas->screen() ? m_canvas->screen() : QGuiApplication::primaryScreen();
+    const QSize screenSize = s ? s->size() : m_canvas->size();
+    const QSizeF canvas = QSizeF(m_canvas->size());
+    if (canvas.isEmpty())
+        return screenSize;
+    const double fit = std::min(screenSize.width() / canvas.width(), screenSize.height() / canvas.height());
+    return (canvas * std::max(1.0, fit)).toSize();
+}
+
+bool MainWindow::saveScreenshotTo(const QString& path, double scale)
+{
+    const QScreen* s = m_canvas->screen() ? m_canvas->screen() : QGuiApplication::primaryScreen();
+    const double dpr = (s ? s->devicePixelRatio() : 1.0) * scale;
+    const QImage image = m_canvas->renderImage(pictureSize(), dpr);
     if (!image.save(path, "PNG")) {
         showError(tr("%1: cannot write the picture").arg(QDir::toNativeSeparators(path)));
         return false;
@@ -699,14 +753,30 @@ bool MainWindow::saveScreenshotTo(const QString& path)
     return true;
 }
 
-void MainWindow::saveScreenshot()
+void MainWindow::saveScreenshot(double scale)
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Screenshot"), suggestedFileName("png"),
-                                                      tr("PNG images (*.png)"));
+    const QString title = scale > 1.0 ? tr("Save Picture at Double Size") : tr("Save Picture");
+    const QString path = QFileDialog::getSaveFileName(this, title, suggestedFileName("png"), tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     m_lastDirectory = QFileInfo(path).absolutePath();
-    saveScreenshotTo(path);
+    saveScreenshotTo(path, scale);
+}
+
+void MainWindow::setProjectorTheme(bool on)
+{
+    if (m_themeAction->isChecked() != on)
+        m_themeAction->setChecked(on); // comes back here through toggled
+    applyProjectorFonts(this, on);
+    applyCanvasLook();
+}
+
+void MainWindow::applyCanvasLook()
+{
+    // The stage view always uses the projector theme.
+    const bool stage = m_presentationAction->isChecked();
+    m_canvas->setColors(canvasColors(stage || m_themeAction->isChecked()));
+    m_canvas->setLineScale(stage ? 1.6 : m_themeAction->isChecked() ? 1.4 : 1.0);
 }
 
 void MainWindow::exportHandbook()
@@ -783,18 +853,18 @@ void MainWindow::setPresentationMode(bool on)
         m_simulationToolBar->hide();
         m_fileToolBar->hide();
         statusBar()->hide();
-        m_canvas->setLineScale(1.6);
         m_canvas->setBoxMargin(4.0);
         m_canvas->setOverlays(readoutsToStageBar(m_canvas->overlays()));
         updateStageCaption();
         m_stageBar->show();
+        applyCanvasLook();
         updateStageReadout(); // shown now, so it fills in
         if (const QScreen* s = screen())
             setGeometry(s->geometry());
         showFullScreen();
     } else {
         m_stageBar->hide();
-        m_canvas->setLineScale(1.0);
+        applyCanvasLook();
         m_canvas->setBoxMargin(10.0);
         Overlays back = m_canvas->overlays();
         back.readout = m_stageOverlays.readout;

@@ -58,8 +58,15 @@ public:
     /// Writes currentSceneAsLesson() to `path`. On failure shows the error in
     /// the status bar and returns false.
     bool saveLessonTo(const QString& path);
-    /// Writes a picture of the canvas to `path` (PNG).
-    bool saveScreenshotTo(const QString& path);
+    /// Writes a picture of the stage to `path` (PNG): laid out as large as
+    /// the screen would show it, at the screen's device pixel ratio times `scale`.
+    bool saveScreenshotTo(const QString& path, double scale = 1.0);
+    /// Logical size of that picture: the canvas grown to fill the screen.
+    QSize pictureSize() const;
+    /// Where the Open dialog starts: the installed lessons, or the source tree's.
+    static QString lessonsFolder();
+    /// The projector theme (View menu; always on in the stage view).
+    void setProjectorTheme(bool on);
 
     SimulationController* controller() const { return m_controller; }
     Canvas* canvas() const { return m_canvas; }
@@ -80,7 +87,7 @@ protected:
 private slots:
     void openLessonFile();
     void saveLessonFile();
-    void saveScreenshot();
+    void saveScreenshot(double scale);
     void exportTrajectory();
     void exportHandbook();
     void chooseLesson(const QString& source);
@@ -95,6 +102,7 @@ private slots:
     void showTimeDropped(double seconds);
     void showHalted(const QString& reason);
     void setPresentationMode(bool on);
+    void applyCanvasLook();
     void updateStageCaption();
     void updateStageReadout();
     Overlays readoutsToStageBar(Overlays overlays);
@@ -151,6 +159,8 @@ private:
     QAction* m_nextAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
+    QAction* m_themeAction = nullptr;
+    QAction* m_screenshotDoubleAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_accuracyMenu = nullptr; // filled by createDocks with the Accuracy dock's actions

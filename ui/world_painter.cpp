@@ -1,5 +1,6 @@
 #include "world_painter.h"
 
+#include "theme.h"
 #include "trail_recorder.h"
 
 #include "sim/force_models.h"
@@ -28,6 +29,13 @@ namespace {
 const sim::Matrix2X& drawnPositions(const sim::BallState& balls, const PaintOptions& options)
 {
     return options.positions && options.positions->cols() == balls.size() ? *options.positions : balls.position;
+}
+
+// The theme's colours, or the plain ones.
+const CanvasColors& colorsOf(const PaintOptions& options)
+{
+    static const CanvasColors plain;
+    return options.colors ? *options.colors : plain;
 }
 
 } // namespace
@@ -107,9 +115,11 @@ QSizeF sourcesSize(const sim::WorldSettings& settings, double lineScale)
     return panelSize(panelFont(kTotalsPixels, lineScale), widest, static_cast<int>(lines.size()), lineScale);
 }
 
+// The inset's side grows with thicker lines only a little: on the stage
+// view (line scale 1.6) it would otherwise take a quarter of a 1024 px width.
 double momentaSide(double lineScale)
 {
-    return 170.0 * lineScale;
+    return 170.0 * std::min(lineScale, 1.2);
 }
 
 struct Layout {
@@ -219,7 +229,7 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     const Panels& placed = layout.panels;
     p.save();
     p.setClipRect(area);
-    p.fillRect(area, QColor::fromRgb(canvas_colors::kLetterbox));
+    p.fillRect(area, QColor::fromRgb(colorsOf(options).letterbox));
     paintBox(p, v, world, options);
     if (options.overlays.broadphase)
         paintBroadPhase(p, v, world, options);
@@ -285,8 +295,9 @@ void WorldPainter::paintGhost(QPainter& p, const ViewTransform& view, const sim:
 void WorldPainter::paintBox(QPainter& p, const ViewTransform& view, const sim::World& world,
                             const PaintOptions& options)
 {
+    const CanvasColors& colors = colorsOf(options);
     const QRectF box = view.boxRect();
-    p.fillRect(box, QColor::fromRgb(canvas_colors::kBackground));
+    p.fillRect(box, QColor::fromRgb(colors.background));
 
     const sim::BoxSettings& size = world.settings().box;
     if (options.overlays.grid && view.toWidget(50.0) >= 8.0) {
@@ -302,16 +313,16 @@ void WorldPainter::paintBox(QPainter& p, const ViewTransform& view, const sim::W
             (k % 2 ? minor : major).append(QLineF(box.left(), y, box.right(), y));
         }
         p.setRenderHint(QPainter::Antialiasing, false);
-        p.setPen(QPen(QColor::fromRgb(canvas_colors::kGridMinor), 1.0));
+        p.setPen(QPen(QColor::fromRgb(colors.gridMinor), 1.0));
         p.drawLines(minor);
-        p.setPen(QPen(QColor::fromRgb(canvas_colors::kGridMajor), 1.0));
+        p.setPen(QPen(QColor::fromRgb(colors.gridMajor), 1.0));
         p.drawLines(major);
 
         if (view.toWidget(100.0) >= 40.0) {
             QFont font = p.font();
             font.setPixelSize(static_cast<int>(std::lround(11 * options.lineScale)));
             p.setFont(font);
-            p.setPen(QColor(0x8a, 0x92, 0x9e));
+            p.setPen(QColor::fromRgb(colors.gridText));
             for (int k = 1; 100.0 * k < size.width; ++k)
                 p.drawText(QPointF(box.left() + view.toWidget(100.0 * k) + 3, box.top() + 13 * options.lineScale),
                            QString::number(100 * k));
@@ -324,7 +335,7 @@ void WorldPainter::paintBox(QPainter& p, const ViewTransform& view, const sim::W
     // Walls that are on are solid; walls that are off are dashed, so a
     // student sees where balls can leave.
     const sim::WallSettings& walls = world.settings().walls;
-    const QPen on(QColor::fromRgb(canvas_colors::kFrame), 3.0 * options.lineScale, Qt::SolidLine, Qt::SquareCap);
+    const QPen on(QColor::fromRgb(colors.frame), 3.0 * options.lineScale, Qt::SolidLine, Qt::SquareCap);
     QPen off(QColor(0x9a, 0xa2, 0xae), 1.5 * options.lineScale, Qt::DashLine, Qt::FlatCap);
     auto side = [&](bool present, QPointF a, QPointF b) {
         p.setPen(present ? on : off);
@@ -350,6 +361,7 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
     const double s = view.scale();
     const QPointF origin = view.toWidget(sim::Vec2(0.0, 0.0));
     const bool mark = options.overlays.colliding && balls.colliding.size() == static_cast<std::size_t>(n);
+    const CanvasColors& colors = colorsOf(options);
 
     // Sprites are antialiased already: placed at whole device pixels with
     // antialiasing off, the raster engine copies them without resampling.
@@ -365,7 +377,8 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
         if (!(x + r >= area.left() && x - r <= area.right() && y + r >= area.top() && y - r <= area.bottom()))
             continue;
         const bool marked = mark && balls.colliding[static_cast<std::size_t>(i)] != 0;
-        const sim::Rgb color = balls.color[static_cast<std::size_t>(i)];
+        const sim::Rgb own = balls.color[static_cast<std::size_t>(i)];
+        const sim::Rgb color = colors.colourBlindSafe ? okabeItoColor(own) : own;
         const QImage* sprite = options.sprites ? m_sprites.sprite(r * dpr, color, marked, dpr) : nullptr;
         if (sprite) {
             // Top-left device pixel of the sprite: the disc's centre is the
@@ -386,6 +399,27 @@ void WorldPainter::paintBalls(QPainter& p, const QRectF& area, const ViewTransfo
     }
 
     p.setRenderHint(QPainter::Antialiasing, true);
+    // The theme's outlines: every ball's edge in a dark line, and a thick
+    // second ring round a touching ball, so a touch is seen without telling
+    // colours apart.
+    if ((qAlpha(colors.ballOutline) > 0 || (colors.ringMarked && mark)) && n <= kMaxArrowBalls) {
+        p.setBrush(Qt::NoBrush);
+        const QPen outline(QColor::fromRgba(colors.ballOutline), colors.outlineWidth * options.lineScale);
+        const QPen ring(QColor::fromRgb(colors.frame), 3.0 * options.lineScale);
+        for (int i = 0; i < n; ++i) {
+            const QPointF c = view.toWidget(sim::Vec2(at.col(i)));
+            const double r = balls.radius[i] * s;
+            if (qAlpha(colors.ballOutline) > 0) {
+                p.setPen(outline);
+                p.drawEllipse(c, r, r);
+            }
+            if (colors.ringMarked && mark && balls.colliding[static_cast<std::size_t>(i)] != 0) {
+                p.setPen(ring);
+                const double out = r + 4.0 * options.lineScale;
+                p.drawEllipse(c, out, out);
+            }
+        }
+    }
     // The ball the readout or the selection talks about gets a ring.
     int ringed = options.selected;
     if (ringed < 0 && options.overlays.readout && n > 0)

@@ -61,6 +61,7 @@ struct CollisionView {
 };
 
 class TrailRecorder;
+struct CanvasColors;
 
 struct PaintOptions {
     Overlays overlays;
@@ -77,6 +78,7 @@ struct PaintOptions {
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
+    const CanvasColors* colors = nullptr;     ///< the theme's colours (ui/theme.h); null: the plain ones; not owned
     const std::vector<sim::Vec2>* centreOfMassPath = nullptr; ///< world px, oldest first; drawn when overlays.centreOfMass; not owned
     /// px, where to draw the balls instead of their positions (2×N, the
     /// slow-motion interpolation between two steps); not owned
@@ -102,6 +104,20 @@ inline constexpr QRgb kGhost = 0xa0202020;      ///< the ghost's outlines (trans
 inline constexpr QRgb kForce = 0xff22262e;      ///< net force arrows and the momenta inset's sum
 inline constexpr QRgb kCentreOfMass = 0xff343a40;
 } // namespace canvas_colors
+
+/// The colours and marks a theme may change (ui/theme.h); the defaults are the plain theme.
+struct CanvasColors {
+    QRgb letterbox = canvas_colors::kLetterbox;
+    QRgb background = canvas_colors::kBackground;
+    QRgb frame = canvas_colors::kFrame;
+    QRgb gridMinor = canvas_colors::kGridMinor;
+    QRgb gridMajor = canvas_colors::kGridMajor;
+    QRgb gridText = 0xff8a929e;
+    QRgb ballOutline = 0;         ///< a dark outline round every ball; 0 (transparent): none
+    double outlineWidth = 0.0;    ///< px of that outline, times the line scale
+    bool colourBlindSafe = false; ///< ball colours drawn as their nearest Okabe-Ito colour
+    bool ringMarked = false;      ///< balls touching another also get a thick ring (not colour alone)
+};
 
 /// What the last paint() drew, for tests: the momenta inset's numbers and
 /// whether the path layer was drawn afresh.
