@@ -6,6 +6,8 @@
 
 #include "ui/canvas.h"
 #include "ui/main_window.h"
+#include "ui/number_control.h"
+#include "ui/stage_sliders.h"
 #include "ui/simulation_controller.h"
 #include "ui/world_painter.h"
 
@@ -32,6 +34,7 @@ private slots:
     void showMenuTogglesWhatIsDrawn();
     void autoArrowsAreReadable_data();
     void autoArrowsAreReadable();
+    void stageSlidersEditTheWorld();
 };
 
 void GuiStageTest::stageFillsTheScreen_data()
@@ -73,7 +76,7 @@ void GuiStageTest::stageFillsTheScreen()
     // and off the canvas.
     auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
     QVERIFY(readout && readout->isVisible());
-    QVERIFY2(readout->text().contains(QStringLiteral("position")), qPrintable(readout->text()));
+    QVERIFY2(readout->text().contains(QStringLiteral("ball 0")), qPrintable(readout->text()));
     QVERIFY(!window.canvas()->overlays().readout);
     QCOMPARE(title->text(), window.lesson().title);
     const auto buttons = window.findChild<QWidget*>(QStringLiteral("stageBar"))->findChildren<QToolButton*>();
@@ -177,6 +180,37 @@ void GuiStageTest::autoArrowsAreReadable()
     const double median = lengths[lengths.size() / 2];
     qInfo("%s: median velocity arrow %.1f px", qPrintable(lesson), median);
     QVERIFY2(median >= 30.0 && median <= 60.0, qPrintable(QString::number(median)));
+}
+
+// The lesson's number controls are big sliders on the stage (lesson 08:
+// restitution and gravity, four rows); moving one changes the world, is
+// one undo step, and the stage's label shows the new value.
+void GuiStageTest::stageSlidersEditTheWorld()
+{
+    MainWindow window(QStringLiteral("losing-energy"));
+    window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
+    auto* sliders = window.findChild<StageSliders*>(QStringLiteral("stageSliders"));
+    QVERIFY(sliders);
+    QCOMPARE(sliders->count(), 4);
+    QVERIFY(sliders->isVisibleTo(&window));
+    NumberControl* e = sliders->slider(QStringLiteral("wall_restitution"));
+    QVERIFY(e);
+    QCOMPARE(e->value(), 0.8);
+    auto* undo = window.findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo);
+    e->slider()->setValue(e->positionFor(0.5));
+    const double now = window.controller()->world().settings().walls.restitution;
+    QVERIFY2(std::abs(now - 0.5) < 1e-9, qPrintable(QString::number(now)));
+    auto* label = window.findChild<QLabel*>(QStringLiteral("stage_wall_restitutionLabel"));
+    QVERIFY(label && label->text().contains(QStringLiteral("<b>0.5</b>")));
+    QVERIFY(undo->isEnabled());
+    undo->trigger();
+    QCOMPARE(window.controller()->world().settings().walls.restitution, 0.8);
+    QCOMPARE(e->value(), 0.8);
+    // A lesson without number controls shows none.
+    QVERIFY(window.openLesson(QStringLiteral("a-wall")));
+    QCOMPARE(sliders->count(), 0); // a tick box and the ball count: no sliders
+    QVERIFY(!sliders->isVisibleTo(&window));
 }
 
 QTEST_MAIN(GuiStageTest)

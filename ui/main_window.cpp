@@ -4,6 +4,7 @@
 #include "canvas.h"
 #include "overlay_actions.h"
 #include "stage_bar.h"
+#include "stage_sliders.h"
 #include "handbook.h"
 #include "code_dock.h"
 #include "parameter_commands.h"
@@ -111,6 +112,9 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     createMenus();
     createToolBars();
     createDocks();
+    // The lesson's sliders on the stage share the Parameters panel's undo stack.
+    m_stageSliders = new StageSliders(m_controller, m_parameters->undoStack(), m_stageBar);
+    m_stageBar->setSliders(m_stageSliders);
     createStatusBar();
     readSettings();
     openInitialLesson(lesson);
@@ -559,6 +563,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
+    m_stageSliders->setLessonControls(lesson.controls);
     // Undo steps belong to the lesson they were made in.
     m_parameters->undoStack()->clear();
     // The keyboard goes to the stage, not to whatever field had it in the
@@ -897,12 +902,35 @@ void MainWindow::updateStageReadout()
         return;
     const sim::World& world = m_controller->world();
     QStringList lines;
-    if (m_stageOverlays.readout) {
-        const sim::Matrix2X a = world.balls().empty() ? sim::Matrix2X() : world.accelerations();
-        lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), world.balls().empty() ? nullptr : &a);
+    const bool narrow = m_stageBar->isVertical();
+    if (m_stageOverlays.readout && !world.balls().empty()) {
+        const sim::Matrix2X a = world.accelerations();
+        if (narrow) {
+            // A column is narrow: short lines, x and y side by side.
+            const int n = world.balls().size(), selected = m_canvas->selectedBall();
+            const int i = selected >= 0 && selected < n ? selected : 0;
+            const sim::Vec2 x = world.balls().position.col(i), v = world.balls().velocity.col(i);
+            auto num = [](double value) { return QString::number(value, 'f', 1); };
+            lines << tr("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3)
+                  << QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y()))
+                  << QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y()))
+                  << QStringLiteral("a (%1, %2) px/s²").arg(num(a(0, i)), num(a(1, i)))
+                  << tr("speed %1 px/s").arg(v.norm(), 0, 'f', 1);
+        } else {
+            lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a);
+        }
     }
-    if (m_stageOverlays.totals)
-        lines << WorldPainter::totalsText(world);
+    if (m_stageOverlays.totals) {
+        if (narrow) {
+            const sim::Energy e = world.energy();
+            const sim::Vec2 p = world.momentum();
+            lines << tr("energy: kinetic %1").arg(e.kinetic, 0, 'g', 4) << tr("  potential %1").arg(e.potential, 0, 'g', 4)
+                  << tr("  total %1").arg(e.total(), 0, 'g', 4)
+                  << tr("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
+        } else {
+            lines << WorldPainter::totalsText(world);
+        }
+    }
     m_stageBar->setReadout(lines.join(QLatin1Char('\n')));
 }
 

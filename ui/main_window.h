@@ -27,6 +27,7 @@ namespace forcelab {
 class AccuracyDock;
 class CodeDock;
 class StageBar;
+class StageSliders;
 class OverlayActions;
 class Canvas;
 class InspectorDock;
@@ -134,6 +135,7 @@ private:
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StageBar* m_stageBar = nullptr;
+    StageSliders* m_stageSliders = nullptr;
     OverlayActions* m_overlayActions = nullptr;
     QBoxLayout* m_stageLayout = nullptr;
     QByteArray m_normalGeometry; // before the stage view

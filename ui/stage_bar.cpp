@@ -6,6 +6,8 @@
 #include <QLabel>
 #include <QToolButton>
 
+#include <algorithm>
+
 namespace forcelab {
 
 StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
@@ -35,6 +37,7 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     mono.setPointSizeF(text.pointSizeF());
     m_readout->setFont(mono);
+    m_readoutFont = mono;
     m_readout->hide();
     for (QAction* action : transport) {
         auto* b = new QToolButton(this);
@@ -63,6 +66,44 @@ void StageBar::setReadout(const QString& text)
 {
     m_readout->setText(text);
     m_readout->setVisible(!text.isEmpty());
+    fitReadout();
+}
+
+void StageBar::fitReadout()
+{
+    // In a column the readout's lines are never cut: its font shrinks (to
+    // 7 pt at least) until the longest line fits the column's width.
+    QFont font = m_readoutFont;
+    if (m_vertical && width() > 0) {
+        const int room = width() - m_grid->contentsMargins().left() - m_grid->contentsMargins().right();
+        const QStringList lines = m_readout->text().split(QLatin1Char('\n'));
+        auto widest = [&](const QFont& f) {
+            const QFontMetrics fm(f);
+            int w = 0;
+            for (const QString& line : lines)
+                w = std::max(w, fm.horizontalAdvance(line));
+            return w;
+        };
+        while (font.pointSizeF() > 7.0 && widest(font) > room)
+            font.setPointSizeF(font.pointSizeF() - 0.5);
+    }
+    if (font != m_readout->font())
+        m_readout->setFont(font);
+}
+
+void StageBar::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitReadout();
+}
+
+void StageBar::setSliders(QWidget* sliders)
+{
+    m_sliders = sliders;
+    sliders->setParent(this);
+    // Light text on the bar's dark background, like the caption.
+    sliders->setPalette(palette());
+    setVertical(m_vertical);
 }
 
 void StageBar::setVertical(bool vertical)
@@ -82,7 +123,9 @@ void StageBar::setVertical(bool vertical)
             m_grid->addWidget(m_buttons[i], 2 + static_cast<int>(i / 2), static_cast<int>(i % 2));
         const int after = 2 + static_cast<int>((m_buttons.size() + 1) / 2);
         m_grid->addWidget(m_readout, after, 0, 1, 2);
-        m_grid->setRowStretch(after + 1, 1);
+        if (m_sliders)
+            m_grid->addWidget(m_sliders, after + 1, 0, 1, 2);
+        m_grid->setRowStretch(after + 2, 1);
     } else {
         // One row: the caption, then the buttons.
         m_grid->addWidget(m_title, 0, 0);
@@ -90,6 +133,8 @@ void StageBar::setVertical(bool vertical)
         m_grid->addWidget(m_readout, 0, 1, 2, 1);
         for (qsizetype i = 0; i < m_buttons.size(); ++i)
             m_grid->addWidget(m_buttons[i], 0, 2 + static_cast<int>(i), 2, 1);
+        if (m_sliders) // a row of its own under the caption and the buttons
+            m_grid->addWidget(m_sliders, 2, 0, 1, 2 + static_cast<int>(m_buttons.size()));
         m_grid->setColumnStretch(0, 1);
     }
 }

@@ -5,6 +5,7 @@
 // where the box leaves room: a column beside a wide window's box, a row under
 // a tall one, so the box keeps the most of the screen.
 
+#include <QFont>
 #include <QList>
 #include <QWidget>
 
@@ -29,11 +30,20 @@ public:
     /// stage view keeps the box free of panels); empty hides it.
     void setReadout(const QString& text);
     bool isVertical() const { return m_vertical; }
+    /// The lesson's sliders (StageSliders), under the buttons; not owned before, owned after.
+    void setSliders(QWidget* sliders);
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void fitReadout();
+
     QLabel* m_title = nullptr;
     QLabel* m_challenge = nullptr;
     QLabel* m_readout = nullptr;
+    QWidget* m_sliders = nullptr;
+    QFont m_readoutFont; // the readout's own size, before fitting
     QList<QToolButton*> m_buttons;
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;

@@ -797,8 +797,10 @@ void WorldPainter::paintTrails(QPainter& p, const ViewTransform& view, const sim
     std::vector<sim::Rgb> colors;
     colors.reserve(tracked.size());
     for (int ball : tracked) {
-        const sim::Rgb c = ownColours && ball < balls.size() ? balls.color[static_cast<std::size_t>(ball)]
-                                                              : canvas_colors::kTrail;
+        sim::Rgb c = ownColours && ball < balls.size() ? balls.color[static_cast<std::size_t>(ball)]
+                                                        : canvas_colors::kTrail;
+        if (ownColours && colorsOf(options).colourBlindSafe)
+            c = okabeItoColor(c); // the path in the ball's drawn colour
         auto pale = [](int v) { return v + (255 - v) * 35 / 100; };
         colors.push_back(qRgb(pale(qRed(c)), pale(qGreen(c)), pale(qBlue(c))) & 0xffffffu);
     }
