@@ -15,6 +15,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
@@ -35,6 +36,8 @@ private slots:
     void autoArrowsAreReadable_data();
     void autoArrowsAreReadable();
     void stageSlidersEditTheWorld();
+    void normalLayoutGivesTheBoxHalfTheWindow_data();
+    void normalLayoutGivesTheBoxHalfTheWindow();
 };
 
 void GuiStageTest::stageFillsTheScreen_data()
@@ -211,6 +214,36 @@ void GuiStageTest::stageSlidersEditTheWorld()
     QVERIFY(window.openLesson(QStringLiteral("a-wall")));
     QCOMPARE(sliders->count(), 0); // a tick box and the ball count: no sliders
     QVERIFY(!sliders->isVisibleTo(&window));
+}
+
+void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::newRow("07 gravity, readout") << "gravity";
+    QTest::newRow("19 orbit, readout") << "two-bodies-in-orbit";
+    QTest::newRow("31 break shot, totals and momenta") << "break-shot";
+}
+
+// A first start in a 1280x720 window (no saved layout): the lesson goes in a
+// tab beside the Parameters, the readouts take two lines above the box, and
+// the box gets at least 45% of the window.
+void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow()
+{
+    QFETCH(QString, lesson);
+    QSettings().clear();
+    MainWindow window(lesson);
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE(window.size(), QSize(1280, 720));
+    QTest::qWait(50);
+    const QRectF box = window.canvas()->viewTransform().boxRect();
+    const double share = box.width() * box.height() / (1280.0 * 720.0);
+    qInfo("%s: the box takes %.1f%% of 1280x720 (%.0f x %.0f px)", qPrintable(lesson), 100 * share, box.width(),
+          box.height());
+    QVERIFY2(share >= 0.45, qPrintable(QString::number(share)));
+    auto* lessons = window.findChild<QDockWidget*>(QStringLiteral("lessonsDock"));
+    QVERIFY(lessons && lessons->isVisible()); // raised: the lesson text shows
 }
 
 QTEST_MAIN(GuiStageTest)

@@ -411,6 +411,18 @@ void MainWindow::createDocks()
     resizeDocks({m_parametersDock, m_inspectorDock}, {360, 300}, Qt::Vertical);
 }
 
+void MainWindow::useCompactDocks()
+{
+    // In a window narrower than kCompactWidth two dock columns would leave
+    // the box about a third of the window. The lesson goes into the right
+    // column as a tab beside the Parameters, so the box takes about half.
+    addDockWidget(Qt::RightDockWidgetArea, m_lessonsDock);
+    tabifyDockWidget(m_parametersDock, m_lessonsDock);
+    m_lessonsDock->raise();
+    resizeDocks({m_parametersDock}, {std::min(340, width() / 3)}, Qt::Horizontal);
+    resizeDocks({m_parametersDock, m_inspectorDock}, {height() * 3 / 5, height() * 2 / 5}, Qt::Vertical);
+}
+
 void MainWindow::createStatusBar()
 {
     auto label = [this](const QString& name, const QString& tip) {
@@ -477,6 +489,8 @@ void MainWindow::readSettings()
     const QVariant state = settings.value(kStateKey);
     if (!state.isNull() && !restoreState(state.toByteArray()))
         refuse(kStateKey, tr("not a saved layout of the docks; using the default layout"));
+    else if (!state.isNull())
+        m_dockLayoutChosen = true; // the user's layout stands
     m_lastLesson = settings.value(kLastLessonKey).toString();
     const QString directory = settings.value(kDirectoryKey).toString();
     if (!directory.isEmpty() && !QFileInfo(directory).isDir())
@@ -1006,6 +1020,11 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::showEvent(QShowEvent* event)
 {
     QMainWindow::showEvent(event);
+    if (!m_dockLayoutChosen) {
+        m_dockLayoutChosen = true;
+        if (width() < kCompactWidth)
+            useCompactDocks();
+    }
     m_controller->setSuspended(isMinimized());
 }
 

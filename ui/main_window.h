@@ -104,6 +104,7 @@ private slots:
     void showHalted(const QString& reason);
     void setPresentationMode(bool on);
     void applyCanvasLook();
+    void useCompactDocks();
     void updateStageCaption();
     void updateStageReadout();
     Overlays readoutsToStageBar(Overlays overlays);
@@ -162,6 +163,9 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
     QAction* m_themeAction = nullptr;
+    /// Below this window width (px) the first layout puts the lesson in a tab beside the Parameters.
+    static constexpr int kCompactWidth = 1400;
+    bool m_dockLayoutChosen = false; // a saved layout was restored, or the first show chose one
     QAction* m_screenshotDoubleAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QMenu* m_viewMenu = nullptr;

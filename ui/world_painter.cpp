@@ -95,6 +95,51 @@ QSizeF totalsSize(double lineScale)
                      kTotalsLines, lineScale);
 }
 
+// The same panels in two long lines, for a strip above the box: it costs
+// the box less height.
+QStringList wideReadout(int i, const sim::Vec2& x, const sim::Vec2& v, const sim::Vec2& a, double t)
+{
+    auto w = [](double value) { return QString::number(value, 'f', 1).rightJustified(8); };
+    return {
+        QStringLiteral("ball %1").arg(i).leftJustified(12) +
+            QStringLiteral("x %1  y %2 px    vx %3  vy %4 px/s").arg(w(x.x()), w(x.y()), w(v.x()), w(v.y())),
+        QStringLiteral("t %1 s").arg(t, 0, 'f', 3).leftJustified(12) +
+            QStringLiteral("ax %1  ay %2 px/s²  speed %3 px/s").arg(w(a.x()), w(a.y()), w(v.norm())),
+    };
+}
+
+QStringList wideTotals(const sim::Energy& e, const sim::Vec2& m)
+{
+    auto num = [](double value) { return QString::number(value, 'g', 4); };
+    return {
+        QStringLiteral("kinetic %1  potential %2  total %3").arg(num(e.kinetic), num(e.potential), num(e.total())),
+        QStringLiteral("momentum (%1, %2)").arg(num(m.x()), num(m.y())),
+    };
+}
+
+QSizeF wideSize(const QFont& font, const QStringList& lines, double lineScale)
+{
+    QString widest;
+    const QFontMetricsF fm(font);
+    for (const QString& line : lines)
+        if (fm.horizontalAdvance(line) > fm.horizontalAdvance(widest))
+            widest = line;
+    return panelSize(font, widest, static_cast<int>(lines.size()), lineScale);
+}
+
+QSizeF wideReadoutSize(double lineScale)
+{
+    const sim::Vec2 big(-99999.9, -99999.9);
+    return wideSize(panelFont(kReadoutPixels, lineScale), wideReadout(9999, big, big, big, 9999.999), lineScale);
+}
+
+QSizeF wideTotalsSize(double lineScale)
+{
+    sim::Energy e;
+    e.kinetic = e.potential = -9.999e+99;
+    return wideSize(panelFont(kTotalsPixels, lineScale), wideTotals(e, sim::Vec2(-9.999e+99, -9.999e+99)), lineScale);
+}
+
 // The legend of the per-source force arrows: a title and one line per model that is on.
 QStringList sourceLegend(const sim::WorldSettings& settings)
 {
@@ -136,35 +181,49 @@ Layout layoutFor(const sim::World& world, const QRectF& area, const PaintOptions
     Layout l{area, {}};
     const sim::BoxSettings& box = world.settings().box;
     const bool any = !world.balls().empty();
-    std::vector<std::pair<QRectF*, QSizeF>> items;
+    // Each panel with its size in a column and in a row: in a row the
+    // readout and the totals are two long lines and the momenta inset is
+    // wider than tall, so a strip above the box costs it less height.
+    struct Item {
+        QRectF* rect;
+        QSizeF column, row;
+        bool* wide; // set when the row size is used (null: the panel has one shape)
+    };
+    std::vector<Item> items;
     if (o.overlays.readout)
-        items.emplace_back(&l.panels.readout, readoutSize(o.lineScale));
+        items.push_back({&l.panels.readout, readoutSize(o.lineScale), wideReadoutSize(o.lineScale),
+                         &l.panels.readoutWide});
     if (o.overlays.totals)
-        items.emplace_back(&l.panels.totals, totalsSize(o.lineScale));
-    if (o.overlays.forceSources && any)
-        items.emplace_back(&l.panels.sources, sourcesSize(world.settings(), o.lineScale));
-    if (o.overlays.momenta && any)
-        items.emplace_back(&l.panels.momenta, QSizeF(momentaSide(o.lineScale), momentaSide(o.lineScale)));
+        items.push_back({&l.panels.totals, totalsSize(o.lineScale), wideTotalsSize(o.lineScale), &l.panels.totalsWide});
+    if (o.overlays.forceSources && any) {
+        const QSizeF size = sourcesSize(world.settings(), o.lineScale);
+        items.push_back({&l.panels.sources, size, size, nullptr});
+    }
+    if (o.overlays.momenta && any) {
+        const double side = momentaSide(o.lineScale);
+        items.push_back({&l.panels.momenta, QSizeF(side, side), QSizeF(1.4 * side, 0.75 * side), nullptr});
+    }
     if (items.empty())
         return l;
     const double gap = 8.0 * o.lineScale;
     struct Flow {
-        std::vector<QPointF> at; // offsets from the strip's corner
+        std::vector<QRectF> at; // places relative to the strip's corner
         QSizeF extent;
     };
-    // Places the panels along rows (or columns) no longer than `limit`.
+    // Places the panels along rows (or columns) no longer than `limit`; in
+    // rows a panel takes its row shape when that fits the limit.
     auto flow = [&](bool rows, double limit) {
         Flow f;
         double along = 0.0, across = 0.0, thickness = 0.0;
-        for (const auto& item : items) {
-            const QSizeF& size = item.second;
+        for (const Item& item : items) {
+            const QSizeF size = rows && item.row.width() <= limit ? item.row : item.column;
             const double length = rows ? size.width() : size.height();
             if (along > 0.0 && along + length > limit) { // wrap
                 across += thickness + gap;
                 along = 0.0;
                 thickness = 0.0;
             }
-            f.at.push_back(rows ? QPointF(along, across) : QPointF(across, along));
+            f.at.push_back(QRectF(rows ? QPointF(along, across) : QPointF(across, along), size));
             along += length + gap;
             thickness = std::max(thickness, rows ? size.height() : size.width());
             const double endAlong = along - gap, endAcross = across + thickness;
@@ -183,8 +242,11 @@ Layout layoutFor(const sim::World& world, const QRectF& area, const PaintOptions
     l.stage = side ? beside : below;
     const Flow& f = side ? column : row;
     const QPointF corner = side ? QPointF(beside.right() + gap, area.top() + gap) : area.topLeft() + QPointF(gap, gap);
-    for (std::size_t k = 0; k < items.size(); ++k)
-        *items[k].first = QRectF(corner + f.at[k], items[k].second);
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        *items[k].rect = f.at[k].translated(corner);
+        if (items[k].wide)
+            *items[k].wide = !side && f.at[k].size() == items[k].row;
+    }
     return l;
 }
 
@@ -260,9 +322,9 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     if (options.overlays.vanes)
         paintVanes(p, v, world, options);
     if (options.overlays.totals)
-        paintTotals(p, placed.totals, world, options);
+        paintTotals(p, placed.totals, world, options, placed.totalsWide);
     if (options.overlays.readout)
-        paintReadout(p, placed.readout, world, options, a);
+        paintReadout(p, placed.readout, world, options, a, placed.readoutWide);
     if (!placed.sources.isEmpty())
         paintSourceLegend(p, placed.sources, world, options);
     if (!placed.momenta.isEmpty())
@@ -636,18 +698,23 @@ WorldPainter::ArrowScales WorldPainter::arrowScales(const sim::World& world, con
 }
 
 void WorldPainter::paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
-                                const sim::Matrix2X* accelerations)
+                                const sim::Matrix2X* accelerations, bool wide)
 {
-    const QStringList lines = readoutText(world, options.selected, accelerations);
+    const QStringList lines = readoutText(world, options.selected, accelerations, wide);
     if (lines.isEmpty())
         return;
     const QColor text(0x1d, 0x22, 0x2c);
+    if (wide) {
+        drawPanel(p, panel, panelFont(kReadoutPixels, options.lineScale), lines, {}, options.lineScale);
+        return;
+    }
     drawPanel(p, panel, panelFont(kReadoutPixels, options.lineScale), lines,
               {text, text, QColor::fromRgb(canvas_colors::kVelocity), QColor::fromRgb(canvas_colors::kAcceleration), text},
               options.lineScale);
 }
 
-QStringList WorldPainter::readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations)
+QStringList WorldPainter::readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations,
+                                      bool wide)
 {
     const sim::BallState& balls = world.balls();
     const int n = balls.size();
@@ -657,6 +724,8 @@ QStringList WorldPainter::readoutText(const sim::World& world, int selected, con
     auto num = [](double v) { return QString::number(v, 'f', 1).rightJustified(9); };
     const sim::Vec2 x = balls.position.col(i), v = balls.velocity.col(i);
     const sim::Vec2 a = accelerations ? sim::Vec2(accelerations->col(i)) : sim::Vec2(0.0, 0.0);
+    if (wide)
+        return wideReadout(i, x, v, a, world.time());
     return {
         QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
         QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
@@ -958,27 +1027,32 @@ void WorldPainter::paintMomenta(QPainter& p, const QRectF& panel, const sim::Wor
     // total momentum: a collision between two balls changes both their
     // arrows but not the sum.
     const QRectF region = panel.adjusted(pad, pad + fm.lineSpacing(), -pad, -pad);
-    const QPointF origin = region.center();
-    const double room = 0.5 * std::min(region.width(), region.height());
     std::vector<sim::Vec2>& momenta = m_frame.momenta;
     momenta.resize(static_cast<std::size_t>(n));
     sim::Vec2 sum(0, 0);
-    double reach = 0.0;
+    // The chain's corners: every partial sum (with the origin), so the
+    // diagram is fitted to the room it takes, whichever way it points.
+    sim::Vec2 lo(0, 0), hi(0, 0);
     const bool chain = n <= kMaxMomentumChain;
     for (int i = 0; i < n; ++i) {
         momenta[static_cast<std::size_t>(i)] = balls.mass[i] * balls.velocity.col(i);
         sum += momenta[static_cast<std::size_t>(i)];
-        if (chain)
-            reach = std::max(reach, sum.norm());
+        if (chain) {
+            lo = lo.cwiseMin(sum);
+            hi = hi.cwiseMax(sum);
+        }
     }
-    reach = std::max(reach, sum.norm());
+    lo = lo.cwiseMin(sum);
+    hi = hi.cwiseMax(sum);
     m_frame.momentumSum = sum;
-    // A scale from the 1-1.5-2-3-5-7 ladder that fits the farthest tip in the
-    // room, kept while that tip uses between a quarter and all of it.
+    // A scale from the 1-1.5-2-3-5-7 ladder that fits the chain in the room,
+    // kept while the chain uses between a quarter and all of it.
+    const sim::Vec2 extent = hi - lo;
+    const double fit = std::min(extent.x() > 0.0 ? region.width() / extent.x() : HUGE_VAL,
+                                extent.y() > 0.0 ? region.height() / extent.y() : HUGE_VAL);
     double& scale = m_momentumScale;
-    if (reach > 0.0 && std::isfinite(reach) &&
-        !(scale > 0.0 && reach * scale <= room && reach * scale >= 0.25 * room)) {
-        const double want = 0.8 * room / reach;
+    if (std::isfinite(fit) && fit > 0.0 && !(scale > 0.0 && scale <= fit && scale >= 0.25 * fit)) {
+        const double want = 0.85 * fit;
         const double decade = std::pow(10.0, std::floor(std::log10(want)));
         scale = decade;
         for (double step : {1.0, 1.5, 2.0, 3.0, 5.0, 7.0})
@@ -988,6 +1062,8 @@ void WorldPainter::paintMomenta(QPainter& p, const QRectF& panel, const sim::Wor
     if (!(scale > 0.0))
         scale = 1.0;
     m_frame.momentumScale = scale;
+    const sim::Vec2 middle = 0.5 * (lo + hi);
+    const QPointF origin = region.center() - QPointF(middle.x() * scale, middle.y() * scale);
     auto to = [&](const sim::Vec2& v) { return origin + QPointF(v.x() * scale, v.y() * scale); };
     p.save();
     p.setClipRect(panel, Qt::IntersectClip);
@@ -1117,10 +1193,12 @@ void WorldPainter::paintVanes(QPainter& p, const ViewTransform& view, const sim:
     }
 }
 
-QStringList WorldPainter::totalsText(const sim::World& world)
+QStringList WorldPainter::totalsText(const sim::World& world, bool wide)
 {
     const sim::Energy e = world.energy();
     const sim::Vec2 m = world.momentum();
+    if (wide)
+        return wideTotals(e, m);
     auto num = [](double v) { return QString::number(v, 'g', 6); };
     return {
         QStringLiteral("kinetic   %1").arg(num(e.kinetic)),
@@ -1130,11 +1208,12 @@ QStringList WorldPainter::totalsText(const sim::World& world)
     };
 }
 
-void WorldPainter::paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options)
+void WorldPainter::paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
+                               bool wide)
 {
     // What a model keeps and what it loses: energy (mass·px²/s²) and
     // momentum (mass·px/s) of all balls.
-    drawPanel(p, panel, panelFont(kTotalsPixels, options.lineScale), totalsText(world), {}, options.lineScale);
+    drawPanel(p, panel, panelFont(kTotalsPixels, options.lineScale), totalsText(world, wide), {}, options.lineScale);
 }
 
 } // namespace forcelab

@@ -151,6 +151,8 @@ public:
         QRectF totals;
         QRectF sources; ///< the legend of the per-source force arrows
         QRectF momenta; ///< the momenta inset
+        bool readoutWide = false; ///< in a row above the box: the readout in two long lines
+        bool totalsWide = false;  ///< in a row above the box: the totals in two long lines
     };
     static Panels panels(const sim::World& world, const QRectF& area, const PaintOptions& options);
 
@@ -182,9 +184,10 @@ public:
     /// Above this many balls, the ghost is not drawn (outlines of every ball would hide the balls).
     static constexpr int kMaxGhostBalls = 5000;
     /// The lines of the totals panel: kinetic, potential and total energy, momentum.
-    static QStringList totalsText(const sim::World& world);
+    static QStringList totalsText(const sim::World& world, bool wide = false);
     /// The lines of the readout of ball `selected` (ball 0 when none).
-    static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations);
+    static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations,
+                                   bool wide = false);
     /// Above this many balls, per-source force arrows are drawn for the selected ball only.
     static constexpr int kMaxSourceBalls = 12;
     /// Above this many balls, the momenta inset shows the sum only.
@@ -211,10 +214,11 @@ private:
     void paintSourceLegend(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
     void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
-    void paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
+    void paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
+                     bool wide);
     void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
-                      const sim::Matrix2X* accelerations);
+                      const sim::Matrix2X* accelerations, bool wide);
 
     // The paths as a layer the size of the box: each frame draws only the
     // segments recorded since the last one; it is drawn afresh when the
