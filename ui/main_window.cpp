@@ -37,6 +37,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QShortcut>
+#include <QSplitter>
 #include <QToolButton>
 #include <QBoxLayout>
 #include <QSettings>
@@ -420,7 +421,18 @@ void MainWindow::useCompactDocks()
     tabifyDockWidget(m_parametersDock, m_lessonsDock);
     m_lessonsDock->raise();
     resizeDocks({m_parametersDock}, {std::min(340, width() / 3)}, Qt::Horizontal);
-    resizeDocks({m_parametersDock, m_inspectorDock}, {height() * 3 / 5, height() * 2 / 5}, Qt::Vertical);
+    // Once laid out: most of the column's height for the lesson, and most of
+    // the lesson's for its text (the course list above it).
+    QTimer::singleShot(0, this, [this] {
+        resizeDocks({m_parametersDock, m_inspectorDock}, {height() * 2 / 3, height() / 3}, Qt::Vertical);
+        if (auto* split = m_lessonsDock->findChild<QSplitter*>(QStringLiteral("lessonsSplitter"))) {
+            const int total = split->height();
+            split->setSizes({total / 4, total - total / 4});
+        }
+    });
+    // The file commands as icons (their names in tooltips): both toolbars
+    // fit in one row, nothing hides behind a » menu.
+    m_fileToolBar->setToolButtonStyle(Qt::ToolButtonIconOnly);
 }
 
 void MainWindow::createStatusBar()
