@@ -22,6 +22,14 @@ struct TeacherNotes {
     friend bool operator==(const TeacherNotes&, const TeacherNotes&) = default;
 };
 
+/// A second run of the same scene beside the live one, with a few settings
+/// of its own (lesson 09: the same drop with the mirror and the exact wall
+/// models), so a class sees the models side by side.
+struct ComparePane {
+    QString label; ///< shown on the pane, e.g. "mirror"
+    std::vector<std::pair<std::string, double>> set; ///< key path and value (choices as their index), as claims' "set"
+};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -35,6 +43,9 @@ struct Lesson {
     /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;
     TeacherNotes teacher;
+    /// Runs shown beside the live one (at most kMaxComparePanes).
+    std::vector<ComparePane> compare;
+    static constexpr int kMaxComparePanes = 3;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")
     sim::Scene scene;
 };

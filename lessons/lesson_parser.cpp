@@ -549,6 +549,49 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
     }
 }
 
+/// {"key.path": value, …}: parameter rows and values allowed for them
+/// (choices by name, switches as true/false), as claims' and compare panes' "set".
+void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<std::pair<std::string, double>>& out)
+{
+    for (auto it = set.begin(); it != set.end(); ++it) {
+        const QString key = it.key();
+        const sim::Parameter* row = sim::findParameter(key.toStdString());
+        if (!row) {
+            r.fail(join(sp, key), QStringLiteral("not a parameter key path (docs/parameters.md lists them)"));
+            continue;
+        }
+        const QJsonValue v = it.value();
+        double value = 0.0;
+        switch (row->type) {
+        case sim::ParameterType::Boolean:
+            if (!v.isBool()) {
+                r.fail(join(sp, key), QStringLiteral("expected true or false, got ") + describe(v));
+                continue;
+            }
+            value = v.toBool() ? 1.0 : 0.0;
+            break;
+        case sim::ParameterType::Choice: {
+            const int i = v.isString() ? sim::choiceIndex(*row, v.toString().toStdString()) : -1;
+            if (i < 0) {
+                r.fail(join(sp, key), QStringLiteral("%1 is not one of %2").arg(describe(v), names(row->choices())));
+                continue;
+            }
+            value = i;
+            break;
+        }
+        case sim::ParameterType::Number:
+        case sim::ParameterType::Integer:
+            if (!v.isDouble() || sim::checkValue(*row, v.toDouble())) {
+                r.fail(join(sp, key), QStringLiteral("expected a number allowed for %1, got %2").arg(key, describe(v)));
+                continue;
+            }
+            value = v.toDouble();
+            break;
+        }
+        out.emplace_back(key.toStdString(), value);
+    }
+}
+
 /// One claim: {"says": "…", "measure": "apex", "ball": 0, "n": 1, "at": 10,
 /// "near": 192, "within": 1} (or "within_percent", or "below"/"above" instead
 /// of "near"), optionally "axis", "other", "distance" and "set": {key: value}.
@@ -605,46 +648,8 @@ void parseClaim(Reader& r, const QJsonObject& o, const QString& p, int balls, si
         else
             r.number(o, p, "within", range::kClaimTolerance, c.tolerance);
     }
-    if (const auto set = r.object(o, p, "set")) {
-        const QString sp = join(p, "set");
-        for (auto it = set->begin(); it != set->end(); ++it) {
-            const QString key = it.key();
-            const sim::Parameter* row = sim::findParameter(key.toStdString());
-            if (!row) {
-                r.fail(join(sp, key), QStringLiteral("not a parameter key path (docs/parameters.md lists them)"));
-                continue;
-            }
-            const QJsonValue v = it.value();
-            double value = 0.0;
-            switch (row->type) {
-            case sim::ParameterType::Boolean:
-                if (!v.isBool()) {
-                    r.fail(join(sp, key), QStringLiteral("expected true or false, got ") + describe(v));
-                    continue;
-                }
-                value = v.toBool() ? 1.0 : 0.0;
-                break;
-            case sim::ParameterType::Choice: {
-                const int i = v.isString() ? sim::choiceIndex(*row, v.toString().toStdString()) : -1;
-                if (i < 0) {
-                    r.fail(join(sp, key), QStringLiteral("%1 is not one of %2").arg(describe(v), names(row->choices())));
-                    continue;
-                }
-                value = i;
-                break;
-            }
-            case sim::ParameterType::Number:
-            case sim::ParameterType::Integer:
-                if (!v.isDouble() || sim::checkValue(*row, v.toDouble())) {
-                    r.fail(join(sp, key), QStringLiteral("expected a number allowed for %1, got %2").arg(key, describe(v)));
-                    continue;
-                }
-                value = v.toDouble();
-                break;
-            }
-            c.set.emplace_back(key.toStdString(), value);
-        }
-    }
+    if (const auto set = r.object(o, p, "set"))
+        parseSet(r, *set, join(p, "set"), c.set);
 }
 
 void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Claim>& out)
@@ -664,6 +669,33 @@ void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Cla
         sim::Claim c;
         parseClaim(r, a.at(i).toObject(), p, balls, c);
         out.push_back(std::move(c));
+    }
+}
+
+/// [{"label": "mirror", "set": {"world.wall_model": "mirror"}}, …]
+void parseCompare(Reader& r, const QJsonArray& a, std::vector<ComparePane>& out)
+{
+    const QString base = QStringLiteral("compare");
+    if (a.size() > Lesson::kMaxComparePanes) {
+        r.fail(base, QStringLiteral("%1 panes is more than the limit of %2").arg(a.size()).arg(Lesson::kMaxComparePanes));
+        return;
+    }
+    out.clear();
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        const QString p = join(base, i);
+        if (!a.at(i).isObject()) {
+            r.fail(p, QStringLiteral("expected a pane {\"label\": …, \"set\": {…}}, got ") + describe(a.at(i)));
+            continue;
+        }
+        const QJsonObject o = a.at(i).toObject();
+        r.checkKeys(o, p, {"label", "set"});
+        ComparePane pane;
+        if (r.require(o, p, "label", QStringLiteral("the pane's name, e.g. \"mirror\"")))
+            r.string(o, p, "label", pane.label);
+        if (r.require(o, p, "set", QStringLiteral("the settings this pane runs with, {\"key.path\": value}")))
+            if (const auto set = r.object(o, p, "set"))
+                parseSet(r, *set, join(p, "set"), pane.set);
+        out.push_back(std::move(pane));
     }
 }
 
@@ -720,7 +752,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "claims", "teacher"});
+                 "controls", "overlays", "claims", "teacher", "compare"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -761,6 +793,8 @@ ParseResult parseLesson(const QJsonObject& root)
         parseClaims(r, *a, static_cast<int>(scene.balls.size()) + scene.spawn.count, lesson.claims);
     if (const auto o = r.object(root, top, "teacher"))
         parseTeacher(r, *o, lesson.challenges.size(), lesson.teacher);
+    if (const auto a = r.array(root, top, "compare", QStringLiteral("an array of panes")))
+        parseCompare(r, *a, lesson.compare);
     return result;
 }
 

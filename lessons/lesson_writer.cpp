@@ -153,6 +153,24 @@ QByteArray rowValue(const sim::Parameter& p, const sim::WorldSettings& s)
     return num(v);
 }
 
+/// {"key.path": value, …} of a claim's or a compare pane's settings, each
+/// value written as its row writes it (choices by name).
+QByteArray setObject(const std::vector<std::pair<std::string, double>>& entries)
+{
+    sim::WorldSettings values;
+    QByteArray set = "{";
+    for (const auto& [key, value] : entries) {
+        const sim::Parameter* p = sim::findParameter(key);
+        if (!p)
+            continue;
+        p->set(values, value);
+        if (set.size() > 1)
+            set += ", ";
+        set += str(key) + ": " + rowValue(*p, values);
+    }
+    return set + '}';
+}
+
 /// One claim on one line, with only the keys that differ from a claim's
 /// defaults (apart from says, measure, at and the test, which are always there).
 QByteArray claimLine(const sim::Claim& c)
@@ -182,21 +200,15 @@ QByteArray claimLine(const sim::Claim& c)
         f.push_back({"above", num(c.value)});
         break;
     }
-    if (!c.set.empty()) {
-        sim::WorldSettings values;
-        QByteArray set = "{";
-        for (const auto& [key, value] : c.set) {
-            const sim::Parameter* p = sim::findParameter(key);
-            if (!p)
-                continue;
-            p->set(values, value);
-            if (set.size() > 1)
-                set += ", ";
-            set += str(key) + ": " + rowValue(*p, values);
-        }
-        f.push_back({"set", set + '}'});
-    }
+    if (!c.set.empty())
+        f.push_back({"set", setObject(c.set)});
     return inlineObject(f);
+}
+
+/// A compare pane on one line: its label and its settings.
+QByteArray compareLine(const ComparePane& pane)
+{
+    return inlineObject({{"label", str(pane.label)}, {"set", setObject(pane.set)}});
 }
 
 /// The rows of a section as fields, leaving out `enabled` (a model's switch
@@ -340,6 +352,13 @@ QByteArray saveLesson(const Lesson& lesson)
         for (const sim::Claim& c : lesson.claims)
             claims << claimLine(c);
         top.push_back({"claims", blockArray(claims, 2)});
+    }
+
+    if (!lesson.compare.empty()) {
+        QList<QByteArray> panes;
+        for (const ComparePane& pane : lesson.compare)
+            panes << compareLine(pane);
+        top.push_back({"compare", blockArray(panes, 2)});
     }
 
     QByteArray out = "{\n";

@@ -10,6 +10,9 @@
 #include "ui/theme.h"
 #include "ui/world_painter.h"
 
+#include "lessons/lesson_loader.h"
+#include "sim/names.h"
+
 #include <QDir>
 #include <QImageReader>
 #include <QScreen>
@@ -58,6 +61,7 @@ private slots:
     void stageViewAlwaysUsesTheProjectorTheme();
     void pictureIsAsLargeAsTheScreenShowsIt();
     void openDialogStartsInTheLessonsFolder();
+    void comparePanesRunTheirOwnWallModels();
 };
 
 void GuiOverlaysTest::initTestCase()
@@ -182,6 +186,7 @@ void GuiOverlaysTest::pathLayerMatchesAWholeRedraw()
     window.resize(1280, 720);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.controller()->setComparePanes({}); // the live run alone fills the canvas
     Canvas* canvas = window.canvas();
     QVERIFY(canvas->overlays().trails);
     int rebuilt = 0;
@@ -292,6 +297,53 @@ void GuiOverlaysTest::openDialogStartsInTheLessonsFolder()
 {
     const QDir folder(MainWindow::lessonsFolder());
     QVERIFY(folder.exists(QStringLiteral("07-gravity.json")));
+}
+
+// Lesson 09 shows its three wall models side by side: each pane's world is
+// bit for bit the lesson run on its own with the pane's wall model, a live
+// change (gravity) reaches the panes but not their own setting, and the
+// three runs are drawn in three areas that do not overlap.
+void GuiOverlaysTest::comparePanesRunTheirOwnWallModels()
+{
+    MainWindow window(QStringLiteral("bounce-at-the-right-moment"));
+    window.resize(1280, 720);
+    const auto& panes = window.controller()->comparePanes();
+    QCOMPARE(panes.size(), std::size_t{2});
+    QCOMPARE(panes[0].label, QStringLiteral("mirror"));
+    QCOMPARE(panes[1].label, QStringLiteral("exact"));
+    for (int k = 0; k < 120; ++k)
+        window.controller()->stepOnce();
+    const LoadResult lesson = LessonLoader::load(QStringLiteral("bounce-at-the-right-moment"));
+    QVERIFY(lesson.ok());
+    for (const char* model : {"mirror", "exact"}) {
+        sim::Scene scene = lesson.lesson->scene;
+        scene.settings.walls.model = *sim::parseWallModel(model);
+        sim::World alone(scene);
+        for (int k = 0; k < 120; ++k)
+            alone.step();
+        const sim::World& pane = *panes[std::string_view(model) == "mirror" ? 0 : 1].world;
+        QCOMPARE(pane.time(), alone.time());
+        QVERIFY(pane.balls().position == alone.balls().position);
+        QVERIFY(pane.balls().velocity == alone.balls().velocity);
+    }
+    // The live run (clamp) has grouped the balls; exact keeps the row apart.
+    QVERIFY(!(window.controller()->world().balls().position == panes[1].world->balls().position));
+    sim::WorldSettings s = window.controller()->world().settings();
+    s.gravity.g.y() = 500;
+    QVERIFY(window.controller()->setSettings(s));
+    for (const auto& pane : panes) {
+        QCOMPARE(pane.world->settings().gravity.g.y(), 500.0);
+        QVERIFY(pane.world->settings().walls.model != sim::WallModel::Clamp);
+    }
+    const QList<QRectF> areas = window.canvas()->paneAreas(QRectF(window.canvas()->rect()));
+    QCOMPARE(areas.size(), 3);
+    for (qsizetype a = 0; a < areas.size(); ++a)
+        for (qsizetype b = a + 1; b < areas.size(); ++b)
+            QVERIFY(!areas[a].intersects(areas[b]));
+    QVERIFY(areas[0].contains(window.canvas()->viewTransform().boxRect()));
+    // The next lesson has no panes.
+    QVERIFY(window.openLesson(QStringLiteral("random-acceleration")));
+    QVERIFY(window.controller()->comparePanes().empty());
 }
 
 QTEST_MAIN(GuiOverlaysTest)

@@ -609,6 +609,14 @@ void TestLessonLoader::badInput_data()
                                    << R"(t.json:1:54: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
                                      << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals, forces, sources, centre-of-mass, momenta)";
+    QTest::newRow("compare pane with an unknown key")
+        << minimal(R"("compare": [{"label": "m", "set": {"world.nope": 1}}])") << "t.json:1:61: compare.0.set.world.nope: not a parameter key path (docs/parameters.md lists them)";
+    QTest::newRow("compare pane with a bad wall model")
+        << minimal(R"("compare": [{"label": "m", "set": {"world.wall_model": "bounce"}}])") << R"(t.json:1:61: compare.0.set.world.wall_model: the string "bounce" is not one of clamp, mirror, exact, reverse)";
+    QTest::newRow("compare pane without a label") << minimal(R"("compare": [{"set": {}}])") << R"(t.json:1:38: compare.0.label: missing; give the pane's name, e.g. "mirror")";
+    QTest::newRow("four compare panes")
+        << minimal(R"("compare": [{"label": "a", "set": {}}, {"label": "b", "set": {}}, {"label": "c", "set": {}}, {"label": "d", "set": {}}])")
+        << "t.json:1:26: compare: 4 panes is more than the limit of 3";
     QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
                                      << "t.json:1:50: controls.1: \"gravity.y\" is not one of " +
                                             LessonLoader::controlNames().join(", ");

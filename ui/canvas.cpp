@@ -1,12 +1,16 @@
 #include "canvas.h"
 
-#include <QApplication>
-
 #include "simulation_controller.h"
+
+#include "sim/parameters.h"
+
+#include <QApplication>
 
 #include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QPainter>
+
+#include <algorithm>
 
 namespace forcelab {
 
@@ -141,7 +145,7 @@ void Canvas::setBoxMargin(double pixels)
 
 ViewTransform Canvas::viewTransform() const
 {
-    return WorldPainter::view(m_controller->world(), QRectF(rect()), m_options);
+    return WorldPainter::view(m_controller->world(), liveArea(), m_options);
 }
 
 QPointF Canvas::worldToWidget(const sim::Vec2& world) const
@@ -189,9 +193,116 @@ QImage Canvas::renderImage(const QSize& size, qreal dpr) const
     // Its own painter (and sprite cache): a screenshot leaves the canvas as it was.
     WorldPainter painter;
     painter.setMarkedColor(m_painter.markedColor());
+    std::vector<WorldPainter> panes(m_panePainters.size());
     QPainter p(&image);
-    painter.paint(p, QRectF(QPointF(0, 0), QSizeF(size)), m_controller->world(), m_options, dpr);
+    paintRuns(p, QRectF(QPointF(0, 0), QSizeF(size)), painter, panes, dpr);
     return image;
+}
+
+double Canvas::paneLabelHeight() const
+{
+    return m_controller->comparePanes().empty() ? 0.0 : 24.0 * m_options.lineScale;
+}
+
+QList<QRectF> Canvas::paneAreas(const QRectF& area) const
+{
+    const int n = 1 + static_cast<int>(m_controller->comparePanes().size());
+    if (n == 1)
+        return {area};
+    const sim::BoxSettings& box = m_controller->world().settings().box;
+    const double label = paneLabelHeight();
+    // Columns, rows or two by two: the grid whose cells fit the box largest.
+    std::vector<std::pair<int, int>> grids{{n, 1}, {1, n}};
+    if (n >= 3)
+        grids.emplace_back(2, (n + 1) / 2);
+    std::pair<int, int> best = grids.front();
+    double bestScale = -1.0;
+    for (const auto& [columns, rows] : grids) {
+        const QRectF cell(0, 0, area.width() / columns, area.height() / rows - label);
+        const double scale = ViewTransform::fit(box, cell, m_options.margin).scale();
+        if (scale > bestScale) {
+            bestScale = scale;
+            best = {columns, rows};
+        }
+    }
+    QList<QRectF> areas;
+    const double w = area.width() / best.first, h = area.height() / best.second;
+    for (int k = 0; k < n; ++k)
+        areas.append(QRectF(area.left() + (k % best.first) * w, area.top() + (k / best.first) * h, w, h));
+    return areas;
+}
+
+QRectF Canvas::liveArea() const
+{
+    return paneAreas(QRectF(rect())).front().adjusted(0, paneLabelHeight(), 0, 0);
+}
+
+void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std::vector<WorldPainter>& panes,
+                       qreal dpr) const
+{
+    const std::vector<SimulationController::Pane>& runs = m_controller->comparePanes();
+    if (runs.empty()) {
+        live.paint(p, area, m_controller->world(), m_options, dpr);
+        return;
+    }
+    const QList<QRectF> areas = paneAreas(area);
+    const double label = paneLabelHeight();
+    p.fillRect(area, QColor::fromRgb(m_colors.letterbox));
+    live.paint(p, areas[0].adjusted(0, label, 0, 0), m_controller->world(), m_options, dpr);
+    // The panes show the balls, the box and the paths; the panels (readout,
+    // totals, momenta) and the selection belong to the live run.
+    PaintOptions own = m_options;
+    own.overlays.readout = own.overlays.totals = own.overlays.momenta = own.overlays.forceSources = false;
+    own.overlays.impact = false;
+    own.selected = -1;
+    own.ghost = nullptr;
+    own.positions = nullptr;
+    own.collision = nullptr;
+    own.centreOfMassPath = nullptr;
+    panes.resize(runs.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        if (!runs[k].world)
+            continue;
+        own.trails = k < m_paneTrails.size() ? &m_paneTrails[k] : nullptr;
+        panes[k].setMarkedColor(live.markedColor());
+        panes[k].paint(p, areas[static_cast<qsizetype>(k) + 1].adjusted(0, label, 0, 0), *runs[k].world, own, dpr);
+    }
+    // The labels, over each run's strip.
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(15 * m_options.lineScale)));
+    font.setBold(true);
+    p.setFont(font);
+    p.setPen(QColor(0x1d, 0x22, 0x2c));
+    // The live run is named by its own values of what the panes change
+    // ("your run: clamp"), so the three labels read as one comparison.
+    QStringList liveValues;
+    std::vector<std::string> keys;
+    for (const SimulationController::Pane& pane : runs)
+        for (const auto& entry : pane.set)
+            if (std::find(keys.begin(), keys.end(), entry.first) == keys.end())
+                keys.push_back(entry.first);
+    for (const std::string& key : keys)
+        if (const sim::Parameter* row = sim::findParameter(key)) {
+            const double value = row->get(m_controller->world().settings());
+            if (row->type == sim::ParameterType::Choice) {
+                const auto names = row->choices();
+                const auto i = static_cast<std::size_t>(value);
+                if (i < names.size())
+                    liveValues << QString::fromLatin1(names[i].data(), static_cast<qsizetype>(names[i].size()));
+            } else if (row->type == sim::ParameterType::Boolean) {
+                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())),
+                                                   value != 0.0 ? tr("on") : tr("off"));
+            } else {
+                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())))
+                           .arg(value, 0, 'g', 4);
+            }
+        }
+    for (qsizetype k = 0; k < areas.size(); ++k) {
+        const QString text = k == 0 ? tr("your run: %1").arg(liveValues.join(QStringLiteral(", ")))
+                                    : runs[static_cast<std::size_t>(k - 1)].label;
+        p.drawText(QRectF(areas[k].left() + 10, areas[k].top(), areas[k].width() - 20, label),
+                   Qt::AlignLeft | Qt::AlignVCenter, text);
+    }
 }
 
 bool Canvas::showsStartHint() const
@@ -226,7 +337,7 @@ void Canvas::paintEvent(QPaintEvent*)
     timer.start();
     QPainter painter(this);
     m_options.positions = m_controller->interpolatedPositions();
-    m_painter.paint(painter, QRectF(rect()), m_controller->world(), m_options, devicePixelRatioF());
+    paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
     if (showsStartHint())
         paintStartHint(painter);
     ++m_frames;
@@ -360,6 +471,7 @@ void Canvas::onSceneChanged()
     m_drag = Drag();
     m_press = Press();
     m_trails.clear();
+    m_paneTrails.clear();
     m_centreOfMassPath.clear();
     resetCollision();
     if (m_options.selected >= m_controller->world().balls().size())
@@ -384,6 +496,13 @@ void Canvas::onStepped()
         m_trails.record(world.balls(), world.time());
     if (m_options.overlays.centreOfMass)
         recordCentreOfMass();
+    if (m_options.overlays.trails) {
+        const auto& panes = m_controller->comparePanes();
+        m_paneTrails.resize(panes.size());
+        for (std::size_t k = 0; k < panes.size(); ++k)
+            if (panes[k].world)
+                m_paneTrails[k].record(panes[k].world->balls(), panes[k].world->time());
+    }
     if (m_options.overlays.impact)
         trackCollision();
     m_previousTime = world.time();

@@ -84,7 +84,16 @@ public:
     /// A thrown ball gets the pointer's mean velocity over this many ms before release.
     static constexpr qint64 kThrowWindowMs = 50;
 
-    /// The current map between widget and world coordinates (letterboxed).
+    /// Where the live run and each of the controller's compare panes are
+    /// drawn in `area` (widget px), the live run first: side by side, one
+    /// above the other or two by two, whichever gives the boxes the most
+    /// room. Each area has its label strip at the top. One area without panes.
+    QList<QRectF> paneAreas(const QRectF& area) const;
+    /// Height of a pane's label strip (px; 0 without panes).
+    double paneLabelHeight() const;
+
+    /// The current map between widget and world coordinates (letterboxed)
+    /// of the live run.
     ViewTransform viewTransform() const;
     QPointF worldToWidget(const sim::Vec2& world) const;
     sim::Vec2 widgetToWorld(const QPointF& widget) const;
@@ -115,6 +124,11 @@ protected:
 
 private:
     void paintStartHint(QPainter& p) const;
+    /// The live run and the compare panes into `area`.
+    void paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std::vector<WorldPainter>& panes,
+                   qreal dpr) const;
+    /// The live run's area of the widget (below its label strip when there are panes).
+    QRectF liveArea() const;
     // A press on a ball selects it and only arms a grab: the ball is taken
     // (held, then thrown or dropped) once the pointer has moved the platform's
     // drag distance, so a click never touches the physics.
@@ -146,6 +160,8 @@ private:
     TrailRecorder m_trails;
     std::vector<sim::Vec2> m_centreOfMassPath;
     CanvasColors m_colors;
+    std::vector<WorldPainter> m_panePainters; // one per compare pane (own sprite caches and path layers)
+    std::vector<TrailRecorder> m_paneTrails;  // the panes' paths, when the live run shows paths
     CollisionView m_collision;
     sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
     double m_previousTime = -1.0;

@@ -571,8 +571,13 @@ bool MainWindow::openLesson(const QString& pathOrId)
 
 bool MainWindow::setLesson(const Lesson& lesson)
 {
-    if (m_controller->setScene(lesson.scene))
+    // The old lesson's panes go first: their settings may not suit the new scene.
+    m_controller->setComparePanes({});
+    if (m_controller->setScene(lesson.scene)) {
+        m_controller->setComparePanes(m_lesson.compare);
         return false; // the controller has signalled the error
+    }
+    m_controller->setComparePanes(lesson.compare);
     m_lesson = lesson;
     Overlays overlays = Overlays::fromNames(lesson.overlays);
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's

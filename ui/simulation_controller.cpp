@@ -1,5 +1,7 @@
 #include "simulation_controller.h"
 
+#include "sim/parameters.h"
+
 #include "lessons/lesson_loader.h"
 #include "sim/work_precision.h"
 
@@ -41,6 +43,13 @@ bool SimulationController::setSettings(const sim::WorldSettings& settings)
         m_ghostMode = GhostMode::Off;
         emit ghostChanged();
     }
+    // The panes follow every live change but their own settings.
+    for (Pane& pane : m_panes)
+        if (pane.world)
+            if (auto error = pane.world->setSettings(paneSettings(settings, pane))) {
+                emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
+                pane.world.reset();
+            }
     emit settingsChanged();
     emit stepped(); // a paused canvas shows the change (walls, markers)
     checkHalted();
@@ -177,6 +186,7 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
     m_accumulator = 0.0;
     m_clock.restart();
     restartGhost();
+    restartPanes();
     emit sceneChanged();
     emit stepped();
     return true;
@@ -202,6 +212,7 @@ void SimulationController::startedScene()
     m_droppedTime = 0.0;
     m_clock.restart();
     restartGhost();
+    restartPanes();
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
@@ -241,6 +252,43 @@ void SimulationController::updateTimer()
     } else if (!run && m_timer.isActive()) {
         m_timer.stop();
     }
+}
+
+void SimulationController::setComparePanes(const std::vector<ComparePane>& panes)
+{
+    m_panes.clear();
+    for (const ComparePane& p : panes)
+        m_panes.push_back({p.label, p.set, nullptr});
+    restartPanes();
+    emit ghostChanged();
+}
+
+sim::WorldSettings SimulationController::paneSettings(const sim::WorldSettings& live, const Pane& pane)
+{
+    sim::WorldSettings s = live;
+    for (const auto& [key, value] : pane.set)
+        if (const sim::Parameter* row = sim::findParameter(key))
+            row->set(s, value);
+    return s;
+}
+
+// The panes start from the live world's state now (its balls and time 0 of
+// their own), like the twin ghost.
+void SimulationController::restartPanes()
+{
+    for (Pane& pane : m_panes) {
+        pane.world.reset();
+        sim::Scene scene = m_scene;
+        scene.settings = paneSettings(m_world.settings(), pane);
+        auto world = std::make_unique<sim::World>();
+        if (auto error = world->reset(scene)) {
+            emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
+            continue;
+        }
+        world->mutableBalls() = m_world.balls();
+        pane.world = std::move(world);
+    }
+    m_paneOffset = m_world.time();
 }
 
 void SimulationController::setGhost(GhostMode mode, sim::IntegratorKind integrator, int divider)
@@ -290,6 +338,14 @@ void SimulationController::restartGhost()
 // its step: with a step of dt / divider it lands on it exactly).
 void SimulationController::stepGhost()
 {
+    for (Pane& pane : m_panes) {
+        if (!pane.world)
+            continue;
+        const double target = m_world.time() - m_paneOffset;
+        const double h = pane.world->settings().time.dt;
+        while (!pane.world->halted() && pane.world->time() < target - 0.5 * h)
+            pane.world->step();
+    }
     if (!m_ghost)
         return;
     const double target = m_world.time() - m_ghostOffset;

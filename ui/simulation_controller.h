@@ -9,6 +9,7 @@
 
 #include "sim/scene.h"
 #include "sim/world.h"
+#include "lessons/lesson.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -92,6 +93,19 @@ public:
     /// world's state when switched on, restarts with every reset or new
     /// scene, takes the live world's settings edits and pointer, and is
     /// stepped to the same simulated time after every step of the live world.
+    /// Runs beside the live one (a lesson's `compare` panes): the live
+    /// settings with a few of the pane's own, started from the same balls
+    /// and stepped in lock-step. A new scene or a reset starts them over.
+    struct Pane {
+        QString label;
+        std::vector<std::pair<std::string, double>> set; ///< key path and value (sim/parameters.h rows)
+        std::unique_ptr<sim::World> world;
+    };
+    void setComparePanes(const std::vector<ComparePane>& panes);
+    const std::vector<Pane>& comparePanes() const { return m_panes; }
+    /// The live settings with `pane`'s own applied.
+    static sim::WorldSettings paneSettings(const sim::WorldSettings& live, const Pane& pane);
+
     enum class GhostMode { Off, Compare, Twin };
     void setGhost(GhostMode mode, sim::IntegratorKind integrator = sim::IntegratorKind::Ias15, int divider = 1);
     GhostMode ghostMode() const { return m_ghostMode; }
@@ -163,6 +177,9 @@ private:
     sim::IntegratorKind m_ghostIntegrator = sim::IntegratorKind::Ias15;
     int m_ghostDivider = 1;
     std::unique_ptr<sim::World> m_ghost;
+    std::vector<Pane> m_panes;
+    double m_paneOffset = 0.0; // s, live time when the panes started
+    void restartPanes();
     double m_ghostOffset = 0.0; // s, live time when the ghost started (its own time starts at 0)
 };
 
