@@ -991,7 +991,9 @@ void MainWindow::layoutStage()
     const bool vertical = side >= below;
     m_stageBar->setVertical(vertical);
     m_stageLayout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
-    const int minimum = vertical ? 200 : 96;
+    // A row is never lower than its caption, readout and sliders need: the
+    // box gives up that much height rather than the text being cut.
+    const int minimum = vertical ? 200 : std::max(96, m_stageBar->sizeHint().height());
     const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
     if (vertical) {
         m_stageBar->setFixedWidth(strip);

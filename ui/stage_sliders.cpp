@@ -51,8 +51,12 @@ void StageSliders::setLessonControls(const QStringList& controls)
     m_sliders.clear();
     QFont big = font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
+    QStringList seen; // a row named by two controls gets one slider
     for (const QString& control : controls) {
         for (const QString& row : lessons::controlRows().value(control)) {
+            if (seen.contains(row))
+                continue;
+            seen << row;
             const sim::Parameter* p = sim::findControl(row.toStdString());
             if (!p || (p->type != sim::ParameterType::Number && p->type != sim::ParameterType::Integer) ||
                 !(p->sliderHi > p->sliderLo))

@@ -164,7 +164,9 @@ QSizeF sourcesSize(const sim::WorldSettings& settings, double lineScale)
 // view (line scale 1.6) it would otherwise take a quarter of a 1024 px width.
 double momentaSide(double lineScale)
 {
-    return 170.0 * std::min(lineScale, 1.2);
+    const double title = panelSize(panelFont(kTotalsPixels, lineScale), QStringLiteral("momenta  p = m v"), 1, lineScale)
+                             .width();
+    return std::max(170.0 * std::min(lineScale, 1.2), title);
 }
 
 struct Layout {
