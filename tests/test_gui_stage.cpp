@@ -191,7 +191,12 @@ void GuiStageTest::autoArrowsAreReadable()
 void GuiStageTest::stageSlidersEditTheWorld()
 {
     MainWindow window(QStringLiteral("losing-energy"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
     window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
+    window.showNormal(); // a 16:9 screen: the bar is a column beside the box
+    window.setGeometry(QRect(0, 0, 1280, 720));
+    QTRY_COMPARE(window.size(), QSize(1280, 720));
     auto* sliders = window.findChild<StageSliders*>(QStringLiteral("stageSliders"));
     QVERIFY(sliders);
     QCOMPARE(sliders->count(), 4);

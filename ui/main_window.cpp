@@ -948,7 +948,7 @@ void MainWindow::updateStageReadout()
                   << QStringLiteral("a (%1, %2) px/s²").arg(num(a(0, i)), num(a(1, i)))
                   << tr("speed %1 px/s").arg(v.norm(), 0, 'f', 1);
         } else {
-            lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a);
+            lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a, true);
         }
     }
     if (m_stageOverlays.totals) {
@@ -959,7 +959,7 @@ void MainWindow::updateStageReadout()
                   << tr("  total %1").arg(e.total(), 0, 'g', 4)
                   << tr("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
         } else {
-            lines << WorldPainter::totalsText(world);
+            lines << WorldPainter::totalsText(world, true);
         }
     }
     m_stageBar->setReadout(lines.join(QLatin1Char('\n')));
@@ -991,9 +991,20 @@ void MainWindow::layoutStage()
     const bool vertical = side >= below;
     m_stageBar->setVertical(vertical);
     m_stageLayout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
-    // A row is never lower than its caption, readout and sliders need: the
-    // box gives up that much height rather than the text being cut.
-    const int minimum = vertical ? 200 : std::max(96, m_stageBar->sizeHint().height());
+    // A row is as tall as its caption, readout and sliders need, up to a
+    // seventh of the screen (the box keeps over 80% of it); the sliders
+    // stay in the Parameters panel when they would not fit under that.
+    m_stageSliders->setColumns(vertical ? 2 : std::max(1, m_stageSliders->count()));
+    int minimum = 200;
+    if (!vertical) {
+        const int cap = std::max(96, area.height() / 7);
+        m_stageSliders->setVisible(m_stageSliders->count() > 0);
+        if (m_stageBar->sizeHint().height() > cap)
+            m_stageSliders->hide();
+        minimum = std::clamp(m_stageBar->sizeHint().height(), 96, cap);
+    } else {
+        m_stageSliders->setVisible(m_stageSliders->count() > 0);
+    }
     const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
     if (vertical) {
         m_stageBar->setFixedWidth(strip);
@@ -1004,6 +1015,7 @@ void MainWindow::layoutStage()
         m_stageBar->setMinimumWidth(0);
         m_stageBar->setMaximumWidth(QWIDGETSIZE_MAX);
     }
+    updateStageReadout(); // short lines in a column, long ones in a row
 }
 
 void MainWindow::showError(const QString& message)

@@ -11,6 +11,7 @@
 #include <QLabel>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 
 namespace forcelab {
@@ -84,14 +85,26 @@ void StageSliders::setLessonControls(const QStringList& controls)
             m_sliders.append(s);
         }
     }
-    // Two sliders side by side: the bar stays slim.
+    arrange();
+    setVisible(!m_sliders.isEmpty());
+    refresh();
+}
+
+void StageSliders::setColumns(int columns)
+{
+    m_columns = std::max(1, columns);
+    arrange();
+}
+
+void StageSliders::arrange()
+{
+    while (m_grid->count() > 0)
+        delete m_grid->takeAt(0); // the layout item only; the widgets stay
     for (qsizetype i = 0; i < m_sliders.size(); ++i) {
-        const int row = static_cast<int>(i / 2) * 2, column = static_cast<int>(i % 2);
+        const int row = static_cast<int>(i / m_columns) * 2, column = static_cast<int>(i % m_columns);
         m_grid->addWidget(m_sliders[i].label, row, column);
         m_grid->addWidget(m_sliders[i].control, row + 1, column);
     }
-    setVisible(!m_sliders.isEmpty());
-    refresh();
 }
 
 void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)

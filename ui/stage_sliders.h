@@ -28,6 +28,8 @@ public:
 
     /// One slider per number row of the lesson's `controls` (in their order).
     void setLessonControls(const QStringList& controls);
+    /// Sliders side by side (2 in a column bar, all of them in a row bar).
+    void setColumns(int columns);
     /// Sliders shown (0: the widget hides itself).
     int count() const { return static_cast<int>(m_sliders.size()); }
     /// The slider of a parameter row ("gravity_y"), or null.
@@ -52,6 +54,8 @@ private:
     QGridLayout* m_grid = nullptr;
     QList<Slider> m_sliders;
     int m_dragSession = 0;
+    int m_columns = 2;
+    void arrange();
 };
 
 } // namespace forcelab
