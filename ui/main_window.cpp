@@ -424,6 +424,8 @@ void MainWindow::useCompactDocks()
     // Once laid out: most of the column's height for the lesson, and most of
     // the lesson's for its text (the course list above it).
     QTimer::singleShot(0, this, [this] {
+        if (m_presentationAction->isChecked())
+            return; // the docks are hidden on the stage
         resizeDocks({m_parametersDock, m_inspectorDock}, {height() * 2 / 3, height() / 3}, Qt::Vertical);
         if (auto* split = m_lessonsDock->findChild<QSplitter*>(QStringLiteral("lessonsSplitter"))) {
             const int total = split->height();
@@ -590,11 +592,11 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_codeDock->setLessonControls(lesson.controls);
     updateStageCaption();
     updateStageReadout();
+    m_stageSliders->setLessonControls(lesson.controls);
     layoutStage(); // the box's shape decides where the stage bar goes
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
-    m_stageSliders->setLessonControls(lesson.controls);
     // Undo steps belong to the lesson they were made in.
     m_parameters->undoStack()->clear();
     // The keyboard goes to the stage, not to whatever field had it in the
@@ -989,21 +991,23 @@ void MainWindow::layoutStage()
     const double side = area.width() - aspect * area.height();      // px left beside a full-height box
     const double below = area.height() - area.width() / aspect;      // px left under a full-width box
     const bool vertical = side >= below;
+    const bool wasVertical = m_stageBar->isVertical();
     m_stageBar->setVertical(vertical);
     m_stageLayout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
     // A row is as tall as its caption, readout and sliders need, up to a
     // seventh of the screen (the box keeps over 80% of it); the sliders
     // stay in the Parameters panel when they would not fit under that.
-    m_stageSliders->setColumns(vertical ? 2 : std::max(1, m_stageSliders->count()));
+    // Two sliders side by side in a column; in a row as many as fit its width.
+    m_stageSliders->setColumns(vertical ? 2 : std::clamp(area.width() / 240, 1, std::max(1, m_stageSliders->count())));
     int minimum = 200;
     if (!vertical) {
         const int cap = std::max(96, area.height() / 7);
-        m_stageSliders->setVisible(m_stageSliders->count() > 0);
+        m_stageBar->setSlidersShown(m_stageSliders->count() > 0);
         if (m_stageBar->sizeHint().height() > cap)
-            m_stageSliders->hide();
+            m_stageBar->setSlidersShown(false);
         minimum = std::clamp(m_stageBar->sizeHint().height(), 96, cap);
     } else {
-        m_stageSliders->setVisible(m_stageSliders->count() > 0);
+        m_stageBar->setSlidersShown(m_stageSliders->count() > 0);
     }
     const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
     if (vertical) {
@@ -1015,7 +1019,8 @@ void MainWindow::layoutStage()
         m_stageBar->setMinimumWidth(0);
         m_stageBar->setMaximumWidth(QWIDGETSIZE_MAX);
     }
-    updateStageReadout(); // short lines in a column, long ones in a row
+    if (vertical != wasVertical)
+        updateStageReadout(); // short lines in a column, long ones in a row
 }
 
 void MainWindow::showError(const QString& message)

@@ -4,6 +4,8 @@
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
+#include <QScrollArea>
+#include <QTimer>
 #include <QToolButton>
 
 #include <algorithm>
@@ -38,6 +40,7 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     mono.setPointSizeF(text.pointSizeF());
     m_readout->setFont(mono);
     m_readoutFont = mono;
+    m_readout->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_readout->hide();
     for (QAction* action : transport) {
         auto* b = new QToolButton(this);
@@ -71,11 +74,14 @@ void StageBar::setReadout(const QString& text)
 
 void StageBar::fitReadout()
 {
-    // In a column the readout's lines are never cut: its font shrinks (to
-    // 7 pt at least) until the longest line fits the column's width.
+    // The readout's lines are never cut: its font shrinks (to 7 pt at
+    // least) until the longest line fits the column's width, or in a row
+    // the width its grid cell got (the label asks for none, so a long
+    // readout never makes the window wider than the screen).
     QFont font = m_readoutFont;
-    if (m_vertical && width() > 0) {
-        const int room = width() - m_grid->contentsMargins().left() - m_grid->contentsMargins().right();
+    const int room = m_vertical ? width() - m_grid->contentsMargins().left() - m_grid->contentsMargins().right()
+                                : m_readout->width();
+    if (room > 0) {
         const QStringList lines = m_readout->text().split(QLatin1Char('\n'));
         auto widest = [&](const QFont& f) {
             const QFontMetrics fm(f);
@@ -95,15 +101,33 @@ void StageBar::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
     fitReadout();
+    // In a row the readout's cell is known once the grid has laid out.
+    QTimer::singleShot(0, this, &StageBar::fitReadout);
 }
 
 void StageBar::setSliders(QWidget* sliders)
 {
-    m_sliders = sliders;
-    sliders->setParent(this);
+    // In a scroll area: however many sliders a lesson has, the bar never
+    // asks the window to grow (a long list scrolls instead).
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("stageSlidersScroll"));
+    scroll->setWidget(sliders);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
     // Light text on the bar's dark background, like the caption.
+    scroll->setPalette(palette());
+    scroll->viewport()->setAutoFillBackground(false);
     sliders->setPalette(palette());
+    m_sliders = scroll;
     setVertical(m_vertical);
+}
+
+void StageBar::setSlidersShown(bool shown)
+{
+    if (m_sliders)
+        m_sliders->setVisible(shown);
 }
 
 void StageBar::setVertical(bool vertical)
@@ -136,6 +160,7 @@ void StageBar::setVertical(bool vertical)
         if (m_sliders) // a row of its own under the caption and the buttons
             m_grid->addWidget(m_sliders, 2, 0, 1, 2 + static_cast<int>(m_buttons.size()));
         m_grid->setColumnStretch(0, 1);
+        m_grid->setColumnStretch(1, 1); // the readout: as wide as the caption
     }
 }
 

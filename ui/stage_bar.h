@@ -32,6 +32,8 @@ public:
     bool isVertical() const { return m_vertical; }
     /// The lesson's sliders (StageSliders), under the buttons; not owned before, owned after.
     void setSliders(QWidget* sliders);
+    /// Shows or hides the sliders' area (a row bar without room for them).
+    void setSlidersShown(bool shown);
 
 protected:
     void resizeEvent(QResizeEvent* event) override;

@@ -40,7 +40,6 @@ StageSliders::StageSliders(SimulationController* controller, QUndoStack* undoSta
     m_grid->setVerticalSpacing(2);
     connect(m_controller, &SimulationController::settingsChanged, this, &StageSliders::refresh);
     connect(m_controller, &SimulationController::sceneChanged, this, &StageSliders::refresh);
-    hide();
 }
 
 void StageSliders::setLessonControls(const QStringList& controls)
@@ -86,7 +85,6 @@ void StageSliders::setLessonControls(const QStringList& controls)
         }
     }
     arrange();
-    setVisible(!m_sliders.isEmpty());
     refresh();
 }
 

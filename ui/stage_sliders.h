@@ -30,7 +30,7 @@ public:
     void setLessonControls(const QStringList& controls);
     /// Sliders side by side (2 in a column bar, all of them in a row bar).
     void setColumns(int columns);
-    /// Sliders shown (0: the widget hides itself).
+    /// Sliders shown (the stage bar hides their area when there are none).
     int count() const { return static_cast<int>(m_sliders.size()); }
     /// The slider of a parameter row ("gravity_y"), or null.
     NumberControl* slider(const QString& row) const;
