@@ -1,0 +1,107 @@
+// Layout that holds: at 1280x720 and 1024x768, with every parameter shown,
+// no label of the Parameters panel, the Inspector or the stage bar is cut,
+// and every number field shows its whole text with its unit. ctest runs this
+// twice: as is, and with QT_SCALE_FACTOR=2 (test_gui_layout_scale2), where
+// the same window sizes are logical pixels of a screen twice as dense.
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+
+#include <QAbstractSpinBox>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+using namespace forcelab;
+
+namespace {
+
+// The widgets under `root` that the user can see now and whose text does not fit.
+QStringList cutTexts(QWidget* root)
+{
+    QStringList cut;
+    for (QLabel* label : root->findChildren<QLabel*>()) {
+        if (!label->isVisibleTo(root) || label->text().isEmpty() || label->wordWrap() ||
+            label->textFormat() == Qt::RichText || label->text().contains(QLatin1Char('<')) ||
+            label->sizePolicy().horizontalPolicy() == QSizePolicy::Ignored)
+            continue;
+        // A label inside a scroll area that is scrolled out of view is not cut.
+        const int need = label->fontMetrics().horizontalAdvance(label->text());
+        if (need > label->contentsRect().width() + 1)
+            cut << QStringLiteral("label %1 \"%2\": %3 px in %4").arg(label->objectName(), label->text()).arg(need)
+                       .arg(label->contentsRect().width());
+    }
+    for (QCheckBox* box : root->findChildren<QCheckBox*>()) {
+        if (!box->isVisibleTo(root) || box->text().isEmpty())
+            continue;
+        if (box->sizeHint().width() > box->width() + 1)
+            cut << QStringLiteral("check box \"%1\": %2 px in %3").arg(box->text()).arg(box->sizeHint().width())
+                       .arg(box->width());
+    }
+    for (QAbstractSpinBox* spin : root->findChildren<QAbstractSpinBox*>()) {
+        if (!spin->isVisibleTo(root))
+            continue;
+        QLineEdit* edit = spin->findChild<QLineEdit*>();
+        if (!edit)
+            continue;
+        const int need = edit->fontMetrics().horizontalAdvance(edit->text());
+        if (need > edit->contentsRect().width())
+            cut << QStringLiteral("field %1 \"%2\": %3 px in %4").arg(spin->objectName(), edit->text()).arg(need)
+                       .arg(edit->contentsRect().width());
+    }
+    return cut;
+}
+
+} // namespace
+
+class GuiLayoutTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void nothingIsCut_data();
+    void nothingIsCut();
+};
+
+void GuiLayoutTest::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+}
+
+void GuiLayoutTest::nothingIsCut_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<QSize>("size");
+    for (const char* lesson : {"gravity", "smoother-wind", "break-shot", "two-bodies-in-orbit"})
+        for (const QSize size : {QSize(1280, 720), QSize(1024, 768)})
+            QTest::newRow(qPrintable(QStringLiteral("%1 %2x%3").arg(lesson).arg(size.width()).arg(size.height())))
+                << QString::fromLatin1(lesson) << size;
+}
+
+void GuiLayoutTest::nothingIsCut()
+{
+    QFETCH(QString, lesson);
+    QFETCH(QSize, size);
+    QSettings().clear();
+    MainWindow window(lesson);
+    window.resize(size);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE(window.size(), size);
+    window.parameterPanel()->setShowAll(true);
+    // Each tab of the right column in turn: the Parameters, then the rest.
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) {
+        if (dock->objectName() == QStringLiteral("accuracyDock"))
+            continue; // closed at first
+        dock->show();
+        dock->raise();
+        QTest::qWait(10);
+        const QStringList cut = cutTexts(dock);
+        QVERIFY2(cut.isEmpty(), qPrintable(dock->objectName() + QStringLiteral(": ") + cut.join(QStringLiteral("; "))));
+    }
+}
+
+QTEST_MAIN(GuiLayoutTest)
+#include "test_gui_layout.moc"
