@@ -30,6 +30,16 @@ struct ComparePane {
     std::vector<std::pair<std::string, double>> set; ///< key path and value (choices as their index), as claims' "set"
 };
 
+/// A question a lesson asks before it runs ("How high will the second
+/// bounce be?"). The answer is measured by one of the lesson's claims, with
+/// the claim's own rule, so the question and the text can never disagree.
+struct Prediction {
+    QString ask;                ///< the question
+    int claim = 0;              ///< index into the lesson's claims; its measurement answers the question
+    QStringList choices;        ///< optional answers to pick from (empty: the student types a number)
+    std::vector<double> values; ///< each choice's value in the claim's unit; the measured one is the nearest
+};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -43,6 +53,8 @@ struct Lesson {
     /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;
     TeacherNotes teacher;
+    /// Questions asked before the run, each answered by a claim.
+    std::vector<Prediction> predict;
     /// Runs shown beside the live one (at most kMaxComparePanes).
     std::vector<ComparePane> compare;
     static constexpr int kMaxComparePanes = 3;

@@ -672,6 +672,59 @@ void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Cla
     }
 }
 
+/// [{"ask": "How high …?", "claim": 0}, {"ask": "…", "claim": 1, "choices":
+/// [{"label": "…", "value": 0}, …]}]: each question is answered by a claim.
+void parsePredict(Reader& r, const QJsonArray& a, int claims, std::vector<Prediction>& out)
+{
+    const QString base = QStringLiteral("predict");
+    if (a.size() > kMaxListEntries) {
+        r.fail(base, QStringLiteral("%1 entries is more than the limit of %2").arg(a.size()).arg(kMaxListEntries));
+        return;
+    }
+    out.clear();
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        const QString p = join(base, i);
+        if (!a.at(i).isObject()) {
+            r.fail(p, QStringLiteral("expected a question {\"ask\": …, \"claim\": …}, got ") + describe(a.at(i)));
+            continue;
+        }
+        const QJsonObject o = a.at(i).toObject();
+        r.checkKeys(o, p, {"ask", "claim", "choices"});
+        Prediction q;
+        if (r.require(o, p, "ask", QStringLiteral("the question, e.g. \"How high will the ball rise?\"")))
+            r.string(o, p, "ask", q.ask);
+        if (r.require(o, p, "claim", QStringLiteral("the index of the claim whose measurement answers it"))) {
+            if (claims == 0)
+                r.fail(join(p, "claim"), QStringLiteral("the lesson has no claims to answer the question"));
+            else
+                r.integer(o, p, "claim", 0, claims - 1, q.claim);
+        }
+        if (const auto c = r.array(o, p, "choices", QStringLiteral("an array of {\"label\": …, \"value\": …}"))) {
+            const QString cp = join(p, "choices");
+            if (c->size() < 2 || c->size() > 8)
+                r.fail(cp, QStringLiteral("%1 %2; give 2 to 8").arg(c->size()).arg(c->size() == 1 ? "choice" : "choices"));
+            for (qsizetype k = 0; k < c->size(); ++k) {
+                const QString kp = join(cp, k);
+                if (!c->at(k).isObject()) {
+                    r.fail(kp, QStringLiteral("expected {\"label\": …, \"value\": …}, got ") + describe(c->at(k)));
+                    continue;
+                }
+                const QJsonObject choice = c->at(k).toObject();
+                r.checkKeys(choice, kp, {"label", "value"});
+                QString label;
+                double value = 0.0;
+                r.require(choice, kp, "label", QStringLiteral("the answer as the student reads it"));
+                r.require(choice, kp, "value", QStringLiteral("the answer in the claim's unit"));
+                if (r.string(choice, kp, "label", label) && r.number(choice, kp, "value", range::kClaimNumber, value)) {
+                    q.choices << label;
+                    q.values.push_back(value);
+                }
+            }
+        }
+        out.push_back(std::move(q));
+    }
+}
+
 /// [{"label": "mirror", "set": {"world.wall_model": "mirror"}}, …]
 void parseCompare(Reader& r, const QJsonArray& a, std::vector<ComparePane>& out)
 {
@@ -752,7 +805,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "claims", "teacher", "compare"});
+                 "controls", "overlays", "claims", "teacher", "compare", "predict"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -795,6 +848,8 @@ ParseResult parseLesson(const QJsonObject& root)
         parseTeacher(r, *o, lesson.challenges.size(), lesson.teacher);
     if (const auto a = r.array(root, top, "compare", QStringLiteral("an array of panes")))
         parseCompare(r, *a, lesson.compare);
+    if (const auto a = r.array(root, top, "predict", QStringLiteral("an array of questions")))
+        parsePredict(r, *a, static_cast<int>(lesson.claims.size()), lesson.predict);
     return result;
 }
 

@@ -205,6 +205,19 @@ QByteArray claimLine(const sim::Claim& c)
     return inlineObject(f);
 }
 
+/// A question on one line: the question, its claim and its choices.
+QByteArray predictLine(const Prediction& q)
+{
+    Fields f{{"ask", str(q.ask)}, {"claim", num(q.claim)}};
+    if (!q.choices.isEmpty()) {
+        QList<QByteArray> choices;
+        for (qsizetype k = 0; k < q.choices.size() && static_cast<std::size_t>(k) < q.values.size(); ++k)
+            choices << inlineObject({{"label", str(q.choices[k])}, {"value", num(q.values[static_cast<std::size_t>(k)])}});
+        f.push_back({"choices", '[' + choices.join(", ") + ']'});
+    }
+    return inlineObject(f);
+}
+
 /// A compare pane on one line: its label and its settings.
 QByteArray compareLine(const ComparePane& pane)
 {
@@ -354,6 +367,12 @@ QByteArray saveLesson(const Lesson& lesson)
         top.push_back({"claims", blockArray(claims, 2)});
     }
 
+    if (!lesson.predict.empty()) {
+        QList<QByteArray> questions;
+        for (const Prediction& q : lesson.predict)
+            questions << predictLine(q);
+        top.push_back({"predict", blockArray(questions, 2)});
+    }
     if (!lesson.compare.empty()) {
         QList<QByteArray> panes;
         for (const ComparePane& pane : lesson.compare)

@@ -6,11 +6,13 @@
 // Real widgets, offscreen.
 #include "ui/canvas.h"
 #include "ui/main_window.h"
+#include "ui/predict_dock.h"
 #include "ui/simulation_controller.h"
 #include "ui/theme.h"
 #include "ui/world_painter.h"
 
 #include "lessons/lesson_loader.h"
+#include "sim/claims.h"
 #include "sim/names.h"
 
 #include <QDir>
@@ -19,6 +21,10 @@
 #include <QTemporaryDir>
 
 #include <QAction>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
 #include <QPainter>
 #include <QStandardPaths>
 #include <QTest>
@@ -62,6 +68,8 @@ private slots:
     void pictureIsAsLargeAsTheScreenShowsIt();
     void openDialogStartsInTheLessonsFolder();
     void comparePanesRunTheirOwnWallModels();
+    void predictionIsMeasuredByItsClaim();
+    void choiceQuestionNamesTheRightAnswer();
 };
 
 void GuiOverlaysTest::initTestCase()
@@ -344,6 +352,56 @@ void GuiOverlaysTest::comparePanesRunTheirOwnWallModels()
     // The next lesson has no panes.
     QVERIFY(window.openLesson(QStringLiteral("random-acceleration")));
     QVERIFY(window.controller()->comparePanes().empty());
+}
+
+// Lesson 08 asks how high the red ball rises after its first bounce: the
+// student types 200, the lesson runs, and at the claim's time the dock shows
+// the claim's own measurement (bit for bit sim::checkClaim's).
+void GuiOverlaysTest::predictionIsMeasuredByItsClaim()
+{
+    MainWindow window(QStringLiteral("losing-energy"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* dock = window.findChild<PredictDock*>(QStringLiteral("predictDock"));
+    QVERIFY(dock && dock->hasQuestions());
+    auto* number = dock->findChild<QLineEdit*>(QStringLiteral("predictNumber"));
+    QVERIFY(number && number->isEnabled());
+    QTest::keyClicks(number, QStringLiteral("200"));
+    QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("predictRun")), Qt::LeftButton);
+    QVERIFY(window.controller()->isPlaying());
+    QCOMPARE(dock->predicted().value_or(-1), 200.0);
+    QVERIFY(!dock->revealed());
+    window.controller()->pause();
+    const LoadResult lesson = LessonLoader::load(QStringLiteral("losing-energy"));
+    const sim::ClaimResult want = sim::checkClaim(lesson.lesson->scene, lesson.lesson->claims[0]);
+    QCOMPARE(dock->measured().value_or(-1), want.measured);
+    while (window.controller()->world().time() < lesson.lesson->claims[0].at - 1e-9)
+        window.controller()->stepOnce();
+    QVERIFY(dock->revealed());
+    const QString shown = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();
+    QVERIFY2(shown.contains(QStringLiteral("You said <b>200 px</b>")), qPrintable(shown));
+    QVERIFY2(shown.contains(QString::number(want.measured, 'g', 5)), qPrintable(shown));
+    // A reset asks again.
+    window.controller()->reset();
+    QVERIFY(!dock->predicted() && number->isEnabled());
+}
+
+// Lesson 09's question is a choice: clamp with e = 1 lifts the red ball
+// above its 330 px drop, and the dock names "higher" as the answer.
+void GuiOverlaysTest::choiceQuestionNamesTheRightAnswer()
+{
+    MainWindow window(QStringLiteral("bounce-at-the-right-moment"));
+    auto* dock = window.findChild<PredictDock*>(QStringLiteral("predictDock"));
+    QVERIFY(dock && dock->hasQuestions());
+    auto* exactly = dock->findChild<QRadioButton*>(QStringLiteral("predictChoice1"));
+    QVERIFY(exactly);
+    exactly->setChecked(true);
+    dock->lockIn();
+    window.controller()->pause();
+    dock->reveal();
+    const QString shown = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();
+    QVERIFY2(shown.contains(QStringLiteral("the answer is <b>higher than 330 px</b>")), qPrintable(shown));
+    QVERIFY(dock->measured().value_or(0) > 330.0);
 }
 
 QTEST_MAIN(GuiOverlaysTest)

@@ -617,6 +617,14 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("four compare panes")
         << minimal(R"("compare": [{"label": "a", "set": {}}, {"label": "b", "set": {}}, {"label": "c", "set": {}}, {"label": "d", "set": {}}])")
         << "t.json:1:26: compare: 4 panes is more than the limit of 3";
+    QTest::newRow("question without claims")
+        << minimal(R"("predict": [{"ask": "How high?", "claim": 0}])") << "t.json:1:59: predict.0.claim: the lesson has no claims to answer the question";
+    QTest::newRow("question with one choice")
+        << minimal(R"("claims": [{"says": "s", "measure": "speed", "at": 1, "near": 0, "within": 1}], "predict": [{"ask": "How fast?", "claim": 0, "choices": [{"label": "0", "value": 0}]}])")
+        << "t.json:1:151: predict.0.choices: 1 choice; give 2 to 8";
+    QTest::newRow("question about a claim that is not there")
+        << minimal(R"("claims": [{"says": "s", "measure": "speed", "at": 1, "near": 0, "within": 1}], "predict": [{"ask": "How fast?", "claim": 1}])")
+        << "t.json:1:139: predict.0.claim: 1 is outside [0, 0]";
     QTest::newRow("unknown control") << minimal(R"("controls": ["gravity", "gravity.y"])")
                                      << "t.json:1:50: controls.1: \"gravity.y\" is not one of " +
                                             LessonLoader::controlNames().join(", ");

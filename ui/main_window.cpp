@@ -12,6 +12,7 @@
 #include "lessons_dock.h"
 #include "parameter_panel.h"
 #include "plots_dock.h"
+#include "predict_dock.h"
 #include "simulation_controller.h"
 #include "theme.h"
 #include "trajectory_export.h"
@@ -373,8 +374,9 @@ void MainWindow::createDocks()
     m_plotsDock = new PlotsDock(m_controller, this);
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
-    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_codeDock),
-                              static_cast<QDockWidget*>(m_accuracyDock)}) {
+    m_predictDock = new PredictDock(m_controller, this);
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
+                              static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_accuracyDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
     }
@@ -407,6 +409,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
+    m_viewMenu->addAction(m_predictDock->toggleViewAction());
     m_viewMenu->addAction(m_lessonsDock->teacherNotesAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {230, 310}, Qt::Horizontal);
     resizeDocks({m_parametersDock, m_inspectorDock}, {360, 300}, Qt::Vertical);
@@ -590,6 +593,11 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_inspectorDock->setSelectedBall(-1);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     m_codeDock->setLessonControls(lesson.controls);
+    m_predictDock->setLesson(lesson);
+    if (m_predictDock->hasQuestions())
+        m_predictDock->raise(); // the lesson asks first
+    else if (!m_plotsDock->isHidden())
+        m_plotsDock->raise();
     updateStageCaption();
     updateStageReadout();
     m_stageSliders->setLessonControls(lesson.controls);

@@ -34,6 +34,7 @@ class InspectorDock;
 class LessonsDock;
 class ParameterPanel;
 class PlotsDock;
+class PredictDock;
 class SimulationController;
 class TrajectoryExport;
 
@@ -133,6 +134,7 @@ private:
     InspectorDock* m_inspectorDock = nullptr;
     QDockWidget* m_parametersDock = nullptr;
     PlotsDock* m_plotsDock = nullptr;
+    PredictDock* m_predictDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StageBar* m_stageBar = nullptr;
