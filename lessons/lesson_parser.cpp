@@ -793,7 +793,7 @@ const QStringList& overlayNames()
 {
     static const QStringList names{"grid",    "velocity", "acceleration", "readout",   "colliding", "markers",
                                    "vanes",   "trails",   "impact",       "broadphase", "histogram", "totals",
-                                   "forces",  "sources",  "centre-of-mass", "momenta"};
+                                   "forces",  "sources",  "centre-of-mass", "momenta", "apexes"};
     return names;
 }
 

@@ -7,6 +7,7 @@
 #include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/predict_dock.h"
+#include "ui/stopwatch_dock.h"
 #include "ui/simulation_controller.h"
 #include "ui/theme.h"
 #include "ui/world_painter.h"
@@ -22,6 +23,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRadioButton>
@@ -70,6 +72,9 @@ private slots:
     void comparePanesRunTheirOwnWallModels();
     void predictionIsMeasuredByItsClaim();
     void choiceQuestionNamesTheRightAnswer();
+    void stopwatchTimesBounceToBounce();
+    void rulerMeasuresInWorldPixels();
+    void apexMarksAreTheTopsOfTheFlights();
 };
 
 void GuiOverlaysTest::initTestCase()
@@ -402,6 +407,105 @@ void GuiOverlaysTest::choiceQuestionNamesTheRightAnswer()
     const QString shown = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();
     QVERIFY2(shown.contains(QStringLiteral("the answer is <b>higher than 330 px</b>")), qPrintable(shown));
     QVERIFY(dock->measured().value_or(0) > 330.0);
+}
+
+// Lesson 07 with exact walls and e = 1: the stopwatch armed on ball 0's
+// bounce and stopped at the next one reads 2 v0 / g, v0 = √(2 g h), to a step.
+void GuiOverlaysTest::stopwatchTimesBounceToBounce()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    SimulationController* controller = window.controller();
+    controller->pause();
+    sim::WorldSettings s = controller->world().settings();
+    s.walls.model = sim::WallModel::Exact;
+    s.walls.restitution = 1.0;
+    QVERIFY(controller->setSettings(s));
+    auto* watch = window.findChild<StopwatchDock*>(QStringLiteral("stopwatchDock"));
+    QVERIFY(watch);
+    watch->setStartOn(StopwatchDock::StartOn::Event);
+    watch->setStopOn(StopwatchDock::StopOn::Events, 1);
+    watch->setEvent(sim::EventKind::Bounce, 0);
+    watch->show();
+    watch->raise();
+    QTest::mouseClick(watch->findChild<QPushButton*>(QStringLiteral("stopwatchStartStop")), Qt::LeftButton);
+    QCOMPARE(watch->state(), StopwatchDock::State::Armed);
+    const sim::BallState& b = controller->world().balls();
+    const double g = s.gravity.g.y(), h = (s.box.height - b.radius[0]) - b.position(1, 0);
+    const double want = 2.0 * std::sqrt(2.0 * g * h) / g;
+    for (int k = 0; k < 2000 && watch->state() != StopwatchDock::State::Stopped; ++k)
+        controller->stepOnce();
+    QCOMPARE(watch->state(), StopwatchDock::State::Stopped);
+    qInfo("bounce to bounce: %.4f s, 2 v0 / g = %.4f s", watch->elapsed(), want);
+    QVERIFY(std::abs(watch->elapsed() - want) <= s.time.dt);
+    QVERIFY(watch->findChild<QLabel*>(QStringLiteral("stopwatchTime"))->text().startsWith(QString::number(watch->elapsed(), 'f', 3)));
+
+    // Lesson 19's challenge, done as it says: the Moon crossing y = 250,
+    // started on the event and stopped after 2 more, is one orbit: 6.21 s.
+    QVERIFY(window.openLesson(QStringLiteral("two-bodies-in-orbit")));
+    controller->pause();
+    watch->setStartOn(StopwatchDock::StartOn::Event);
+    watch->setStopOn(StopwatchDock::StopOn::Events, 2);
+    watch->setEvent(sim::EventKind::CrossY, 1, 250.0);
+    watch->startOrStop();
+    for (int k = 0; k < 5000 && watch->state() != StopwatchDock::State::Stopped; ++k)
+        controller->stepOnce();
+    QCOMPARE(watch->state(), StopwatchDock::State::Stopped);
+    qInfo("lesson 19, one orbit: %.3f s", watch->elapsed());
+    QVERIFY(std::abs(watch->elapsed() - 6.21) < 0.01 * 6.21);
+}
+
+// Shift + drag: the ruler's length is the world distance between the two
+// points, and measuring leaves every ball as it was.
+void GuiOverlaysTest::rulerMeasuresInWorldPixels()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    Canvas* canvas = window.canvas();
+    const sim::Matrix2X before = window.controller()->world().balls().position;
+    const QPoint a = canvas->worldToWidget(sim::Vec2(100, 350)).toPoint();
+    const QPoint b = canvas->worldToWidget(sim::Vec2(400, 150)).toPoint();
+    QTest::mousePress(canvas, Qt::LeftButton, Qt::ShiftModifier, a);
+    QMouseEvent move(QEvent::MouseMove, QPointF(b), canvas->mapToGlobal(QPointF(b)), Qt::NoButton, Qt::LeftButton,
+                     Qt::ShiftModifier);
+    QCoreApplication::sendEvent(canvas, &move);
+    QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ShiftModifier, b);
+    const Canvas::Ruler& r = canvas->ruler();
+    QVERIFY(r.shown);
+    const double want = (canvas->widgetToWorld(QPointF(b)) - canvas->widgetToWorld(QPointF(a))).norm();
+    QVERIFY(std::abs(r.length() - want) < 1e-9);
+    QVERIFY(std::abs(r.length() - 360.555) < 2.0); // 300 by 200 px, to the widget's pixel
+    QVERIFY(std::abs(r.angle() - 33.69) < 1.0);
+    QVERIFY(window.controller()->world().balls().position == before);
+    QTest::mouseClick(canvas, Qt::LeftButton, Qt::NoModifier, canvas->worldToWidget(sim::Vec2(580, 20)).toPoint());
+    QVERIFY(!canvas->ruler().shown);
+}
+
+// Lesson 08 marks the top of each flight: the red ball's first mark is the
+// highest point it reached after its first bounce, to the step's resolution.
+void GuiOverlaysTest::apexMarksAreTheTopsOfTheFlights()
+{
+    MainWindow window(QStringLiteral("losing-energy"));
+    QVERIFY(window.canvas()->overlays().apexes);
+    SimulationController* controller = window.controller();
+    double lowestY = 1e9;
+    bool bounced = false;
+    double previousVy = 0.0;
+    while (controller->world().time() < 2.0) {
+        controller->stepOnce();
+        const double y = controller->world().balls().position(1, 0), vy = controller->world().balls().velocity(1, 0);
+        if (previousVy > 0.0 && vy < 0.0)
+            bounced = true;
+        if (bounced && window.canvas()->apexes().empty())
+            lowestY = std::min(lowestY, y);
+        previousVy = vy;
+    }
+    QVERIFY(!window.canvas()->apexes().empty());
+    const sim::Vec2 first = window.canvas()->apexes().front();
+    QVERIFY2(std::abs(first.y() - lowestY) < 1.0, qPrintable(QStringLiteral("%1 vs %2").arg(first.y()).arg(lowestY)));
 }
 
 QTEST_MAIN(GuiOverlaysTest)

@@ -608,7 +608,7 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
                                    << R"(t.json:1:54: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")
-                                     << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals, forces, sources, centre-of-mass, momenta)";
+                                     << R"(t.json:1:51: overlays.1: "vectors" is not one of grid, velocity, acceleration, readout, colliding, markers, vanes, trails, impact, broadphase, histogram, totals, forces, sources, centre-of-mass, momenta, apexes)";
     QTest::newRow("compare pane with an unknown key")
         << minimal(R"("compare": [{"label": "m", "set": {"world.nope": 1}}])") << "t.json:1:61: compare.0.set.world.nope: not a parameter key path (docs/parameters.md lists them)";
     QTest::newRow("compare pane with a bad wall model")

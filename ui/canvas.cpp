@@ -8,9 +8,12 @@
 
 #include <QElapsedTimer>
 #include <QMouseEvent>
+#include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace forcelab {
 
@@ -26,6 +29,7 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     m_options.trails = &m_trails;
     m_options.collision = &m_collision;
     m_options.centreOfMassPath = &m_centreOfMassPath;
+    m_options.apexes = &m_apexes;
     m_options.colors = &m_colors;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
@@ -56,6 +60,58 @@ void Canvas::setOverlays(const Overlays& overlays)
     update();
     if (changed)
         emit overlaysChanged();
+}
+
+double Canvas::Ruler::angle() const
+{
+    const sim::Vec2 d = to - from;
+    return std::atan2(-d.y(), d.x()) * 180.0 / std::numbers::pi;
+}
+
+void Canvas::recordApexes()
+{
+    // The top of a flight: vy turns from up (−) to down (+) between frames.
+    const sim::BallState& balls = m_controller->world().balls();
+    const int n = std::min(balls.size(), kMaxApexBalls);
+    if (m_apexVy.size() == n) {
+        for (int i = 0; i < n; ++i)
+            if (m_apexVy[i] < 0.0 && balls.velocity(1, i) >= 0.0)
+                m_apexes.push_back(balls.position.col(i));
+    }
+    m_apexVy = balls.velocity.row(1).head(n).transpose();
+    // Bounded: past 2,000 marks the older half goes.
+    if (m_apexes.size() > 2000)
+        m_apexes.erase(m_apexes.begin(), m_apexes.begin() + 1000);
+}
+
+void Canvas::paintRuler(QPainter& p) const
+{
+    const QPointF a = worldToWidget(m_ruler.from), b = worldToWidget(m_ruler.to);
+    const double k = m_options.lineScale;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 2.0 * k, Qt::SolidLine, Qt::FlatCap));
+    p.drawLine(a, b);
+    // End ticks at right angles to the ruler.
+    const QLineF line(a, b);
+    if (line.length() > 0.0) {
+        const QPointF n = QPointF(-line.dy(), line.dx()) / line.length() * (7.0 * k);
+        p.drawLine(a - n, a + n);
+        p.drawLine(b - n, b + n);
+    }
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
+    font.setBold(true);
+    p.setFont(font);
+    const QString text = tr("%1 px at %2°").arg(m_ruler.length(), 0, 'f', 1).arg(m_ruler.angle(), 0, 'f', 0);
+    const QFontMetricsF fm(font);
+    QRectF box(QPointF(0, 0), QSizeF(fm.horizontalAdvance(text) + 12 * k, fm.height() + 6 * k));
+    box.moveCenter(line.center() + QPointF(0, -box.height()));
+    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(box, 4, 4);
+    p.drawText(box, Qt::AlignCenter, text);
+    p.restore();
 }
 
 void Canvas::recordCentreOfMass()
@@ -338,6 +394,8 @@ void Canvas::paintEvent(QPaintEvent*)
     QPainter painter(this);
     m_options.positions = m_controller->interpolatedPositions();
     paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
+    if (m_ruler.shown)
+        paintRuler(painter);
     if (showsStartHint())
         paintStartHint(painter);
     ++m_frames;
@@ -346,6 +404,11 @@ void Canvas::paintEvent(QPaintEvent*)
 
 void Canvas::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_measuring) {
+        m_ruler.to = widgetToWorld(event->position());
+        update();
+        return;
+    }
     if (m_press.ball >= 0) { // pressed on a ball: taken once the pointer has moved far enough
         if ((event->buttons() & Qt::LeftButton) &&
             (event->position() - m_press.at).manhattanLength() >= QApplication::startDragDistance())
@@ -361,6 +424,18 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
 
 void Canvas::mousePressEvent(QMouseEvent* event)
 {
+    if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
+        // The ruler: measuring never touches the physics.
+        m_ruler.shown = true;
+        m_ruler.from = m_ruler.to = widgetToWorld(event->position());
+        m_measuring = true;
+        update();
+        return;
+    }
+    if (m_ruler.shown) {
+        m_ruler.shown = false; // a plain click puts the ruler away
+        update();
+    }
     if (event->button() == Qt::LeftButton) {
         const int ball = ballAt(event->position());
         setSelectedBall(ball);
@@ -377,6 +452,12 @@ void Canvas::mousePressEvent(QMouseEvent* event)
 
 void Canvas::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_measuring && event->button() == Qt::LeftButton) {
+        m_ruler.to = widgetToWorld(event->position());
+        m_measuring = false;
+        update();
+        return;
+    }
     if (event->button() == Qt::LeftButton && m_press.ball >= 0) { // a click: it selected, nothing else
         m_press = Press();
         sendPointer(event->position(), true, false);
@@ -473,6 +554,8 @@ void Canvas::onSceneChanged()
     m_trails.clear();
     m_paneTrails.clear();
     m_centreOfMassPath.clear();
+    m_apexes.clear();
+    m_apexVy.resize(0);
     resetCollision();
     if (m_options.selected >= m_controller->world().balls().size())
         setSelectedBall(-1);
@@ -496,6 +579,8 @@ void Canvas::onStepped()
         m_trails.record(world.balls(), world.time());
     if (m_options.overlays.centreOfMass)
         recordCentreOfMass();
+    if (m_options.overlays.apexes)
+        recordApexes();
     if (m_options.overlays.trails) {
         const auto& panes = m_controller->comparePanes();
         m_paneTrails.resize(panes.size());

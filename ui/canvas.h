@@ -100,6 +100,21 @@ public:
     /// The ball under a widget point (the topmost one drawn), or -1.
     int ballAt(const QPointF& widget) const;
 
+    /// The ruler: Shift + drag on the canvas measures a distance in the
+    /// world's px (and its angle); a plain click clears it.
+    struct Ruler {
+        bool shown = false;
+        sim::Vec2 from{0, 0}, to{0, 0}; ///< world px
+        double length() const { return (to - from).norm(); }
+        /// Degrees from the +x axis, counted anticlockwise as seen (y grows downwards).
+        double angle() const;
+    };
+    const Ruler& ruler() const { return m_ruler; }
+    /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
+    const std::vector<sim::Vec2>& apexes() const { return m_apexes; }
+    /// Balls whose tops are marked (the first ones of the world).
+    static constexpr int kMaxApexBalls = 50;
+
     /// Frames painted so far and the cost of the last one (for the status bar).
     qint64 framesPainted() const { return m_frames; }
     double lastPaintMs() const { return m_lastPaintMs; }
@@ -159,6 +174,12 @@ private:
     PaintOptions m_options;
     TrailRecorder m_trails;
     std::vector<sim::Vec2> m_centreOfMassPath;
+    std::vector<sim::Vec2> m_apexes;
+    sim::VectorX m_apexVy; // each watched ball's vy at the last frame (px/s)
+    Ruler m_ruler;
+    bool m_measuring = false;
+    void recordApexes();
+    void paintRuler(QPainter& p) const;
     CanvasColors m_colors;
     std::vector<WorldPainter> m_panePainters; // one per compare pane (own sprite caches and path layers)
     std::vector<TrailRecorder> m_paneTrails;  // the panes' paths, when the live run shows paths

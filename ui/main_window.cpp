@@ -13,6 +13,7 @@
 #include "parameter_panel.h"
 #include "plots_dock.h"
 #include "predict_dock.h"
+#include "stopwatch_dock.h"
 #include "simulation_controller.h"
 #include "theme.h"
 #include "trajectory_export.h"
@@ -375,8 +376,11 @@ void MainWindow::createDocks()
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
     m_predictDock = new PredictDock(m_controller, this);
+    m_stopwatchDock = new StopwatchDock(m_controller, this);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_stopwatchDock, &StopwatchDock::setBall);
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
-                              static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_accuracyDock)}) {
+                              static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_codeDock),
+                              static_cast<QDockWidget*>(m_accuracyDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
     }
@@ -410,6 +414,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
+    m_viewMenu->addAction(m_stopwatchDock->toggleViewAction());
     m_viewMenu->addAction(m_lessonsDock->teacherNotesAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {230, 310}, Qt::Horizontal);
     resizeDocks({m_parametersDock, m_inspectorDock}, {360, 300}, Qt::Vertical);

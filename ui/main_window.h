@@ -35,6 +35,7 @@ class LessonsDock;
 class ParameterPanel;
 class PlotsDock;
 class PredictDock;
+class StopwatchDock;
 class SimulationController;
 class TrajectoryExport;
 
@@ -135,6 +136,7 @@ private:
     QDockWidget* m_parametersDock = nullptr;
     PlotsDock* m_plotsDock = nullptr;
     PredictDock* m_predictDock = nullptr;
+    StopwatchDock* m_stopwatchDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StageBar* m_stageBar = nullptr;

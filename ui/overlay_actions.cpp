@@ -23,6 +23,7 @@ OverlayActions::OverlayActions(Canvas* canvas, QWidget* parent)
     add(QStringLiteral("showTrails"), tr("&Paths"), &Overlays::trails);
     add(QStringLiteral("showCentreOfMass"), tr("&Centre of mass and its path"), &Overlays::centreOfMass);
     add(QStringLiteral("showMomenta"), tr("M&omenta diagram (p = m v, tip to tail)"), &Overlays::momenta);
+    add(QStringLiteral("showApexes"), tr("Tops of the flights, with their &heights"), &Overlays::apexes);
     add(QStringLiteral("showReadout"), tr("&Readout of the selected ball"), &Overlays::readout);
     add(QStringLiteral("showTotals"), tr("&Totals: energy and momentum"), &Overlays::totals);
     add(QStringLiteral("showColliding"), tr("&Mark touching balls"), &Overlays::colliding);

@@ -52,6 +52,7 @@ Overlays Overlays::fromNames(const QStringList& names)
     o.forceSources = names.contains(QStringLiteral("sources"));
     o.centreOfMass = names.contains(QStringLiteral("centre-of-mass"));
     o.momenta = names.contains(QStringLiteral("momenta"));
+    o.apexes = names.contains(QStringLiteral("apexes"));
     o.vanes = names.contains(QStringLiteral("vanes"));
     o.impact = names.contains(QStringLiteral("impact"));
     o.broadphase = names.contains(QStringLiteral("broadphase"));
@@ -301,6 +302,8 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
         paintTrails(p, v, world, options, dpr);
     if (options.overlays.centreOfMass)
         paintCentreOfMass(p, v, world, options);
+    if (options.overlays.apexes && options.apexes)
+        paintApexes(p, v, world, options);
     if (options.overlays.markers)
         paintMarkers(p, v, world, options);
     // Collision responses mark balls; "flag" exists to show exactly that.
@@ -984,6 +987,34 @@ void WorldPainter::paintCentreOfMass(QPainter& p, const ViewTransform& view, con
     p.setPen(QPen(QColor::fromRgb(canvas_colors::kCentreOfMass), 1.5 * k));
     p.setBrush(Qt::NoBrush);
     p.drawEllipse(disc);
+    p.restore();
+}
+
+void WorldPainter::paintApexes(QPainter& p, const ViewTransform& view, const sim::World& world,
+                               const PaintOptions& options)
+{
+    // A small triangle pointing down at each top of a flight, with its
+    // height above the floor (the box's bottom): the numbers a student
+    // compares bounce by bounce.
+    const double k = options.lineScale;
+    const double floor = world.settings().box.height;
+    p.save();
+    p.setClipRect(view.boxRect(), Qt::IntersectClip);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(11 * k)));
+    p.setFont(font);
+    const QColor mark(0x6a, 0x1b, 0x9a);
+    for (const sim::Vec2& x : *options.apexes) {
+        const QPointF c = view.toWidget(x);
+        const double s = 5.0 * k;
+        QPolygonF triangle{c + QPointF(-s, -2 * s), c + QPointF(s, -2 * s), c + QPointF(0, -s)};
+        p.setPen(Qt::NoPen);
+        p.setBrush(mark);
+        p.drawPolygon(triangle);
+        p.setPen(mark);
+        p.drawText(c + QPointF(s + 2 * k, -s), QString::number(floor - x.y(), 'f', 1));
+    }
     p.restore();
 }
 

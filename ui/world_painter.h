@@ -34,6 +34,7 @@ struct Overlays {
     bool trails = false;       ///< [trails] the path behind each ball (or the selected one)
     bool centreOfMass = false; ///< [centre-of-mass] the centre of mass of all balls and its path
     bool momenta = false;      ///< [momenta] an inset beside the box: each ball's momentum tip to tail, and their sum
+    bool apexes = false;       ///< [apexes] a mark and the height at the top of each flight
     bool vanes = false;        ///< [vanes] one wind vane per wind model (the acting one and wind.compare)
     bool impact = false;       ///< [impact] the selected ball's last collision: line of impact, tangent, velocities before and after
     bool broadphase = false;   ///< [broadphase] the grid cells or the sweep's x-intervals of the collision detection
@@ -79,6 +80,7 @@ struct PaintOptions {
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
     const CanvasColors* colors = nullptr;     ///< the theme's colours (ui/theme.h); null: the plain ones; not owned
+    const std::vector<sim::Vec2>* apexes = nullptr; ///< world px, the tops of the flights; drawn when overlays.apexes; not owned
     const std::vector<sim::Vec2>* centreOfMassPath = nullptr; ///< world px, oldest first; drawn when overlays.centreOfMass; not owned
     /// px, where to draw the balls instead of their positions (2×N, the
     /// slow-motion interpolation between two steps); not owned
@@ -211,6 +213,7 @@ private:
     void paintCentreOfMass(QPainter& p, const ViewTransform& view, const sim::World& world,
                            const PaintOptions& options);
     void paintMomenta(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
+    void paintApexes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
     void paintSourceLegend(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
     void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
     void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
