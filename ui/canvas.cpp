@@ -76,7 +76,7 @@ void Canvas::recordApexes()
     if (m_apexVy.size() == n) {
         for (int i = 0; i < n; ++i)
             if (m_apexVy[i] < 0.0 && balls.velocity(1, i) >= 0.0)
-                m_apexes.push_back(balls.position.col(i));
+                m_apexes.push_back({balls.position.col(i), balls.radius[i]});
     }
     m_apexVy = balls.velocity.row(1).head(n).transpose();
     // Bounded: past 2,000 marks the older half goes.

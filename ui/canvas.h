@@ -111,7 +111,7 @@ public:
     };
     const Ruler& ruler() const { return m_ruler; }
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
-    const std::vector<sim::Vec2>& apexes() const { return m_apexes; }
+    const std::vector<ApexMark>& apexes() const { return m_apexes; }
     /// Balls whose tops are marked (the first ones of the world).
     static constexpr int kMaxApexBalls = 50;
 
@@ -174,7 +174,7 @@ private:
     PaintOptions m_options;
     TrailRecorder m_trails;
     std::vector<sim::Vec2> m_centreOfMassPath;
-    std::vector<sim::Vec2> m_apexes;
+    std::vector<ApexMark> m_apexes;
     sim::VectorX m_apexVy; // each watched ball's vy at the last frame (px/s)
     Ruler m_ruler;
     bool m_measuring = false;

@@ -993,9 +993,10 @@ void WorldPainter::paintCentreOfMass(QPainter& p, const ViewTransform& view, con
 void WorldPainter::paintApexes(QPainter& p, const ViewTransform& view, const sim::World& world,
                                const PaintOptions& options)
 {
-    // A small triangle pointing down at each top of a flight, with its
-    // height above the floor (the box's bottom): the numbers a student
-    // compares bounce by bounce.
+    // A small triangle pointing down at the top of each flight, with the
+    // height the ball rose to: its lowest point above the floor (the height
+    // of its centre above where it rests), the numbers the lessons compare
+    // bounce by bounce.
     const double k = options.lineScale;
     const double floor = world.settings().box.height;
     p.save();
@@ -1005,15 +1006,15 @@ void WorldPainter::paintApexes(QPainter& p, const ViewTransform& view, const sim
     font.setPixelSize(static_cast<int>(std::lround(11 * k)));
     p.setFont(font);
     const QColor mark(0x6a, 0x1b, 0x9a);
-    for (const sim::Vec2& x : *options.apexes) {
-        const QPointF c = view.toWidget(x);
+    for (const ApexMark& a : *options.apexes) {
+        const QPointF c = view.toWidget(sim::Vec2(a.centre.x(), a.centre.y() - a.radius));
         const double s = 5.0 * k;
         QPolygonF triangle{c + QPointF(-s, -2 * s), c + QPointF(s, -2 * s), c + QPointF(0, -s)};
         p.setPen(Qt::NoPen);
         p.setBrush(mark);
         p.drawPolygon(triangle);
         p.setPen(mark);
-        p.drawText(c + QPointF(s + 2 * k, -s), QString::number(floor - x.y(), 'f', 1));
+        p.drawText(c + QPointF(s + 2 * k, -s), QString::number(floor - a.radius - a.centre.y(), 'f', 1));
     }
     p.restore();
 }

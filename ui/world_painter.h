@@ -64,6 +64,12 @@ struct CollisionView {
 class TrailRecorder;
 struct CanvasColors;
 
+/// The top of one flight, for the "apexes" overlay.
+struct ApexMark {
+    sim::Vec2 centre{0, 0}; ///< px, the ball's centre at the top
+    double radius = 0.0;    ///< px
+};
+
 struct PaintOptions {
     Overlays overlays;
     int selected = -1;              ///< the selected ball, -1 for none (the readout then shows ball 0)
@@ -80,7 +86,7 @@ struct PaintOptions {
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
     const CanvasColors* colors = nullptr;     ///< the theme's colours (ui/theme.h); null: the plain ones; not owned
-    const std::vector<sim::Vec2>* apexes = nullptr; ///< world px, the tops of the flights; drawn when overlays.apexes; not owned
+    const std::vector<ApexMark>* apexes = nullptr; ///< the tops of the flights; drawn when overlays.apexes; not owned
     const std::vector<sim::Vec2>* centreOfMassPath = nullptr; ///< world px, oldest first; drawn when overlays.centreOfMass; not owned
     /// px, where to draw the balls instead of their positions (2×N, the
     /// slow-motion interpolation between two steps); not owned
