@@ -1,6 +1,7 @@
 #include "collision_bench.h"
 
 #include "names.h"
+#include "peer_scene.h"
 #include "world.h"
 
 #include <algorithm>
@@ -44,46 +45,6 @@ double median(std::vector<double> v)
 }
 
 
-
-// N balls on a jittered grid filling `fill` of a square box, radii uniform in
-// [rMin, rMax], random velocities up to `speed`, gravity on, 2d-impulse with
-// restitution e for balls and walls, one sub-step of 1/60 s.
-Scene boxScene(int n, double rMin, double rMax, double speed, double e, Detection detection, std::uint64_t seed)
-{
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<double> radius(static_cast<std::size_t>(n));
-    double area = 0.0;
-    for (double& r : radius) {
-        r = rMin + (rMax - rMin) * u(rng);
-        area += std::numbers::pi * r * r;
-    }
-    const double side = std::sqrt(area / 0.3);
-    const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
-    const double cell = side / cols;
-    Scene s;
-    s.settings.box = BoxSettings{side, side};
-    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, e};
-    s.settings.gravity.enabled = true;
-    s.settings.gravity.g = Vec2(0.0, 980.0);
-    s.settings.collisions.detection = detection;
-    s.settings.collisions.response = Response::Impulse2D;
-    s.settings.collisions.restitution = e;
-    s.settings.time.integrator = IntegratorKind::SemiImplicitEuler;
-    s.settings.time.dt = 1.0 / 60.0;
-    s.settings.time.substeps = 1;
-    s.balls.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        Ball& b = s.balls[static_cast<std::size_t>(i)];
-        b.radius = radius[static_cast<std::size_t>(i)];
-        const double slack = std::max(0.0, 0.5 * cell - b.radius);
-        b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
-                          (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
-        const double angle = 2.0 * std::numbers::pi * u(rng);
-        b.velocity = speed * u(rng) * Vec2(std::cos(angle), std::sin(angle));
-    }
-    return s;
-}
 
 struct Row {
     std::string table;

@@ -262,28 +262,20 @@ TEST_CASE("TestCollisionWorld::columnStandsUnderGravity")
             const double top = b.position.row(1).minCoeff() - r, bottom = b.position.row(1).maxCoeff() + r;
             const double columnHeight = bottom - top;
             forcelab::test::report("column height %.4f px (20 diameters = 400), deepest overlap %.3g r", columnHeight, worstOverlap);
-            // Known gap (see docs/performance.md, "Piles"). Speculative contacts hold
-            // a column that stands at touching distance, and with 4 sub-steps no pair
-            // overlaps by more than 1% of a radius. With 1 sub-step the first impacts
-            // of the 1 px drops are still too hard for one pass of contacts per
-            // sub-step.
+            // Speculative contacts hold a column that stands at touching distance,
+            // and with 4 sub-steps no pair overlaps by more than 1% of a radius.
             VERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, Text(Text::number(columnHeight)).c_str());
-            // 1 sub-step: the first hard impacts overlap by 26% r (clamp) to 89% r
-            // (exact), a known gap; the day it holds, this check says so.
-            if (substeps == 1)
-                CHECK_MESSAGE(!(worstOverlap <= 0.01), "known gap closed at 1 sub-step: check for it as for the others");
-            else
-                VERIFY2(worstOverlap <= 0.01, Text(Text::number(worstOverlap)).c_str());
+            // 1 sub-step: the first hard impacts of the 1 px drops overlap by up to
+            // 15% r (clamp 13%, exact 15%; before the rows took their line of impact
+            // and gap from the start of the sub-step, 26% to 89%), still short of
+            // the 1% that 4 sub-steps hold.
+            VERIFY2(worstOverlap <= (substeps == 1 ? 0.2 : 0.01), Text(Text::number(worstOverlap)).c_str());
             // Still one column: no ball moved sideways, and they are still in order.
             VERIFY((b.position.row(0).array() == 100.0).all());
             bool ordered = true;
             for (int i = 0; i + 1 < 20; ++i)
                 ordered = ordered && b.position(1, i + 1) < b.position(1, i);
-            // 1 sub-step: the first hard impacts push two balls through each other (known gap).
-            if (substeps == 1)
-                CHECK_MESSAGE(!ordered, "known gap closed at 1 sub-step: check for it as for the others");
-            else
-                VERIFY(ordered);
+            VERIFY(ordered);
             VERIFY(allInside(w));
         }
     }
@@ -442,8 +434,8 @@ TEST_CASE("TestCollisionWorld::columnSinksWithOnePass")
 // h, and pushes overlapping pairs apart in proportion to inverse mass
 // (m_a·Δx_a = −m_b·Δx_b). With the walls off, a collision stage therefore
 // changes neither the total momentum nor the centre of mass, and a ball
-// farther than 1.2 (r_a + r_b) from every other (beyond any speculative
-// margin, at most 10% of each radius) keeps its velocity and position to the
+// farther from every other than their radii and speculative margins
+// (|v|·h + |g|·h² each, at most `speculative` radii) keeps its velocity and position to the
 // bit. The stage runs on its own (no integration), ten times on the same
 // balls, so each solve starts from the last one's state and warm start. The
 // masses differ (∝ r³, radii 3–6 px), so a ball's result written back to
@@ -455,12 +447,20 @@ TEST_CASE("TestCollisionWorld::restingSolverKeepsMomentumAndCentre")
     const World w(s);
     BallState b = w.balls();
     const int n = b.size();
+    // How far a ball's speculative contacts reach: |v|·h + |g|·h², at most
+    // `speculative` of its radius (collision_system.cpp).
+    const double cap = CollisionSystem().solverSettings().speculative;
+    auto reach = [&](int i) {
+        const double h = 1.0 / 60.0;
+        return std::min(b.velocity.col(i).norm() * h + 980.0 * h * h, cap * b.radius[i]);
+    };
     auto isolatedBalls = [&] {
         std::vector<int> out;
         for (int i = 0; i < n; ++i) {
             bool alone = true;
             for (int j = 0; j < n && alone; ++j)
-                alone = j == i || (b.position.col(i) - b.position.col(j)).norm() > 1.2 * (b.radius[i] + b.radius[j]);
+                alone = j == i || (b.position.col(i) - b.position.col(j)).norm() >
+                                      1.01 * (b.radius[i] + b.radius[j] + reach(i) + reach(j));
             if (alone)
                 out.push_back(i);
         }

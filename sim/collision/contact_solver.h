@@ -55,7 +55,7 @@ struct ContactSolverSettings {
     double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
     double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
     int positionPasses = 2;       ///< 1, passes of positional correction per sub-step
-    double speculative = 0.1;     ///< 1, most a ball's radius grows by to find speculative contacts (0: none)
+    double speculative = 4.0;     ///< 1, most a ball's radius grows by to find speculative contacts (0: none)
 };
 
 } // namespace forcelab::sim

@@ -141,14 +141,22 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
-        const double len = std::sqrt(dx * dx + dy * dy);
+        // The line of impact and the gap at the start of the sub-step: the
+        // integrator moved each ball by v·h before this stage, so the centres
+        // were d − (v_b − v_a)·h apart. A fast ball may already sit deep in
+        // (or beyond) the other at the end, where the direction means little.
+        const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
+        const double sx = dx - dvx * c.h, sy = dy - dvy * c.h;
+        const double len = std::sqrt(sx * sx + sy * sy);
         Vec2 nrm;
         if (len > 1e-12 * s && std::isfinite(len))
-            nrm = Vec2(dx / len, dy / len);
+            nrm = Vec2(sx / len, sy / len);
         else
             nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
-        const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
-        const double gapStart = (len - s) - vn0 * c.h;
+        const double vn0 = dvx * nrm.x() + dvy * nrm.y();
+        const double gapStart = len - s;
+        // A gap may close within the sub-step and no more: its normal speed
+        // may not drop below −gap/h (0 for a pair that overlapped already).
         const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
         while (old < oldCount && (oldBalls[old].a < ct.a || (oldBalls[old].a == ct.a && oldBalls[old].b < ct.b)))
             ++old;
