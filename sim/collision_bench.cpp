@@ -277,12 +277,11 @@ std::vector<Row> runPeerTable(const CollisionBenchOptions& o, std::ostream& out)
     out << "\nPeer scene: N equal circles (r = 5 px) filling 30% of a square box on a jittered grid, at rest,\n"
         << "gravity 980 px/s^2, restitution 0.9 (balls and walls), " << o.peerSteps
         << " steps at 60 Hz, 1 sub-step, one thread.\n"
-        << "Mean thread CPU ms per step over the whole run (Box2D v3.2 and matter.js 0.20 from the issue, same\n"
-        << "machine). sweep 1-pass: collisions.resting off, one pass of 2d-impulse per step (piles sink).\n\n";
+        << "Mean thread CPU ms per step over the whole run. sweep 1-pass: collisions.resting off, one pass of\n"
+        << "2d-impulse per step (piles sink). Other engines on the same scene: forcelab-peer-box2d (built when\n"
+        << "libbox2d-dev is installed).\n\n";
     out << std::left << std::setw(8) << "N" << std::right << std::setw(12) << "grid" << std::setw(12) << "sweep"
-        << std::setw(14) << "sweep 1-pass" << std::setw(12) << "Box2D v3.2" << std::setw(12) << "matter.js" << "\n";
-    const std::pair<int, std::pair<double, double>> peers[] = {
-        {1000, {0.52, 10.0}}, {5000, {3.1, 100.0}}, {10000, {7.4, std::nan("")}}, {20000, {20.7, std::nan("")}}};
+        << std::setw(14) << "sweep 1-pass" << "\n";
     for (int n : o.peerSizes) {
         // grid and sweep with resting contacts, then sweep with one pass.
         struct Run {
@@ -322,14 +321,8 @@ std::vector<Row> runPeerTable(const CollisionBenchOptions& o, std::ostream& out)
                 ss << std::fixed << std::setprecision(v < 10 ? 2 : 1) << v;
             return ss.str();
         };
-        double b2d = std::nan(""), mjs = std::nan("");
-        for (const auto& p : peers)
-            if (p.first == n) {
-                b2d = p.second.first;
-                mjs = p.second.second;
-            }
         out << std::left << std::setw(8) << n << std::right << std::setw(12) << fmt(ms[0]) << std::setw(12)
-            << fmt(ms[1]) << std::setw(14) << fmt(ms[2]) << std::setw(12) << fmt(b2d) << std::setw(12) << fmt(mjs)
+            << fmt(ms[1]) << std::setw(14) << fmt(ms[2])
             << "\n"
             << std::flush;
     }

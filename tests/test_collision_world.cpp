@@ -265,11 +265,11 @@ TEST_CASE("TestCollisionWorld::columnStandsUnderGravity")
             // Speculative contacts hold a column that stands at touching distance,
             // and with 4 sub-steps no pair overlaps by more than 1% of a radius.
             VERIFY2(std::abs(columnHeight - 400.0) <= 0.02 * 400.0, Text(Text::number(columnHeight)).c_str());
-            // 1 sub-step: the first hard impacts of the 1 px drops overlap by up to
-            // 15% r (clamp 13%, exact 15%; before the rows took their line of impact
-            // and gap from the start of the sub-step, 26% to 89%), still short of
-            // the 1% that 4 sub-steps hold.
-            VERIFY2(worstOverlap <= (substeps == 1 ? 0.2 : 0.01), Text(Text::number(worstOverlap)).c_str());
+            // 1 sub-step: the first impacts of the 1 px drops overlap by about 2% r
+            // (clamp 1.8%, exact 2.2%; 26% to 89% before the solver took back the
+            // wall stage's bounces and took lines of impact from the start of the
+            // sub-step), where 4 sub-steps hold 1%.
+            VERIFY2(worstOverlap <= (substeps == 1 ? 0.03 : 0.01), Text(Text::number(worstOverlap)).c_str());
             // Still one column: no ball moved sideways, and they are still in order.
             VERIFY((b.position.row(0).array() == 100.0).all());
             bool ordered = true;
@@ -363,14 +363,10 @@ TEST_CASE("TestCollisionWorld::pileSettlesUnderGravity")
                   ke / pe0, potential(w) / pe0, perBall, overlap);
             VERIFY2(ke <= 1e-3 * pe0, Text(Text::number(ke / pe0)).c_str());
             VERIFY2(perBall <= 4.0 && perBall >= 1.5, Text(Text::number(perBall)).c_str());
-            // Known gap at 1 sub-step (docs/performance.md, "Piles"): balls land at
-            // up to 3 radii per step, and the pairs that meet that hard stay deeply
-            // overlapped under the weight above them. 8 sub-steps meet the target.
-            // 1 sub-step: a few pairs that met hard stay deeply overlapped (~1.2 r), a known gap.
-            if (substeps == 1)
-                CHECK_MESSAGE(!(overlap <= 0.02), "known gap closed at 1 sub-step: check for it as for the others");
-            else
-                VERIFY2(overlap <= 0.02, Text(Text::number(overlap)).c_str());
+            // 1 sub-step: balls land at up to 3 radii per step; the deepest pair
+            // ends at 0.30 r (1.2 r before speculative contacts reached as far as a
+            // ball moves), where 8 sub-steps hold 2%.
+            VERIFY2(overlap <= (substeps == 1 ? 0.35 : 0.02), Text(Text::number(overlap)).c_str());
             VERIFY(allInside(w));
         }
     }

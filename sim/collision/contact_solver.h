@@ -49,9 +49,9 @@
 namespace forcelab::sim {
 
 struct ContactSolverSettings {
-    int velocityPasses = 8;       ///< 1, most velocity passes per sub-step (the first bounces, the others relax)
+    int velocityPasses = 30;      ///< 1, most velocity passes per sub-step (the first bounces, the others relax)
     double restingFactor = 2.0;   ///< 1, c in v_rest = c·|g|·h; approaches slower than v_rest do not bounce
-    double relaxTolerance = 0.01; ///< 1, stop the passes when no pair approaches faster than this × v_rest
+    double relaxTolerance = 0.001; ///< 1, stop the passes when no pair approaches faster than this × v_rest
     double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
     double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
     int positionPasses = 2;       ///< 1, passes of positional correction per sub-step

@@ -42,9 +42,17 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
 {
     const bool profiling = clock.on();
     prepare(balls.size());
+    takeBackWallBounces(balls, c);
     buildPairRows(balls, c, pairs, touching);
     clock.lap(profile.build);
     buildWallRows(balls, c);
+    for (const auto& [ball, axis] : m_takenBack) {
+        // The integrator's step ended on the wall: the position stage moves
+        // such a ball by its new velocity alone, from the wall.
+        const int k = m_bodyOf[static_cast<std::size_t>(ball)];
+        if (k >= 0)
+            m_bodyVelocity0[2 * static_cast<std::size_t>(k) + static_cast<std::size_t>(axis)] = 0.0;
+    }
     clock.lap(profile.wallScan);
     warmStart();
     relax(c, profile, profiling);
@@ -96,6 +104,40 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
     m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)],
                            balls.inverseMass[static_cast<Eigen::Index>(i)]};
     return k;
+}
+
+// Stage 0. A ball the wall stage has just put on an enabled wall (its gap
+// is exactly 0, as clamp leaves it) and sent away at u met the wall at u/e_w.
+// That bounce is taken back, so the rows see the ball as it came: its speed
+// into the wall, and a start position one sub-step of that speed away. The
+// solver makes the bounce again with the other contacts (relax stops the
+// ball, the restitution stage sends it away at e_w times its speed if that
+// was faster than v_rest). A ball under a pile then no longer hops at
+// e_w·g·h every step and kicks the pile above it.
+void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& c)
+{
+    m_takenBack.clear();
+    const double ew = c.walls.restitution;
+    if (!(ew > 0.0))
+        return;
+    const bool on[2][2] = {{c.walls.left, c.walls.right}, {c.walls.top, c.walls.bottom}};
+    const double size[2] = {c.box.width, c.box.height};
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    for (int i = 0; i < balls.size(); ++i) {
+        const double r = radius[i];
+        for (int k = 0; k < 2; ++k) {
+            if (!(2.0 * r <= size[k]))
+                continue;
+            double& vk = v[2 * i + k];
+            const double p = x[2 * i + k];
+            if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
+                vk = -vk / ew;
+                m_takenBack.push_back({i, k});
+            }
+        }
+    }
 }
 
 // Stage 1. One row per pair, in contact order ((a, b), like last sub-step's

@@ -25,6 +25,7 @@
 #include "sub_step_context.h"
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace forcelab::sim {
@@ -83,6 +84,7 @@ private:
 
     void prepare(int n);
     int bodyFor(std::size_t i, const BallState& balls);
+    void takeBackWallBounces(BallState& balls, const SubStepContext& c);
     void buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                        std::vector<Contact>* touching);
     void buildWallRows(const BallState& balls, const SubStepContext& c);
@@ -108,6 +110,7 @@ private:
     std::vector<BodyPosition> m_bodyPositions;
     std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
     std::vector<double> m_bodyVelocity0;
+    std::vector<std::pair<int, int>> m_takenBack; // (ball, axis) whose wall bounce stage 0 took back
     int m_bodyCount = 0;
     int m_warmCount = -1;
     int m_lastPasses = 0;
