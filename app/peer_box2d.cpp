@@ -57,12 +57,16 @@ void runBox2D(const Scene& scene)
     b2BodyDef wallDef;
     b2Body* walls = world.CreateBody(&wallDef);
     const float w = static_cast<float>(side * k), h = static_cast<float>(height * k);
-    const b2Vec2 corners[4] = {{0.0f, 0.0f}, {w, 0.0f}, {w, h}, {0.0f, h}};
+    // Four thick walls just outside the box (thin edges let balls through at
+    // the first impacts).
+    const float t = 1.0f;
+    const b2Vec2 halves[4] = {{t, h / 2 + 2 * t}, {t, h / 2 + 2 * t}, {w / 2 + 2 * t, t}, {w / 2 + 2 * t, t}};
+    const b2Vec2 centres[4] = {{-t, h / 2}, {w + t, h / 2}, {w / 2, -t}, {w / 2, h + t}};
     for (int i = 0; i < 4; ++i) {
-        b2EdgeShape edge;
-        edge.SetTwoSided(corners[i], corners[(i + 1) % 4]);
+        b2PolygonShape box;
+        box.SetAsBox(halves[i].x, halves[i].y, centres[i], 0.0f);
         b2FixtureDef f;
-        f.shape = &edge;
+        f.shape = &box;
         f.friction = 0.0f;
         f.restitution = static_cast<float>(scene.settings.walls.restitution);
         walls->CreateFixture(&f);

@@ -55,9 +55,10 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     }
     clock.lap(profile.wallScan);
     warmStart();
+    m_lastPasses = 0;
     relax(c, profile, profiling);
     clock.lap(profile.velocity);
-    bounce(c);
+    bounce(c, profile, profiling);
     clock.lap(profile.restitution);
     moveBodies(c);
     clock.lap(profile.position);
@@ -208,7 +209,11 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
         m_spareBalls[count] = ct;
         m_spareImpulse[count] = warm;
-        m_vn0[count] = vn0;
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        m_vn0[count] = warm > 0.0 ? 0.0 : vn0;
         ++count;
     }
     if (touching)
@@ -370,7 +375,7 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
         if (!moved)
             break;
     }
-    m_lastPasses = made;
+    m_lastPasses += made;
     if (profiling) {
         profile.rows += static_cast<std::int64_t>(m_rowCount);
         profile.solves += solves;
@@ -378,30 +383,35 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
 }
 
 // Stage 5. A pair that hit faster than the resting speed separates at e times
-// the speed it hit with; slower ones stay at rest (the threshold). The
-// bounces may push a ball into a wall it rests on: one more pass over the
-// walls stops that (a wall never pushes a ball into another).
-void RestingSolver::bounce(const SubStepContext& c)
+// the speed it hit with; slower ones stay at rest (the threshold); a ball
+// that hit a wall faster than that leaves it at e_w times its speed. These
+// become the rows' targets and the passes run again over all rows, so the
+// other contacts hold while the bounces are made: a ball dropped on a
+// resting pile leaves it as from a floor, instead of pushing the ball it hit
+// into the pile.
+void RestingSolver::bounce(const SubStepContext& c, CollisionProfile& profile, bool profiling)
 {
     const double e = c.restitution;
+    bool any = false;
     for (std::size_t k = 0; k < m_rowCount; ++k) {
         const double vn0 = m_vn0[k];
         if (!(-vn0 > c.restingSpeed) || !(m_impulse[k] > 0.0))
             continue;
-        const PairRow& row = m_pairRows[k];
-        const double total = std::max(m_impulse[k] + (-e * vn0 - normalSpeed(row)) * row.mass, 0.0);
-        applyPair(row, total - m_impulse[k]);
-        m_impulse[k] = total;
+        m_pairRows[k].allowed = static_cast<float>(e * vn0); // v_n ≥ e·|v_n0|
+        any = true;
     }
     const double ew = c.walls.restitution;
     for (WallRow& row : m_wallRows) {
         if (!(row.into0 > c.restingSpeed) || !(row.impulse > 0.0) || row.allowed != 0.0)
             continue;
-        double& vk = wallSpeed(row);
-        const double total = std::max(row.impulse + (row.side * vk + ew * row.into0) / row.w, 0.0);
-        vk -= row.side * row.w * (total - row.impulse);
-        row.impulse = total;
+        row.allowed = -ew * row.into0; // leaves at e_w times the speed it came with
+        any = true;
     }
+    if (any)
+        relax(c, profile, profiling);
+    // The passes skip a row whose balls changed little; one more pass over the
+    // walls leaves no ball moving into a wall faster than its row allows (a
+    // wall never pushes a ball into another).
     for (WallRow& row : m_wallRows) {
         double& vk = wallSpeed(row);
         const double total = std::max(row.impulse + (row.side * vk - row.allowed) / row.w, 0.0);

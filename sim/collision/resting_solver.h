@@ -90,7 +90,7 @@ private:
     void buildWallRows(const BallState& balls, const SubStepContext& c);
     void warmStart();
     void relax(const SubStepContext& c, CollisionProfile& profile, bool profiling);
-    void bounce(const SubStepContext& c);
+    void bounce(const SubStepContext& c, CollisionProfile& profile, bool profiling);
     void moveBodies(const SubStepContext& c);
     void correctPositions(const SubStepContext& c);
     void writeBack(BallState& balls, const SubStepContext& c);
