@@ -143,9 +143,9 @@ void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& 
 
 // Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
 // rows, so the impulses of pairs still in contact are found by a merge). The
-// line of impact comes from the positions at detection. A pair may close the
-// gap it had at the start of the sub-step, gap_end − v_n·h, and no more: its
-// normal speed may not drop below −allowed (0 for pairs that overlap). The
+// line of impact and the gap come from the centres at the start of the
+// sub-step. A pair may close that gap and no more: its normal speed may not
+// drop below −allowed (0 for pairs that overlap). The
 // pairs that overlap now are copied to `touching` without a branch: each is
 // written, and the count moves on by the result of the test.
 void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,

@@ -3,12 +3,14 @@
 // impulses with accumulated, warm-started impulses over the ball–ball and
 // ball–wall contacts, then positional correction with slop. One solve runs
 //
+//   0. takeBackWallBounces  the wall stage's bounce of a ball it left on a wall
 //   1. buildPairRows     ball–ball rows (line of impact, effective mass, the
 //                        speed a gap may close at, last sub-step's impulse)
 //   2. buildWallRows     ball–wall rows for the balls on or near a wall
 //   3. warmStart         last sub-step's impulses applied again
 //   4. relax             velocity passes until no ball changes speed
-//   5. bounce            restitution for pairs that hit, and one wall pass
+//   5. bounce            restitution targets for new pairs that hit, the passes
+//                        again, and one wall pass
 //   6. moveBodies        positions moved as if the impulses acted at the start
 //   7. correctPositions  overlap beyond the slop removed, positions only
 //   8. writeBack         velocities and positions back to the balls
