@@ -45,7 +45,7 @@ void declareBench(QCommandLineParser& p)
          QStringLiteral("N,N,...")},
         {QStringLiteral("brute-limit"), QStringLiteral("Largest count for the all-pairs detector."), QStringLiteral("N")},
         {QStringLiteral("profile"), QStringLiteral("Add the per-stage times of one step at the largest size.")},
-        {QStringLiteral("speculative"), QStringLiteral("Speculative-contact growth of the solver, in [0, 1]."),
+        {QStringLiteral("speculative"), QStringLiteral("Speculative-contact growth of the solver, in radii, in [0, 8]."),
          QStringLiteral("S")},
         {QStringLiteral("no-peers"), QStringLiteral("Leave out the comparison table.")},
         {QStringLiteral("peers-only"), QStringLiteral("Only the comparison table.")},
@@ -99,8 +99,8 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         const std::string v = valueOf(parser, "speculative");
         char* end = nullptr;
         o.speculative = std::strtod(v.c_str(), &end);
-        if (v.empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 1.0)) {
-            err << "forcelab-cli bench: --speculative: expected a number in [0, 1], got '" << v << "'\n";
+        if (v.empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 8.0)) {
+            err << "forcelab-cli bench: --speculative: expected a number in [0, 8], got '" << v << "'\n";
             return 2;
         }
     }

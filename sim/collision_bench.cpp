@@ -1,6 +1,7 @@
 #include "collision_bench.h"
 
 #include "names.h"
+#include "peer_scene.h"
 #include "world.h"
 
 #include <algorithm>
@@ -44,46 +45,6 @@ double median(std::vector<double> v)
 }
 
 
-
-// N balls on a jittered grid filling `fill` of a square box, radii uniform in
-// [rMin, rMax], random velocities up to `speed`, gravity on, 2d-impulse with
-// restitution e for balls and walls, one sub-step of 1/60 s.
-Scene boxScene(int n, double rMin, double rMax, double speed, double e, Detection detection, std::uint64_t seed)
-{
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<double> radius(static_cast<std::size_t>(n));
-    double area = 0.0;
-    for (double& r : radius) {
-        r = rMin + (rMax - rMin) * u(rng);
-        area += std::numbers::pi * r * r;
-    }
-    const double side = std::sqrt(area / 0.3);
-    const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
-    const double cell = side / cols;
-    Scene s;
-    s.settings.box = BoxSettings{side, side};
-    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, e};
-    s.settings.gravity.enabled = true;
-    s.settings.gravity.g = Vec2(0.0, 980.0);
-    s.settings.collisions.detection = detection;
-    s.settings.collisions.response = Response::Impulse2D;
-    s.settings.collisions.restitution = e;
-    s.settings.time.integrator = IntegratorKind::SemiImplicitEuler;
-    s.settings.time.dt = 1.0 / 60.0;
-    s.settings.time.substeps = 1;
-    s.balls.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        Ball& b = s.balls[static_cast<std::size_t>(i)];
-        b.radius = radius[static_cast<std::size_t>(i)];
-        const double slack = std::max(0.0, 0.5 * cell - b.radius);
-        b.position = Vec2((i % cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0),
-                          (i / cols + 0.5) * cell + slack * (2.0 * u(rng) - 1.0));
-        const double angle = 2.0 * std::numbers::pi * u(rng);
-        b.velocity = speed * u(rng) * Vec2(std::cos(angle), std::sin(angle));
-    }
-    return s;
-}
 
 struct Row {
     std::string table;
@@ -316,12 +277,11 @@ std::vector<Row> runPeerTable(const CollisionBenchOptions& o, std::ostream& out)
     out << "\nPeer scene: N equal circles (r = 5 px) filling 30% of a square box on a jittered grid, at rest,\n"
         << "gravity 980 px/s^2, restitution 0.9 (balls and walls), " << o.peerSteps
         << " steps at 60 Hz, 1 sub-step, one thread.\n"
-        << "Mean thread CPU ms per step over the whole run (Box2D v3.2 and matter.js 0.20 from the issue, same\n"
-        << "machine). sweep 1-pass: collisions.resting off, one pass of 2d-impulse per step (piles sink).\n\n";
+        << "Mean thread CPU ms per step over the whole run. sweep 1-pass: collisions.resting off, one pass of\n"
+        << "2d-impulse per step (piles sink). Other engines on the same scene: forcelab-peer-box2d (built when\n"
+        << "libbox2d-dev is installed).\n\n";
     out << std::left << std::setw(8) << "N" << std::right << std::setw(12) << "grid" << std::setw(12) << "sweep"
-        << std::setw(14) << "sweep 1-pass" << std::setw(12) << "Box2D v3.2" << std::setw(12) << "matter.js" << "\n";
-    const std::pair<int, std::pair<double, double>> peers[] = {
-        {1000, {0.52, 10.0}}, {5000, {3.1, 100.0}}, {10000, {7.4, std::nan("")}}, {20000, {20.7, std::nan("")}}};
+        << std::setw(14) << "sweep 1-pass" << "\n";
     for (int n : o.peerSizes) {
         // grid and sweep with resting contacts, then sweep with one pass.
         struct Run {
@@ -361,14 +321,8 @@ std::vector<Row> runPeerTable(const CollisionBenchOptions& o, std::ostream& out)
                 ss << std::fixed << std::setprecision(v < 10 ? 2 : 1) << v;
             return ss.str();
         };
-        double b2d = std::nan(""), mjs = std::nan("");
-        for (const auto& p : peers)
-            if (p.first == n) {
-                b2d = p.second.first;
-                mjs = p.second.second;
-            }
         out << std::left << std::setw(8) << n << std::right << std::setw(12) << fmt(ms[0]) << std::setw(12)
-            << fmt(ms[1]) << std::setw(14) << fmt(ms[2]) << std::setw(12) << fmt(b2d) << std::setw(12) << fmt(mjs)
+            << fmt(ms[1]) << std::setw(14) << fmt(ms[2])
             << "\n"
             << std::flush;
     }

@@ -42,14 +42,23 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
 {
     const bool profiling = clock.on();
     prepare(balls.size());
+    takeBackWallBounces(balls, c);
     buildPairRows(balls, c, pairs, touching);
     clock.lap(profile.build);
     buildWallRows(balls, c);
+    for (const auto& [ball, axis] : m_takenBack) {
+        // The integrator's step ended on the wall: the position stage moves
+        // such a ball by its new velocity alone, from the wall.
+        const int k = m_bodyOf[static_cast<std::size_t>(ball)];
+        if (k >= 0)
+            m_bodyVelocity0[2 * static_cast<std::size_t>(k) + static_cast<std::size_t>(axis)] = 0.0;
+    }
     clock.lap(profile.wallScan);
     warmStart();
+    m_lastPasses = 0;
     relax(c, profile, profiling);
     clock.lap(profile.velocity);
-    bounce(c);
+    bounce(c, profile, profiling);
     clock.lap(profile.restitution);
     moveBodies(c);
     clock.lap(profile.position);
@@ -98,11 +107,45 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
     return k;
 }
 
+// Stage 0. A ball the wall stage has just put on an enabled wall (its gap
+// is exactly 0, as clamp leaves it) and sent away at u met the wall at u/e_w.
+// That bounce is taken back, so the rows see the ball as it came: its speed
+// into the wall, and a start position one sub-step of that speed away. The
+// solver makes the bounce again with the other contacts (relax stops the
+// ball, the restitution stage sends it away at e_w times its speed if that
+// was faster than v_rest). A ball under a pile then no longer hops at
+// e_w·g·h every step and kicks the pile above it.
+void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& c)
+{
+    m_takenBack.clear();
+    const double ew = c.walls.restitution;
+    if (!(ew > 0.0))
+        return;
+    const bool on[2][2] = {{c.walls.left, c.walls.right}, {c.walls.top, c.walls.bottom}};
+    const double size[2] = {c.box.width, c.box.height};
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    for (int i = 0; i < balls.size(); ++i) {
+        const double r = radius[i];
+        for (int k = 0; k < 2; ++k) {
+            if (!(2.0 * r <= size[k]))
+                continue;
+            double& vk = v[2 * i + k];
+            const double p = x[2 * i + k];
+            if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
+                vk = -vk / ew;
+                m_takenBack.push_back({i, k});
+            }
+        }
+    }
+}
+
 // Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
 // rows, so the impulses of pairs still in contact are found by a merge). The
-// line of impact comes from the positions at detection. A pair may close the
-// gap it had at the start of the sub-step, gap_end − v_n·h, and no more: its
-// normal speed may not drop below −allowed (0 for pairs that overlap). The
+// line of impact and the gap come from the centres at the start of the
+// sub-step. A pair may close that gap and no more: its normal speed may not
+// drop below −allowed (0 for pairs that overlap). The
 // pairs that overlap now are copied to `touching` without a branch: each is
 // written, and the count moves on by the result of the test.
 void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
@@ -141,14 +184,22 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         const double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
-        const double len = std::sqrt(dx * dx + dy * dy);
+        // The line of impact and the gap at the start of the sub-step: the
+        // integrator moved each ball by v·h before this stage, so the centres
+        // were d − (v_b − v_a)·h apart. A fast ball may already sit deep in
+        // (or beyond) the other at the end, where the direction means little.
+        const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
+        const double sx = dx - dvx * c.h, sy = dy - dvy * c.h;
+        const double len = std::sqrt(sx * sx + sy * sy);
         Vec2 nrm;
         if (len > 1e-12 * s && std::isfinite(len))
-            nrm = Vec2(dx / len, dy / len);
+            nrm = Vec2(sx / len, sy / len);
         else
             nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
-        const double vn0 = (v[2 * b] - v[2 * a]) * nrm.x() + (v[2 * b + 1] - v[2 * a + 1]) * nrm.y();
-        const double gapStart = (len - s) - vn0 * c.h;
+        const double vn0 = dvx * nrm.x() + dvy * nrm.y();
+        const double gapStart = len - s;
+        // A gap may close within the sub-step and no more: its normal speed
+        // may not drop below −gap/h (0 for a pair that overlapped already).
         const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
         while (old < oldCount && (oldBalls[old].a < ct.a || (oldBalls[old].a == ct.a && oldBalls[old].b < ct.b)))
             ++old;
@@ -158,7 +209,11 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
         m_spareBalls[count] = ct;
         m_spareImpulse[count] = warm;
-        m_vn0[count] = vn0;
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        m_vn0[count] = warm > 0.0 ? 0.0 : vn0;
         ++count;
     }
     if (touching)
@@ -320,7 +375,7 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
         if (!moved)
             break;
     }
-    m_lastPasses = made;
+    m_lastPasses += made;
     if (profiling) {
         profile.rows += static_cast<std::int64_t>(m_rowCount);
         profile.solves += solves;
@@ -328,30 +383,35 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
 }
 
 // Stage 5. A pair that hit faster than the resting speed separates at e times
-// the speed it hit with; slower ones stay at rest (the threshold). The
-// bounces may push a ball into a wall it rests on: one more pass over the
-// walls stops that (a wall never pushes a ball into another).
-void RestingSolver::bounce(const SubStepContext& c)
+// the speed it hit with; slower ones stay at rest (the threshold); a ball
+// that hit a wall faster than that leaves it at e_w times its speed. These
+// become the rows' targets and the passes run again over all rows, so the
+// other contacts hold while the bounces are made: a ball dropped on a
+// resting pile leaves it as from a floor, instead of pushing the ball it hit
+// into the pile.
+void RestingSolver::bounce(const SubStepContext& c, CollisionProfile& profile, bool profiling)
 {
     const double e = c.restitution;
+    bool any = false;
     for (std::size_t k = 0; k < m_rowCount; ++k) {
         const double vn0 = m_vn0[k];
         if (!(-vn0 > c.restingSpeed) || !(m_impulse[k] > 0.0))
             continue;
-        const PairRow& row = m_pairRows[k];
-        const double total = std::max(m_impulse[k] + (-e * vn0 - normalSpeed(row)) * row.mass, 0.0);
-        applyPair(row, total - m_impulse[k]);
-        m_impulse[k] = total;
+        m_pairRows[k].allowed = static_cast<float>(e * vn0); // v_n ≥ e·|v_n0|
+        any = true;
     }
     const double ew = c.walls.restitution;
     for (WallRow& row : m_wallRows) {
         if (!(row.into0 > c.restingSpeed) || !(row.impulse > 0.0) || row.allowed != 0.0)
             continue;
-        double& vk = wallSpeed(row);
-        const double total = std::max(row.impulse + (row.side * vk + ew * row.into0) / row.w, 0.0);
-        vk -= row.side * row.w * (total - row.impulse);
-        row.impulse = total;
+        row.allowed = -ew * row.into0; // leaves at e_w times the speed it came with
+        any = true;
     }
+    if (any)
+        relax(c, profile, profiling);
+    // The passes skip a row whose balls changed little; one more pass over the
+    // walls leaves no ball moving into a wall faster than its row allows (a
+    // wall never pushes a ball into another).
     for (WallRow& row : m_wallRows) {
         double& vk = wallSpeed(row);
         const double total = std::max(row.impulse + (row.side * vk - row.allowed) / row.w, 0.0);

@@ -3,12 +3,14 @@
 // impulses with accumulated, warm-started impulses over the ball–ball and
 // ball–wall contacts, then positional correction with slop. One solve runs
 //
+//   0. takeBackWallBounces  the wall stage's bounce of a ball it left on a wall
 //   1. buildPairRows     ball–ball rows (line of impact, effective mass, the
 //                        speed a gap may close at, last sub-step's impulse)
 //   2. buildWallRows     ball–wall rows for the balls on or near a wall
 //   3. warmStart         last sub-step's impulses applied again
 //   4. relax             velocity passes until no ball changes speed
-//   5. bounce            restitution for pairs that hit, and one wall pass
+//   5. bounce            restitution targets for new pairs that hit, the passes
+//                        again, and one wall pass
 //   6. moveBodies        positions moved as if the impulses acted at the start
 //   7. correctPositions  overlap beyond the slop removed, positions only
 //   8. writeBack         velocities and positions back to the balls
@@ -25,6 +27,7 @@
 #include "sub_step_context.h"
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace forcelab::sim {
@@ -83,12 +86,13 @@ private:
 
     void prepare(int n);
     int bodyFor(std::size_t i, const BallState& balls);
+    void takeBackWallBounces(BallState& balls, const SubStepContext& c);
     void buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                        std::vector<Contact>* touching);
     void buildWallRows(const BallState& balls, const SubStepContext& c);
     void warmStart();
     void relax(const SubStepContext& c, CollisionProfile& profile, bool profiling);
-    void bounce(const SubStepContext& c);
+    void bounce(const SubStepContext& c, CollisionProfile& profile, bool profiling);
     void moveBodies(const SubStepContext& c);
     void correctPositions(const SubStepContext& c);
     void writeBack(BallState& balls, const SubStepContext& c);
@@ -108,6 +112,7 @@ private:
     std::vector<BodyPosition> m_bodyPositions;
     std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
     std::vector<double> m_bodyVelocity0;
+    std::vector<std::pair<int, int>> m_takenBack; // (ball, axis) whose wall bounce stage 0 took back
     int m_bodyCount = 0;
     int m_warmCount = -1;
     int m_lastPasses = 0;
