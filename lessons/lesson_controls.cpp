@@ -23,6 +23,7 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("homing"), {"homing_strength"}},
         {QStringLiteral("pointer"), {"pointer_strength", "pointer_clamp"}},
         {QStringLiteral("speed_limit"), {"speed_limit"}},
+        {QStringLiteral("custom"), {"custom_acceleration"}},
         {QStringLiteral("collisions"), {"detection", "response", "ball_restitution", "continuous", "resting"}},
         {QStringLiteral("walls"), {"wall_sides", "wall_model", "wall_restitution"}},
         {QStringLiteral("box"), {"box_width", "box_height"}},

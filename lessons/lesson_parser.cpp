@@ -457,6 +457,58 @@ void parseTime(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
     r.seed(o, path, "seed", s.time.seed); // a whole number up to 2^64 − 1: not a row of doubles
 }
 
+/// The custom force's formulas and constants: "fx", "fy", "potential" as
+/// strings, "constants": {"k": 4}, "ranges": {"k": [0, 20]} (a slider's
+/// range; without one it runs from 0, or twice a negative value, to twice
+/// the value, or 1). Whether the formulas compile is sim's check, made with
+/// the whole settings (validateSettings) and reported at the formula's key.
+void parseCustom(Reader& r, const QJsonObject& o, const QString& path, sim::CustomForceSettings& c)
+{
+    QString text;
+    if (r.string(o, path, "fx", text))
+        c.fx = text.toStdString();
+    if (r.string(o, path, "fy", text))
+        c.fy = text.toStdString();
+    if (r.string(o, path, "potential", text))
+        c.potential = text.toStdString();
+    c.constants.clear();
+    if (const auto k = r.object(o, path, "constants")) {
+        const QString kp = join(path, "constants");
+        for (auto it = k->begin(); it != k->end(); ++it) {
+            sim::CustomConstant constant;
+            constant.name = it.key().toStdString();
+            if (!r.numberValue(it.value(), join(kp, it.key()), range::kClaimNumber, constant.value))
+                continue;
+            constant.min = constant.value < 0 ? 2 * constant.value : 0.0;
+            constant.max = constant.value > 0 ? 2 * constant.value : 1.0;
+            c.constants.push_back(constant);
+        }
+    }
+    if (const auto ranges = r.object(o, path, "ranges")) {
+        const QString rp = join(path, "ranges");
+        for (auto it = ranges->begin(); it != ranges->end(); ++it) {
+            const QString p = join(rp, it.key());
+            auto found = std::find_if(c.constants.begin(), c.constants.end(),
+                                      [&](const sim::CustomConstant& k) { return k.name == it.key().toStdString(); });
+            if (found == c.constants.end()) {
+                r.fail(p, QStringLiteral("a range for %1, which is not one of the constants").arg(quoted(it.key())));
+                continue;
+            }
+            const QJsonArray a = it.value().toArray();
+            double lo = 0.0, hi = 0.0;
+            if (!it.value().isArray() || a.size() != 2) {
+                r.fail(p, QStringLiteral("expected [min, max], got ") + describe(it.value()));
+                continue;
+            }
+            if (r.numberValue(a.at(0), join(p, 0), range::kClaimNumber, lo) &&
+                r.numberValue(a.at(1), join(p, 1), range::kClaimNumber, hi)) {
+                found->min = lo;
+                found->max = hi;
+            }
+        }
+    }
+}
+
 void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
 {
     const QString base = QStringLiteral("models");
@@ -471,9 +523,16 @@ void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
             known << model;
     }
     r.checkKeys(models, base, known);
-    for (const QString& model : known)
-        if (const auto o = r.object(models, base, model))
-            r.section(*o, join(base, model), s);
+    for (const QString& model : known) {
+        const auto o = r.object(models, base, model);
+        if (!o)
+            continue;
+        const bool custom = model == QStringLiteral("custom");
+        r.section(*o, join(base, model), s,
+                  custom ? QStringList{"fx", "fy", "potential", "constants", "ranges"} : QStringList{});
+        if (custom)
+            parseCustom(r, *o, join(base, model), s.custom);
+    }
 }
 
 void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)

@@ -235,6 +235,25 @@ Fields sectionFields(std::string_view section, const sim::WorldSettings& s)
     return out;
 }
 
+/// The custom force's formulas and constants ({"k": 4}, with their slider
+/// ranges as "ranges": {"k": [0, 20]}).
+Fields customFields(const sim::CustomForceSettings& c)
+{
+    Fields f{{"fx", str(c.fx)}, {"fy", str(c.fy)}};
+    if (!c.potential.empty())
+        f.push_back({"potential", str(c.potential)});
+    if (!c.constants.empty()) {
+        Fields values, ranges;
+        for (const sim::CustomConstant& k : c.constants) {
+            values.push_back({k.name.c_str(), num(k.value)});
+            ranges.push_back({k.name.c_str(), inlineArray({num(k.min), num(k.max)})});
+        }
+        f.push_back({"constants", inlineObject(values)});
+        f.push_back({"ranges", inlineObject(ranges)});
+    }
+    return f;
+}
+
 QByteArray modelsBlock(const sim::WorldSettings& s)
 {
     const sim::WorldSettings d; // defaults
@@ -249,9 +268,15 @@ QByteArray modelsBlock(const sim::WorldSettings& s)
         }
     for (const std::string_view section : sections) {
         const std::string name(section.substr(7));
-        const Fields fields = sectionFields(section, s);
+        Fields fields = sectionFields(section, s);
+        Fields defaults = sectionFields(section, d);
+        if (name == "custom") {
+            const Fields more = customFields(s.custom), moreDefaults = customFields(d.custom);
+            fields.insert(fields.end(), more.begin(), more.end());
+            defaults.insert(defaults.end(), moreDefaults.begin(), moreDefaults.end());
+        }
         if (const sim::Parameter* on = sim::findParameter(std::string(section) + ".enabled")) {
-            addModel(m, name.c_str(), on->get(s) != 0.0, fields, sectionFields(section, d));
+            addModel(m, name.c_str(), on->get(s) != 0.0, fields, defaults);
         } else if (fields != sectionFields(section, d)) {
             // No switch (wind, collisions): a mode such as "off" or "none"
             // switches it off; written when anything differs from the defaults.

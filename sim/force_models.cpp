@@ -1,5 +1,7 @@
 #include "force_models.h"
 
+#include "custom_force.h"
+
 #include "force_model.h"
 
 #include <cmath>
@@ -276,6 +278,21 @@ const ForceModelInfo kModels[] = {
      },
      .switchOff = [](WorldSettings& s) { s.magnetic.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "the magnetic force depends on velocity"; },
+     .velocityDependent = true},
+    // The student's own law. With a potential it is counted as potential
+    // energy; without one its work is booked like the drag's.
+    {.name = "custom force",
+     .on = [](const WorldSettings& s) { return s.custom.enabled; },
+     .add = [](const ForceContext& c, const Matrix2X& x, const Matrix2X& v, double t, Matrix2X& a) {
+         addCustomAcceleration(c.settings, c.balls, x, v, t, a);
+     },
+     .potential = [](const ForceContext& c, const Matrix2X& x) { return customPotential(c.settings, c.balls, x); },
+     .conservativePart = [](WorldSettings& s) {
+         if (s.custom.potential.empty())
+             s.custom.enabled = false;
+     },
+     .switchOff = [](WorldSettings& s) { s.custom.enabled = false; },
+     .notConstant = [](const WorldSettings&) -> const char* { return "the custom force may change during a step"; },
      .velocityDependent = true},
 };
 

@@ -1,5 +1,7 @@
 #include "world.h"
 
+#include "custom_force.h"
+
 #include "close_pass.h"
 #include "force_models.h"
 #include "integrator_info.h"
@@ -79,6 +81,10 @@ std::optional<Error> validateSettings(const WorldSettings& s)
                                                    .append(why)
                                                    .append("; pick another integrator or switch that model off"));
     }
+    // A student's force law: its formulas compile and its potential fits it.
+    // Checked even while it is off, so a law is never kept that cannot run.
+    if (auto error = checkCustomForce(s.custom, s.box.width, s.box.height))
+        return error;
     return std::nullopt;
 }
 
@@ -280,7 +286,14 @@ std::string World::explainBlowUp(double h, const std::optional<ClosePass>& unres
     if (pass && pass->fallTime < tooShort)
         return stopped + "it blew up (" + what + "): " + describeClosePass(*pass, s, h);
     std::string cause;
-    if (s.drag.enabled && s.drag.law == DragLaw::Quadratic)
+    if (s.custom.enabled)
+        cause.append("the custom force (F_x = ")
+            .append(s.custom.fx)
+            .append(", F_y = ")
+            .append(s.custom.fy)
+            .append(") grows too fast for this dt, or gives a number that is not finite (a division by zero?): "
+                    "check its formulas, or lower dt");
+    else if (s.drag.enabled && s.drag.law == DragLaw::Quadratic)
         cause = "quadratic drag is too strong for this dt at these speeds: lower dt or k";
     else if (m_gaveUp)
         cause = "the forces change too fast for this tolerance: raise time.tolerance or lower dt";

@@ -7,6 +7,8 @@
 #include "types.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace forcelab::sim {
 
@@ -166,6 +168,30 @@ struct TimeSettings {
 /// The length of one "frame" of the per-frame bug, s.
 inline constexpr double kFrameSeconds = 1.0 / 60.0;
 
+/// A named number a student's force law uses (k, c, B, …), with the range of its slider.
+struct CustomConstant {
+    std::string name;   ///< letters, digits and _, starting with a letter; not one of the law's variables
+    double value = 0.0; ///< in whatever unit the law gives it
+    double min = 0.0;   ///< slider range
+    double max = 1.0;
+    friend bool operator==(const CustomConstant&, const CustomConstant&) = default;
+};
+
+/// A force law the student writes as formulas (sim/custom_force.h). The
+/// formulas may use the ball's x, y (px), vx, vy (px/s), m (mass), r (px),
+/// q (charge), the time t (s), the box's W and H (px), pi and the constants.
+struct CustomForceSettings {
+    bool enabled = false;
+    bool acceleration = false; ///< the formulas give the acceleration (px/s²) instead of the force (mass·px/s²)
+    std::string fx = "0";      ///< F_x (or a_x) as a formula
+    std::string fy = "0";      ///< F_y (or a_y) as a formula
+    /// Optional: the potential energy U (mass·px²/s²) of a conservative law,
+    /// F = −∇U; given, the accounting counts it as potential energy instead
+    /// of booking the law's work.
+    std::string potential;
+    std::vector<CustomConstant> constants;
+};
+
 struct WorldSettings {
     BoxSettings box;
     WallSettings walls;
@@ -182,6 +208,7 @@ struct WorldSettings {
     MagneticSettings magnetic;
     SpeedLimitSettings speedLimit;
     CollisionSettings collisions;
+    CustomForceSettings custom;
 };
 
 } // namespace forcelab::sim

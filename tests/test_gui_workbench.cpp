@@ -141,6 +141,8 @@ const std::vector<ControlCase>& controlCases()
         {"pointer_clamp", "pointerClampSpin", 0.0, 0.0, FIELD(s.pointer.maxAccel)},
         {"magnetic", "magneticGroup", true, 1.0, FIELD(s.magnetic.enabled)},
         {"magnetic_b", "magneticBSpin", 2.5, 2.5, FIELD(s.magnetic.B)},
+        {"custom", "customGroup", true, 1.0, FIELD(s.custom.enabled)},
+        {"custom_acceleration", "customAccelerationCheck", true, 1.0, FIELD(s.custom.acceleration)},
         {"speed_limit", "speedLimitGroup", true, 1.0, FIELD(s.speedLimit.enabled)},
         {"speed_limit", "speedLimitSpin", 450.0, 450.0, FIELD(s.speedLimit.max)},
         {"detection", "detectionCombo", "grid", indexOf<sim::Detection>(sim::detectionNames(), "grid"),

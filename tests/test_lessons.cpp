@@ -726,7 +726,7 @@ void TestLessons::stage12SmoothedAndNoiseAreSmooth()
             QVERIFY(std::abs(w) <= S + 1e-9 && std::abs(c) <= S + 1e-9);
         }
     };
-    double smoothMax, randomMean, randomMax;
+    double smoothMax = 0.0, randomMean = 0.0, randomMax = 0.0;
     changes(sim::WindMode::Smoothed, sim::WindMode::Random, smoothMax, randomMean, randomMax);
     double unused, noiseMean, noiseMax;
     changes(sim::WindMode::Smoothed, sim::WindMode::Noise, unused, noiseMean, noiseMax);

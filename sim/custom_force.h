@@ -1,0 +1,35 @@
+#pragma once
+// A force law written by the student as formulas (CustomForceSettings),
+// compiled by muparser once per edit and evaluated for every ball at every
+// force evaluation. The compiled law is kept per thread, keyed by its
+// formulas, so a slider that changes a constant does not compile anything.
+
+#include "ball_state.h"
+#include "error.h"
+#include "world_settings.h"
+
+#include <optional>
+
+namespace forcelab::sim {
+
+/// The names a formula may use besides the constants.
+inline constexpr const char* kCustomVariables[] = {"x", "y", "vx", "vy", "m", "r", "q", "t", "W", "H"};
+
+/// Checks the formulas and the constants, and that a potential belongs to
+/// its force (F = −∇U at a few points of a `width` × `height` box). The
+/// error's key path is the field (models.custom.fx, .fy, .potential or
+/// .constants.NAME); a formula's message starts with the column of the
+/// problem: "column 7: unknown name "kk"; …".
+std::optional<Error> checkCustomForce(const CustomForceSettings& custom, double width, double height);
+
+/// Adds the law's acceleration of every ball at (x, v, t) to a (the force
+/// divided by each ball's mass, unless the formulas give the acceleration).
+/// The settings must have passed checkCustomForce.
+void addCustomAcceleration(const WorldSettings& settings, const BallState& balls, const Matrix2X& x,
+                           const Matrix2X& v, double t, Matrix2X& a);
+
+/// The potential energy of all balls at x (sum of U over the balls); 0 when
+/// the law gives none.
+double customPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x);
+
+} // namespace forcelab::sim
