@@ -5,6 +5,7 @@
 // appended to each frame gives the picture a whole redraw gives.
 // Real widgets, offscreen.
 #include "ui/canvas.h"
+#include "ui/force_editor_dock.h"
 #include "ui/main_window.h"
 #include "ui/predict_dock.h"
 #include "ui/stopwatch_dock.h"
@@ -75,6 +76,7 @@ private slots:
     void stopwatchTimesBounceToBounce();
     void rulerMeasuresInWorldPixels();
     void apexMarksAreTheTopsOfTheFlights();
+    void forceEditorKeepsTheLastGoodLaw();
 };
 
 void GuiOverlaysTest::initTestCase()
@@ -511,6 +513,51 @@ void GuiOverlaysTest::apexMarksAreTheTopsOfTheFlights()
     // 211 px of rise (the claim's own measurement, to a step's resolution).
     const double rise = (400.0 - first.radius) - first.centre.y();
     QVERIFY2(std::abs(rise - 211.2) < 0.05 * 211.2, qPrintable(QString::number(rise)));
+}
+
+// Lesson 41's Force editor: a formula with an unknown name is refused with
+// its column under the field and the world keeps its law; a good one runs,
+// and Undo brings the old one back.
+void GuiOverlaysTest::forceEditorKeepsTheLastGoodLaw()
+{
+    MainWindow window(QStringLiteral("write-your-own-force"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* editor = window.findChild<ForceEditorDock*>(QStringLiteral("forceEditorDock"));
+    QVERIFY(editor);
+    editor->show();
+    editor->raise();
+    auto* fx = editor->findChild<QLineEdit*>(QStringLiteral("customFx"));
+    QVERIFY(fx);
+    const std::string law = window.controller()->world().settings().custom.fx;
+    QCOMPARE(QString::fromStdString(law), fx->text());
+    fx->setFocus();
+    fx->selectAll();
+    QTest::keyClicks(fx, QStringLiteral("-kk*x"));
+    QTest::keyClick(fx, Qt::Key_Return);
+    QVERIFY2(editor->problem(QStringLiteral("fx")).startsWith(QStringLiteral("column 2: unknown name \"kk\"")),
+             qPrintable(editor->problem(QStringLiteral("fx"))));
+    QCOMPARE(window.controller()->world().settings().custom.fx, law);
+    // A new law with the old potential is refused at U: −∇U no longer fits F.
+    fx->selectAll();
+    QTest::keyClicks(fx, QStringLiteral("-k*m*(x - 250)"));
+    QTest::keyClick(fx, Qt::Key_Return);
+    QVERIFY(editor->problem(QStringLiteral("fx")).isEmpty());
+    QVERIFY(editor->problem(QStringLiteral("potential")).contains(QStringLiteral("not the potential")));
+    QCOMPARE(window.controller()->world().settings().custom.fx, law);
+    auto* u = editor->findChild<QLineEdit*>(QStringLiteral("customPotential"));
+    u->setFocus();
+    u->selectAll();
+    QTest::keyClicks(u, QStringLiteral("0.5*k*m*((x - 250)^2 + (y - 200)^2)"));
+    QTest::keyClick(u, Qt::Key_Return);
+    QVERIFY(editor->problem(QStringLiteral("potential")).isEmpty());
+    QCOMPARE(window.controller()->world().settings().custom.fx, std::string("-k*m*(x - 250)"));
+    // The anchor moved to x = 250: the red ball at x = 450 is pulled 4 × 200 px/s² to the left.
+    const sim::Matrix2X a = window.controller()->world().accelerations();
+    QVERIFY(std::abs(a(0, 0) + 800.0) < 1e-9);
+    window.findChild<QAction*>(QStringLiteral("undoAction"))->trigger(); // one step: both fields
+    QCOMPARE(window.controller()->world().settings().custom.fx, law);
+    QCOMPARE(fx->text(), QString::fromStdString(law));
 }
 
 QTEST_MAIN(GuiOverlaysTest)

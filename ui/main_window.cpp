@@ -14,6 +14,7 @@
 #include "plots_dock.h"
 #include "predict_dock.h"
 #include "stopwatch_dock.h"
+#include "force_editor_dock.h"
 #include "simulation_controller.h"
 #include "theme.h"
 #include "trajectory_export.h"
@@ -377,9 +378,11 @@ void MainWindow::createDocks()
     m_codeDock = new CodeDock(m_controller, this);
     m_predictDock = new PredictDock(m_controller, this);
     m_stopwatchDock = new StopwatchDock(m_controller, this);
+    m_forceEditorDock = new ForceEditorDock(m_controller, m_parameters->undoStack(), this);
     connect(m_canvas, &Canvas::selectedBallChanged, m_stopwatchDock, &StopwatchDock::setBall);
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
-                              static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_codeDock),
+                              static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
+                              static_cast<QDockWidget*>(m_codeDock),
                               static_cast<QDockWidget*>(m_accuracyDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
@@ -415,6 +418,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
     m_viewMenu->addAction(m_stopwatchDock->toggleViewAction());
+    m_viewMenu->addAction(m_forceEditorDock->toggleViewAction());
     m_viewMenu->addAction(m_lessonsDock->teacherNotesAction());
     resizeDocks({m_lessonsDock, m_parametersDock}, {230, 310}, Qt::Horizontal);
     resizeDocks({m_parametersDock, m_inspectorDock}, {360, 300}, Qt::Vertical);
@@ -601,6 +605,8 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_predictDock->setLesson(lesson);
     if (m_predictDock->hasQuestions())
         m_predictDock->raise(); // the lesson asks first
+    else if (lesson.scene.settings.custom.enabled)
+        m_forceEditorDock->raise(); // the lesson is about writing a law
     else if (!m_plotsDock->isHidden())
         m_plotsDock->raise();
     updateStageCaption();

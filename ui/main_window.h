@@ -36,6 +36,7 @@ class ParameterPanel;
 class PlotsDock;
 class PredictDock;
 class StopwatchDock;
+class ForceEditorDock;
 class SimulationController;
 class TrajectoryExport;
 
@@ -137,6 +138,7 @@ private:
     PlotsDock* m_plotsDock = nullptr;
     PredictDock* m_predictDock = nullptr;
     StopwatchDock* m_stopwatchDock = nullptr;
+    ForceEditorDock* m_forceEditorDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StageBar* m_stageBar = nullptr;
