@@ -4,6 +4,7 @@
 #include "cli_commands.h"
 
 #include "sim/collision_bench.h"
+#include "sim/threads.h"
 
 #include <fstream>
 #include <memory>
@@ -47,6 +48,10 @@ void declareBench(QCommandLineParser& p)
         {QStringLiteral("profile"), QStringLiteral("Add the per-stage times of one step at the largest size.")},
         {QStringLiteral("speculative"), QStringLiteral("Speculative-contact growth of the solver, in radii, in [0, 8]."),
          QStringLiteral("S")},
+        {QStringLiteral("threads"),
+         QStringLiteral("Most threads for the solver's passes (default: every core); the results are the same "
+                        "bits for any count, only the wall-clock times change."),
+         QStringLiteral("T")},
         {QStringLiteral("no-peers"), QStringLiteral("Leave out the comparison table.")},
         {QStringLiteral("peers-only"), QStringLiteral("Only the comparison table.")},
     });
@@ -110,6 +115,19 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         o.main = false;
         o.bandwidth = false;
     }
+    std::unique_ptr<sim::ThreadLimit> limit;
+    if (has("threads")) {
+        const std::string v = valueOf(parser, "threads");
+        char* end = nullptr;
+        const long t = std::strtol(v.c_str(), &end, 10);
+        if (v.empty() || *end != '\0' || t < 1 || t > 256) {
+            err << "forcelab-cli bench: --threads: expected an integer in [1, 256], got '" << v << "'\n";
+            return 2;
+        }
+        limit = std::make_unique<sim::ThreadLimit>(static_cast<int>(t));
+    }
+    out << "Threads for the solver's passes: " << sim::availableThreads()
+        << " (step ms is wall-clock time; cpu columns are the calling thread's CPU time)\n";
     std::unique_ptr<std::ofstream> csv;
     if (!csvFile.empty()) {
         csv = std::make_unique<std::ofstream>(csvFile);

@@ -10,15 +10,16 @@
 // iterations (its defaults).
 
 #include "sim/peer_scene.h"
+#include "sim/threads.h"
 
 #include <box2d/box2d.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include <time.h>
 
 namespace {
 
@@ -27,11 +28,9 @@ using namespace forcelab::sim;
 constexpr double kPixelsPerMetre = 50.0;
 constexpr int kSteps = 600;
 
-double threadCpuMilliseconds()
+double nowMilliseconds()
 {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 void print(const char* engine, int n, double ms, const PileMeasures& m)
@@ -40,13 +39,19 @@ void print(const char* engine, int n, double ms, const PileMeasures& m)
                 m.rmsSpeed, m.meanHeight);
 }
 
-void runForceLab(const Scene& scene)
+// ForceLab on `threads` threads: the wall-clock time per step (with one
+// thread the same as its CPU time), and the same end state for any count.
+void runForceLab(const Scene& scene, int threads)
 {
+    const ThreadLimit limit(threads);
     World w(scene);
-    const double c0 = threadCpuMilliseconds();
+    const double t0 = nowMilliseconds();
     for (int s = 0; s < kSteps; ++s)
         w.step();
-    print("ForceLab", w.balls().size(), (threadCpuMilliseconds() - c0) / kSteps, measurePile(w));
+    const double ms = (nowMilliseconds() - t0) / kSteps;
+    char name[32];
+    std::snprintf(name, sizeof name, "ForceLab/%d", availableThreads());
+    print(name, w.balls().size(), ms, measurePile(w));
 }
 
 void runBox2D(const Scene& scene)
@@ -90,10 +95,10 @@ void runBox2D(const Scene& scene)
         body->CreateFixture(&f);
         bodies.push_back(body);
     }
-    const double c0 = threadCpuMilliseconds();
+    const double c0 = nowMilliseconds();
     for (int s = 0; s < kSteps; ++s)
         world.Step(static_cast<float>(scene.settings.time.dt), 8, 3);
-    const double ms = (threadCpuMilliseconds() - c0) / kSteps;
+    const double ms = (nowMilliseconds() - c0) / kSteps;
     const std::size_t n = bodies.size();
     std::vector<double> x(n), y(n), vx(n), vy(n), r(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -123,12 +128,15 @@ int main(int argc, char** argv)
     }
     if (sizes.empty())
         sizes = {5000, 20000};
-    std::printf("Peer scene, %d steps at 60 Hz, one thread; thread CPU ms per step; end state after 10 s\n", kSteps);
+    std::printf("Peer scene, %d steps at 60 Hz; ms per step (wall clock; ForceLab/T: T threads, Box2D one); "
+                "end state after 10 s\n",
+                kSteps);
     std::printf("%-10s %7s %10s %10s %10s %10s %10s\n", "engine", "N", "ms/step", "deepest r", "mean r", "rms px/s",
                 "height px");
     for (int n : sizes) {
         const Scene scene = peerScene(n);
-        runForceLab(scene);
+        runForceLab(scene, 1);
+        runForceLab(scene, 2);
         runBox2D(scene);
     }
     return 0;

@@ -4,6 +4,8 @@
 // (fused multiply-add contraction) are switched off in the top CMakeLists.
 
 #include "lessons/lesson_loader.h"
+#include "sim/peer_scene.h"
+#include "sim/threads.h"
 #include "sim/world.h"
 
 #include <QTest>
@@ -64,6 +66,7 @@ private slots:
     void sameSeedSameBits();
     void everyDetectorSameBits();
     void otherSeedOtherBits();
+    void everyThreadCountSameBits();
 };
 
 void TestReproducible::sameSeedSameBits()
@@ -93,6 +96,27 @@ void TestReproducible::otherSeedOtherBits()
     const std::uint64_t a = run(scene, 100);
     scene.spawn.seed += 1;
     QVERIFY(run(scene, 100) != a);
+}
+
+// The resting solver's passes run on every core (row_strips.h): a pile of
+// 8,000 balls, enough rows for the strips to be shared out, gives the same
+// bits on one thread and on two, step for step, and so does the showcase.
+void TestReproducible::everyThreadCountSameBits()
+{
+    const Scene pile = peerScene(8000);
+    std::uint64_t pileHash[2] = {0, 0}, showcaseHash[2] = {0, 0};
+    for (int threads : {1, 2}) {
+        const ThreadLimit limit(threads);
+        QVERIFY(availableThreads() >= 1 && availableThreads() <= threads);
+        World w(pile);
+        for (int k = 0; k < 120; ++k)
+            w.step();
+        QVERIFY(w.collisionSystem().lastVelocityPasses() > 1); // the solver ran its passes
+        pileHash[threads - 1] = hashState(w);
+        showcaseHash[threads - 1] = run(showcase(), 2000);
+    }
+    QCOMPARE(pileHash[1], pileHash[0]);
+    QCOMPARE(showcaseHash[1], showcaseHash[0]);
 }
 
 QTEST_GUILESS_MAIN(TestReproducible)

@@ -168,20 +168,12 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
                          restingSpeed > 0.0 && std::isfinite(restingSpeed);
     if (resting && m_solver.speculative > 0.0) {
         // Speculative contacts: every ball grown by the distance one sub-step
-        // can bring it closer, |v|·h + |g|·h², at most `speculative` of its
-        // radius. The grown pairs include every overlapping pair (a sum of
-        // larger numbers is never smaller in floating point), and all four
-        // detectors find the same grown pairs in the same order.
-        const double* v = balls.velocity.data();
-        const double* radius = balls.radius.data();
-        const double fall = g * dt * dt;
-        const double cap = m_solver.speculative;
-        m_grow.resize(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) {
-            const double reach = std::sqrt(v[2 * i] * v[2 * i] + v[2 * i + 1] * v[2 * i + 1]) * dt + fall;
-            const double most = cap * radius[i];
-            m_grow[static_cast<std::size_t>(i)] = reach < most ? reach : most; // NaN speed: the cap
-        }
+        // can bring it closer to a neighbour, |v − u|·h + |g|·h² with u the
+        // mean velocity around it, at most `speculative` of its radius
+        // (speculative_margin.h). The grown pairs include every overlapping
+        // pair (a sum of larger numbers is never smaller in floating point),
+        // and all four detectors find the same grown pairs in the same order.
+        m_margin.compute(balls, dt, g * dt * dt, m_solver.speculative, m_grow);
         m_input.loadStatic(balls, m_grow.data());
         clock.lap(m_profile.load);
         findContacts(settings.detection, false, m_speculative, stats, clock);

@@ -17,6 +17,7 @@
 #include "contact_solver.h"
 #include "contact_sort.h"
 #include "resting_solver.h"
+#include "speculative_margin.h"
 #include "sub_step_context.h"
 #include "sweep_and_prune.h"
 #include "uniform_grid.h"
@@ -84,6 +85,7 @@ private:
                            double h, double restingSpeed, double gravity) const;
 
     RestingSolver m_resting;
+    SpeculativeMargin m_margin;
     std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts
     std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)
     ContactSolverSettings m_solver;

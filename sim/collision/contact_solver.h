@@ -36,7 +36,8 @@
 //    faster than v_rest, so a floor ball under a pile does not hop every step.
 // 4. Speculative contacts. A pair that does not touch yet but is closer than
 //    one sub-step of motion can close (each ball's radius grown by
-//    |v|·h + |g|·h², at most `speculative` of its radius) is a contact too,
+//    |v − u|·h + |g|·h², u the mean velocity of the balls around it, at most
+//    `speculative` of its radius: speculative_margin.h) is a contact too,
 //    one that may close its gap but no more: its normal speed may not drop
 //    below −gap/h. Line of impact and gap are taken at the start of the
 //    sub-step (the centres less (v_b − v_a)·h), where a fast ball is not yet
@@ -57,7 +58,7 @@ struct ContactSolverSettings {
     double relaxTolerance = 0.001; ///< 1, stop the passes when no pair approaches faster than this × v_rest
     double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
     double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
-    int positionPasses = 2;       ///< 1, passes of positional correction per sub-step
+    int positionPasses = 4;       ///< 1, passes of positional correction per sub-step
     double speculative = 4.0;     ///< 1, most a ball's radius grows by to find speculative contacts (0: none)
 };
 

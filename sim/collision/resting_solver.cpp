@@ -46,6 +46,13 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     buildPairRows(balls, c, pairs, touching);
     clock.lap(profile.build);
     buildWallRows(balls, c);
+    static_assert(sizeof(BodyPosition) == 4 * sizeof(double));
+    m_strips.build(&m_bodyPositions.data()->x, m_rowCount,
+                   [this](std::size_t k) { return 4 * static_cast<std::size_t>(m_pairRows[k].a); },
+                   [this](std::size_t k) { return 4 * static_cast<std::size_t>(m_pairRows[k].b); });
+    sortRowsByStrip();
+    m_stripMoved.resize(m_strips.stripCount());
+    m_stripSolves.resize(m_strips.stripCount());
     for (const auto& [ball, axis] : m_takenBack) {
         // The integrator's step ended on the wall: the position stage moves
         // such a ball by its new velocity alone, from the wall.
@@ -65,7 +72,42 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     correctPositions(c);
     clock.lap(profile.correction);
     writeBack(balls, c);
+    restoreRowOrder();
     clock.lap(profile.position);
+}
+
+// The rows, their impulses and approach speeds moved into strip order
+// (row_strips.h), so the rows of a strip are read side by side.
+void RestingSolver::sortRowsByStrip()
+{
+    const std::vector<int>& order = m_strips.order();
+    if (m_spareRows.size() < m_rowCount) { // the arrays only grow
+        m_spareRows.resize(m_rowCount);
+        m_spareImpulse.resize(m_rowCount);
+    }
+    if (m_spareVn0.size() < m_rowCount)
+        m_spareVn0.resize(m_rowCount);
+    for (std::size_t i = 0; i < m_rowCount; ++i) {
+        const auto k = static_cast<std::size_t>(order[i]);
+        m_spareRows[i] = m_pairRows[k];
+        m_spareImpulse[i] = m_impulse[k];
+        m_spareVn0[i] = m_vn0[k];
+    }
+    m_pairRows.swap(m_spareRows);
+    m_impulse.swap(m_spareImpulse);
+    m_vn0.swap(m_spareVn0);
+}
+
+// The impulses back in (a, b) order, beside m_rowBalls, for the next
+// sub-step's warm-start merge.
+void RestingSolver::restoreRowOrder()
+{
+    const std::vector<int>& order = m_strips.order();
+    if (m_spareImpulse.size() < m_rowCount)
+        m_spareImpulse.resize(m_rowCount);
+    for (std::size_t i = 0; i < m_rowCount; ++i)
+        m_spareImpulse[static_cast<std::size_t>(order[i])] = m_impulse[i];
+    m_impulse.swap(m_spareImpulse);
 }
 
 void RestingSolver::prepare(int n)
@@ -156,12 +198,16 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
     const double* radius = balls.radius.data();
     const double* inverseMass = balls.inverseMass.data();
     const std::size_t m = pairs.size();
-    if (m_spareRows.size() < m) {
-        m_spareRows.resize(m);
+    // The arrays only grow; the strip sort and its undoing swap some of them
+    // with their spares, so each is checked on its own.
+    for (auto* rows : {&m_spareRows})
+        if (rows->size() < m)
+            rows->resize(m);
+    if (m_spareBalls.size() < m)
         m_spareBalls.resize(m);
-        m_spareImpulse.resize(m);
-        m_vn0.resize(m);
-    }
+    for (auto* values : {&m_spareImpulse, &m_vn0})
+        if (values->size() < m)
+            values->resize(m);
     std::size_t old = 0, count = 0, overlapping = 0;
     const std::size_t oldCount = m_rowCount;
     const Contact* oldBalls = m_rowBalls.data();
@@ -335,27 +381,42 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
     for (int pass = 0; pass < passes; ++pass) {
         bool moved = false;
         const int since = pass - 1;
-        forEachInterleaved(m_rowCount, [&](std::size_t k) {
-            const PairRow& row = rows[k];
-            Body& ba = body[row.a];
-            Body& bb = body[row.b];
-            if (pass > 0 && ba.changed < since && bb.changed < since)
-                return;
-            ++solves;
-            const double total = std::max(impulse[k] - (normalSpeed(row) + row.allowed) * row.mass, 0.0);
-            const double j = total - impulse[k];
-            impulse[k] = total;
-            applyPair(row, j);
-            const double dj = std::abs(j);
-            if (dj * ba.w > tolerance) {
-                ba.changed = pass;
-                moved = true;
-            }
-            if (dj * bb.w > tolerance) {
-                bb.changed = pass;
-                moved = true;
-            }
+        // Strip by strip (row_strips.h): each strip's rows in their order,
+        // its own flag and count, combined in strip order afterwards.
+        m_strips.run([&](int strip, int begin, int end) {
+            bool stripMoved = false;
+            std::int64_t stripSolves = 0;
+            forEachInterleaved(static_cast<std::size_t>(end - begin), [&](std::size_t i) {
+                const std::size_t k = static_cast<std::size_t>(begin) + i;
+                const PairRow& row = rows[k];
+                Body& ba = body[row.a];
+                Body& bb = body[row.b];
+                if (pass > 0 && ba.changed < since && bb.changed < since)
+                    return;
+                ++stripSolves;
+                const double total = std::max(impulse[k] - (normalSpeed(row) + row.allowed) * row.mass, 0.0);
+                const double j = total - impulse[k];
+                impulse[k] = total;
+                applyPair(row, j);
+                const double dj = std::abs(j);
+                if (dj * ba.w > tolerance) {
+                    ba.changed = pass;
+                    stripMoved = true;
+                }
+                if (dj * bb.w > tolerance) {
+                    bb.changed = pass;
+                    stripMoved = true;
+                }
+            });
+            m_stripMoved[static_cast<std::size_t>(strip)] = stripMoved;
+            m_stripSolves[static_cast<std::size_t>(strip)] = stripSolves;
         });
+        for (std::size_t s = 0; s < m_strips.stripCount(); ++s) {
+            moved = moved || m_stripMoved[s];
+            solves += m_stripSolves[s];
+            m_stripMoved[s] = 0;
+            m_stripSolves[s] = 0;
+        }
         for (WallRow& row : m_wallRows) {
             Body& bw = body[row.body];
             if (pass > 0 && bw.changed < since)
@@ -461,7 +522,9 @@ void RestingSolver::correctPositions(const SubStepContext& c)
     const PairRow* rows = m_pairRows.data();
     BodyPosition* position = m_bodyPositions.data();
     for (int pass = 0; pass < std::max(1, c.solver.positionPasses); ++pass) {
-        forEachInterleaved(m_rowCount, [&](std::size_t k) {
+        m_strips.run([&](int, int begin, int end) {
+        forEachInterleaved(static_cast<std::size_t>(end - begin), [&](std::size_t i) {
+            const std::size_t k = static_cast<std::size_t>(begin) + i;
             const PairRow& row = rows[k];
             BodyPosition& A = position[row.a];
             BodyPosition& B = position[row.b];
@@ -490,6 +553,7 @@ void RestingSolver::correctPositions(const SubStepContext& c)
             A.y = pa.y();
             B.x = pb.x();
             B.y = pb.y();
+        });
         });
     }
 }

@@ -24,9 +24,11 @@
 #include "../ball_state.h"
 #include "collision_profile.h"
 #include "contact.h"
+#include "row_strips.h"
 #include "sub_step_context.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -90,6 +92,8 @@ private:
     void buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                        std::vector<Contact>* touching);
     void buildWallRows(const BallState& balls, const SubStepContext& c);
+    void sortRowsByStrip();
+    void restoreRowOrder();
     void warmStart();
     void relax(const SubStepContext& c, CollisionProfile& profile, bool profiling);
     void bounce(const SubStepContext& c, CollisionProfile& profile, bool profiling);
@@ -105,7 +109,7 @@ private:
     // the first m_rowCount hold this sub-step's rows.
     std::vector<PairRow> m_pairRows, m_spareRows;
     std::vector<Contact> m_rowBalls, m_spareBalls;
-    std::vector<double> m_impulse, m_spareImpulse, m_vn0;
+    std::vector<double> m_impulse, m_spareImpulse, m_vn0, m_spareVn0;
     std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;
@@ -113,6 +117,9 @@ private:
     std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
     std::vector<double> m_bodyVelocity0;
     std::vector<std::pair<int, int>> m_takenBack; // (ball, axis) whose wall bounce stage 0 took back
+    RowStrips m_strips;                      // the rows cut into strips for the passes (row_strips.h)
+    std::vector<unsigned char> m_stripMoved; // per strip, this pass: a ball changed by more than the tolerance
+    std::vector<std::int64_t> m_stripSolves; // per strip, this pass: rows solved
     int m_bodyCount = 0;
     int m_warmCount = -1;
     int m_lastPasses = 0;
