@@ -160,6 +160,7 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
 void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& c)
 {
     m_takenBack.clear();
+    m_tookBack.assign(2 * static_cast<std::size_t>(balls.size()), 0);
     const double ew = c.walls.restitution;
     if (!(ew > 0.0))
         return;
@@ -178,6 +179,7 @@ void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& 
             if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
                 vk = -vk / ew;
                 m_takenBack.push_back({i, k});
+                m_tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = 1;
             }
         }
     }
@@ -257,8 +259,6 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         m_spareImpulse[count] = warm;
         // A pair that pushed on each other in the last sub-step rests: only a
         // new contact bounces (a pile's pairs do not trade small bounces).
-        // A pair that pushed on each other in the last sub-step rests: only a
-        // new contact bounces (a pile's pairs do not trade small bounces).
         m_vn0[count] = warm > 0.0 ? 0.0 : vn0;
         ++count;
     }
@@ -276,11 +276,14 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
 // wall in this sub-step (a ball that just bounced off a wall can be pushed
 // back into it by the balls above).
 //
-// How fast it may still move towards the wall: the gap over h, less the speed
-// it already leaves the wall with. The position stage moves a body by
-// (v − v_before)·h, so a ball the wall stage has just sent away at speed u
-// ends the sub-step gap − (v_wall + u)·h from the wall, where v_wall is its new
-// speed towards it: it stays inside only for v_wall ≤ gap/h − u.
+// How fast it may still move towards the wall: the position stage moves a
+// body by (v − v_before)·h, so a ball whose speed towards the wall was u
+// when the integrator moved it (negative: away) ends the sub-step
+// gap − (v_wall − u)·h from the wall, where v_wall is its new speed towards
+// it: it stays inside only for v_wall ≤ gap/h + u. A ball that is not
+// near the end of its flight is never held back (a lone ball bounces as the
+// wall model makes it); a ball whose bounce stage 0 took back starts on the
+// wall (u = 0 for the position stage).
 void RestingSolver::buildWallRows(const BallState& balls, const SubStepContext& c)
 {
     m_spareWalls.clear();
@@ -303,7 +306,13 @@ void RestingSolver::buildWallRows(const BallState& balls, const SubStepContext& 
             const double w = inverseMass[i];
             const int bi = bodyFor(static_cast<std::size_t>(i), balls);
             const double into = side * v[2 * i + k];
-            const double allowed = std::max(std::max(gap, 0.0) / h + std::min(into, 0.0), 0.0);
+            // The integrator has moved the ball by its speed into the wall
+            // already (none for a ball whose bounce stage 0 took back: it
+            // starts on the wall), so the speed that ends the sub-step on the
+            // wall is the gap over h plus that speed, the same as a pair
+            // row's gap at the start of the sub-step over h.
+            const double moved = m_tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] ? 0.0 : into;
+            const double allowed = std::max(std::max(gap, 0.0) / h + moved, 0.0);
             m_spareWalls.push_back({key, bi, k, side, allowed, w, into, warm});
         };
         // Nothing near a wall gets a row: a quick test on the largest margin first.
