@@ -81,12 +81,11 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
 void RestingSolver::sortRowsByStrip()
 {
     const std::vector<int>& order = m_strips.order();
-    if (m_spareRows.size() < m_rowCount) { // the arrays only grow
+    if (m_spareRows.size() < m_rowCount) // the arrays only grow
         m_spareRows.resize(m_rowCount);
-        m_spareImpulse.resize(m_rowCount);
-    }
-    if (m_spareVn0.size() < m_rowCount)
-        m_spareVn0.resize(m_rowCount);
+    for (auto* values : {&m_spareImpulse, &m_spareVn0})
+        if (values->size() < m_rowCount)
+            values->resize(m_rowCount);
     for (std::size_t i = 0; i < m_rowCount; ++i) {
         const auto k = static_cast<std::size_t>(order[i]);
         m_spareRows[i] = m_pairRows[k];
@@ -202,9 +201,8 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
     const std::size_t m = pairs.size();
     // The arrays only grow; the strip sort and its undoing swap some of them
     // with their spares, so each is checked on its own.
-    for (auto* rows : {&m_spareRows})
-        if (rows->size() < m)
-            rows->resize(m);
+    if (m_spareRows.size() < m)
+        m_spareRows.resize(m);
     if (m_spareBalls.size() < m)
         m_spareBalls.resize(m);
     for (auto* values : {&m_spareImpulse, &m_vn0})
