@@ -13,9 +13,9 @@
 //
 // The cut depends on the positions alone (at most kMostStrips strips, never
 // the thread count), so one thread and eight make the same operations on
-// every ball in the same order, to the bit. A few hundred rows are not worth
-// waking a second core for: below kParallelRows the strips run in order on
-// the calling thread (the same operations again).
+// every ball in the same order, to the bit. A few thousand rows are not
+// worth waking a second core for: below kParallelRows the strips run in
+// order on the calling thread (the same operations again).
 
 #include <algorithm>
 #include <cstddef>
@@ -29,8 +29,8 @@ public:
     static constexpr int kMostStrips = 64;
     static constexpr std::size_t kParallelRows = 4096;
 
-    /// Cuts the rows k = 0 .. rows − 1, whose balls are bodyA(k) and bodyB(k)
-    /// with x positions x[body].
+    /// Cuts the rows k = 0 .. rows − 1, whose two balls have the x positions
+    /// x[bodyA(k)] and x[bodyB(k)].
     template <class BodyA, class BodyB>
     void build(const double* x, std::size_t rows, BodyA bodyA, BodyB bodyB);
 
