@@ -711,104 +711,103 @@ void parseClaim(Reader& r, const QJsonObject& o, const QString& p, int balls, si
         parseSet(r, *set, join(p, "set"), c.set);
 }
 
-void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Claim>& out)
+/// A list of objects with at most `most` entries (`unit` names them in the
+/// message): each object is read by parseOne(object, path), which returns
+/// the entry; an entry that is not an object is refused with `expected`, and
+/// the list is read on. Too long a list is refused whole and `out` kept.
+template <class T, class ParseOne>
+void objectList(Reader& r, const QJsonArray& a, const QString& base, int most, const char* unit,
+                const QString& expected, std::vector<T>& out, ParseOne parseOne)
 {
-    const QString base = QStringLiteral("claims");
-    if (a.size() > kMaxListEntries) {
-        r.fail(base, QStringLiteral("%1 entries is more than the limit of %2").arg(a.size()).arg(kMaxListEntries));
+    if (a.size() > most) {
+        r.fail(base, QStringLiteral("%1 %2 is more than the limit of %3").arg(a.size()).arg(QLatin1String(unit)).arg(most));
         return;
     }
     out.clear();
     for (qsizetype i = 0; i < a.size(); ++i) {
         const QString p = join(base, i);
         if (!a.at(i).isObject()) {
-            r.fail(p, QStringLiteral("expected a claim object {\"says\": …, \"measure\": …}, got ") + describe(a.at(i)));
+            r.fail(p, QStringLiteral("expected %1, got %2").arg(expected, describe(a.at(i))));
             continue;
         }
-        sim::Claim c;
-        parseClaim(r, a.at(i).toObject(), p, balls, c);
-        out.push_back(std::move(c));
+        out.push_back(parseOne(a.at(i).toObject(), p));
     }
+}
+
+void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Claim>& out)
+{
+    objectList(r, a, QStringLiteral("claims"), kMaxListEntries, "entries",
+               QStringLiteral("a claim object {\"says\": …, \"measure\": …}"), out,
+               [&](const QJsonObject& o, const QString& p) {
+                   sim::Claim c;
+                   parseClaim(r, o, p, balls, c);
+                   return c;
+               });
+}
+
+/// {"ask": "How high …?", "claim": 0, "choices": [{"label": "…", "value": 0}, …]}:
+/// one question, answered by the claim with that index.
+Prediction parseQuestion(Reader& r, const QJsonObject& o, const QString& p, int claims)
+{
+    r.checkKeys(o, p, {"ask", "claim", "choices"});
+    Prediction q;
+    if (r.require(o, p, "ask", QStringLiteral("the question, e.g. \"How high will the ball rise?\"")))
+        r.string(o, p, "ask", q.ask);
+    if (r.require(o, p, "claim", QStringLiteral("the index of the claim whose measurement answers it"))) {
+        if (claims == 0)
+            r.fail(join(p, "claim"), QStringLiteral("the lesson has no claims to answer the question"));
+        else
+            r.integer(o, p, "claim", 0, claims - 1, q.claim);
+    }
+    if (const auto c = r.array(o, p, "choices", QStringLiteral("an array of {\"label\": …, \"value\": …}"))) {
+        const QString cp = join(p, "choices");
+        if (c->size() < 2 || c->size() > 8)
+            r.fail(cp, QStringLiteral("%1 %2; give 2 to 8").arg(c->size()).arg(c->size() == 1 ? "choice" : "choices"));
+        for (qsizetype k = 0; k < c->size(); ++k) {
+            const QString kp = join(cp, k);
+            if (!c->at(k).isObject()) {
+                r.fail(kp, QStringLiteral("expected {\"label\": …, \"value\": …}, got ") + describe(c->at(k)));
+                continue;
+            }
+            const QJsonObject choice = c->at(k).toObject();
+            r.checkKeys(choice, kp, {"label", "value"});
+            QString label;
+            double value = 0.0;
+            r.require(choice, kp, "label", QStringLiteral("the answer as the student reads it"));
+            r.require(choice, kp, "value", QStringLiteral("the answer in the claim's unit"));
+            if (r.string(choice, kp, "label", label) && r.number(choice, kp, "value", range::kClaimNumber, value)) {
+                q.choices << label;
+                q.values.push_back(value);
+            }
+        }
+    }
+    return q;
 }
 
 /// [{"ask": "How high …?", "claim": 0}, {"ask": "…", "claim": 1, "choices":
 /// [{"label": "…", "value": 0}, …]}]: each question is answered by a claim.
 void parsePredict(Reader& r, const QJsonArray& a, int claims, std::vector<Prediction>& out)
 {
-    const QString base = QStringLiteral("predict");
-    if (a.size() > kMaxListEntries) {
-        r.fail(base, QStringLiteral("%1 entries is more than the limit of %2").arg(a.size()).arg(kMaxListEntries));
-        return;
-    }
-    out.clear();
-    for (qsizetype i = 0; i < a.size(); ++i) {
-        const QString p = join(base, i);
-        if (!a.at(i).isObject()) {
-            r.fail(p, QStringLiteral("expected a question {\"ask\": …, \"claim\": …}, got ") + describe(a.at(i)));
-            continue;
-        }
-        const QJsonObject o = a.at(i).toObject();
-        r.checkKeys(o, p, {"ask", "claim", "choices"});
-        Prediction q;
-        if (r.require(o, p, "ask", QStringLiteral("the question, e.g. \"How high will the ball rise?\"")))
-            r.string(o, p, "ask", q.ask);
-        if (r.require(o, p, "claim", QStringLiteral("the index of the claim whose measurement answers it"))) {
-            if (claims == 0)
-                r.fail(join(p, "claim"), QStringLiteral("the lesson has no claims to answer the question"));
-            else
-                r.integer(o, p, "claim", 0, claims - 1, q.claim);
-        }
-        if (const auto c = r.array(o, p, "choices", QStringLiteral("an array of {\"label\": …, \"value\": …}"))) {
-            const QString cp = join(p, "choices");
-            if (c->size() < 2 || c->size() > 8)
-                r.fail(cp, QStringLiteral("%1 %2; give 2 to 8").arg(c->size()).arg(c->size() == 1 ? "choice" : "choices"));
-            for (qsizetype k = 0; k < c->size(); ++k) {
-                const QString kp = join(cp, k);
-                if (!c->at(k).isObject()) {
-                    r.fail(kp, QStringLiteral("expected {\"label\": …, \"value\": …}, got ") + describe(c->at(k)));
-                    continue;
-                }
-                const QJsonObject choice = c->at(k).toObject();
-                r.checkKeys(choice, kp, {"label", "value"});
-                QString label;
-                double value = 0.0;
-                r.require(choice, kp, "label", QStringLiteral("the answer as the student reads it"));
-                r.require(choice, kp, "value", QStringLiteral("the answer in the claim's unit"));
-                if (r.string(choice, kp, "label", label) && r.number(choice, kp, "value", range::kClaimNumber, value)) {
-                    q.choices << label;
-                    q.values.push_back(value);
-                }
-            }
-        }
-        out.push_back(std::move(q));
-    }
+    objectList(r, a, QStringLiteral("predict"), kMaxListEntries, "entries",
+               QStringLiteral("a question {\"ask\": …, \"claim\": …}"), out,
+               [&](const QJsonObject& o, const QString& p) { return parseQuestion(r, o, p, claims); });
 }
 
 /// [{"label": "mirror", "set": {"world.wall_model": "mirror"}}, …]
 void parseCompare(Reader& r, const QJsonArray& a, std::vector<ComparePane>& out)
 {
-    const QString base = QStringLiteral("compare");
-    if (a.size() > Lesson::kMaxComparePanes) {
-        r.fail(base, QStringLiteral("%1 panes is more than the limit of %2").arg(a.size()).arg(Lesson::kMaxComparePanes));
-        return;
-    }
-    out.clear();
-    for (qsizetype i = 0; i < a.size(); ++i) {
-        const QString p = join(base, i);
-        if (!a.at(i).isObject()) {
-            r.fail(p, QStringLiteral("expected a pane {\"label\": …, \"set\": {…}}, got ") + describe(a.at(i)));
-            continue;
-        }
-        const QJsonObject o = a.at(i).toObject();
-        r.checkKeys(o, p, {"label", "set"});
-        ComparePane pane;
-        if (r.require(o, p, "label", QStringLiteral("the pane's name, e.g. \"mirror\"")))
-            r.string(o, p, "label", pane.label);
-        if (r.require(o, p, "set", QStringLiteral("the settings this pane runs with, {\"key.path\": value}")))
-            if (const auto set = r.object(o, p, "set"))
-                parseSet(r, *set, join(p, "set"), pane.set);
-        out.push_back(std::move(pane));
-    }
+    objectList(r, a, QStringLiteral("compare"), Lesson::kMaxComparePanes, "panes",
+               QStringLiteral("a pane {\"label\": …, \"set\": {…}}"), out,
+               [&](const QJsonObject& o, const QString& p) {
+                   r.checkKeys(o, p, {"label", "set"});
+                   ComparePane pane;
+                   if (r.require(o, p, "label", QStringLiteral("the pane's name, e.g. \"mirror\"")))
+                       r.string(o, p, "label", pane.label);
+                   if (r.require(o, p, "set", QStringLiteral("the settings this pane runs with, {\"key.path\": value}")))
+                       if (const auto set = r.object(o, p, "set"))
+                           parseSet(r, *set, join(p, "set"), pane.set);
+                   return pane;
+               });
 }
 
 /// {"goal": "…", "minutes": 20, "misconceptions": […], "answers": […]}: one
