@@ -70,14 +70,21 @@ void SpeculativeMargin::compute(const BallState& balls, double h, double fall, d
         const double vx = v[2 * i], vy = v[2 * i + 1];
         if (std::isfinite(vx) && std::isfinite(vy)) {
             Cell& c = m_cells[static_cast<std::size_t>(cell)];
-            c.sumX += vx;
-            c.sumY += vy;
+            c.vx += vx;
+            c.vy += vy;
             ++c.count;
         }
     }
 
-    // 4. Per cell, the box spanned by the mean velocities of the non-empty
-    // cells among it and its eight neighbours (an empty box when all are empty).
+    // 4. Per cell, the mean velocity of its balls (the sums become means);
+    // then the box spanned by the means of the non-empty cells among it and
+    // its eight neighbours (an empty box when all are empty).
+    for (Cell& c : m_cells) {
+        if (c.count > 0) {
+            c.vx /= c.count;
+            c.vy /= c.count;
+        }
+    }
     m_boxes.resize(cellCount);
     for (int cy = 0; cy < m_rows; ++cy) {
         for (int cx = 0; cx < m_columns; ++cx) {
@@ -87,7 +94,7 @@ void SpeculativeMargin::compute(const BallState& balls, double h, double fall, d
                     const Cell& c = m_cells[static_cast<std::size_t>(ny * m_columns + nx)];
                     if (c.count == 0)
                         continue;
-                    const double ux = c.sumX / c.count, uy = c.sumY / c.count;
+                    const double ux = c.vx, uy = c.vy;
                     box.loX = std::min(box.loX, ux);
                     box.hiX = std::max(box.hiX, ux);
                     box.loY = std::min(box.loY, uy);

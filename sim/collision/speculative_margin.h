@@ -45,10 +45,11 @@ public:
     int rows() const { return m_rows; }
 
 private:
-    // Per cell: the sum of its balls' velocities and their count, then the
-    // box of the mean velocities over the cell and its eight neighbours.
+    // Per cell: its balls' velocities summed and counted, then divided into
+    // their mean (stage 4 of compute()); and the box of the means over the
+    // cell and its eight neighbours.
     struct Cell {
-        double sumX = 0.0, sumY = 0.0;
+        double vx = 0.0, vy = 0.0;
         int count = 0;
     };
     struct VelocityBox {
