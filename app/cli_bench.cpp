@@ -117,14 +117,13 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     }
     std::unique_ptr<sim::ThreadLimit> limit;
     if (has("threads")) {
-        const std::string v = valueOf(parser, "threads");
-        char* end = nullptr;
-        const long t = std::strtol(v.c_str(), &end, 10);
-        if (v.empty() || *end != '\0' || t < 1 || t > 256) {
-            err << "forcelab-cli bench: --threads: expected an integer in [1, 256], got '" << v << "'\n";
+        const auto t = parseSizes(valueOf(parser, "threads"));
+        if (!t || t->size() != 1 || (*t)[0] < 1 || (*t)[0] > 256) {
+            err << "forcelab-cli bench: --threads: expected an integer in [1, 256], got '" << valueOf(parser, "threads")
+                << "'\n";
             return 2;
         }
-        limit = std::make_unique<sim::ThreadLimit>(static_cast<int>(t));
+        limit = std::make_unique<sim::ThreadLimit>((*t)[0]);
     }
     out << "Threads for the solver's passes: " << sim::availableThreads()
         << " (step ms is wall-clock time; cpu columns are the calling thread's CPU time)\n";
