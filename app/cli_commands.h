@@ -42,6 +42,9 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
 void declareRender(QCommandLineParser& parser);
 int renderCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
+void declarePile(QCommandLineParser& parser);
+int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
 void declareSoak(QCommandLineParser& parser);
 int soakCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 

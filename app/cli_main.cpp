@@ -50,6 +50,8 @@ const Command kCommands[] = {
      &sweepCommand},
     {"render", "Draw a lesson at simulated time T as the workbench's canvas shows it.", &declareRender,
      &renderCommand},
+    {"pile", "Follow the peer scene's pile as it settles: overlaps, jitter and height every half second.",
+     &declarePile, &pileCommand},
     {"soak", "A long run of a box with collisions: energy, NaN and memory over 10^6 steps.", &declareSoak,
      &soakCommand},
     {"params", "Print the parameter reference (docs/parameters.md): every setting, its unit, default and range.",

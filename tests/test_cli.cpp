@@ -54,6 +54,7 @@ private slots:
     void aFolderIsNamedAsOne();
     void toleranceBelowRoundingIsSaid();
     void workbenchHelpNeedsNoDisplay();
+    void pileSettlesToHexPacking();
 
 private:
     QTemporaryDir m_dir;
@@ -173,6 +174,7 @@ void TestCli::everyCommandHasHelp_data()
     QTest::newRow("sweep") << "sweep" << QStringList{"--problem", "--quick", "--csv", "--png"};
     QTest::newRow("render") << "render" << QStringList{"--time", "--out", "--size"};
     QTest::newRow("soak") << "soak" << QStringList{"--steps", "--balls"};
+    QTest::newRow("pile") << "pile" << QStringList{"--balls", "--substeps", "--position-passes", "--correction"};
     QTest::newRow("params") << "params" << QStringList{};
 }
 
@@ -352,6 +354,10 @@ void TestCli::badInputExitsTwo_data()
     QTest::newRow("missing file") << QStringList{"run", "/nonexistent/lesson.json"} << "lesson.json";
     QTest::newRow("unknown option") << QStringList{"run", "@L", "--fast"} << "Unknown option 'fast'";
     QTest::newRow("unknown command") << QStringList{"walk"} << "walk";
+    QTest::newRow("pile of no balls") << QStringList{"pile", "--balls", "0"}
+                                      << "forcelab-cli pile: --balls: expected a whole number in [1, 1e+06], got '0'";
+    QTest::newRow("pile correction NaN") << QStringList{"pile", "--correction", "nan"} << "--correction: expected a number";
+    QTest::newRow("pile half a pass") << QStringList{"pile", "--position-passes", "2.5"} << "--position-passes";
 }
 
 void TestCli::badInputExitsTwo()
@@ -365,6 +371,34 @@ void TestCli::badInputExitsTwo()
     const QString err = r.err.trimmed();
     QVERIFY2(!err.isEmpty() && err.count('\n') == 0, qPrintable(err)); // exactly one line
     QVERIFY2(err.contains(message), qPrintable(err));
+}
+
+// `pile` follows 300 balls of the peer scene for 4 s. They settle into
+// touching rows: the box is √(300 π 5² / 0.3) = 280.2 px wide, so rows of 28
+// and 27 balls alternate, 8.66 px (10 · √3/2) apart, from 5 px above the
+// floor. Ten full rows hold 275 balls and the eleventh the other 25, so the
+// mean centre height of that hexagonal packing is 14,360 / 300 = 47.9 px.
+// A pile cannot pack tighter without overlapping, and one with a few gaps
+// stands a little higher: the last row must lie within [-1%, +3%] of it,
+// and the pile must be slower at the end than after one second.
+void TestCli::pileSettlesToHexPacking()
+{
+    const CliResult r = runCli({"pile", "--balls", "300", "--seconds", "4", "--every", "1"});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY(r.err.isEmpty());
+    QStringList rows;
+    for (const QString& line : r.out.split('\n', Qt::SkipEmptyParts))
+        if (line.trimmed().front().isDigit())
+            rows << line;
+    QCOMPARE(rows.size(), 4);
+    auto column = [](const QString& row, int k) { return row.split(' ', Qt::SkipEmptyParts).at(k).toDouble(); };
+    QCOMPARE(column(rows.last(), 0), 4.0);
+    const double hex = (28 * (5 * 5 + 8.660254 * (0 + 2 + 4 + 6 + 8)) + 27 * (5 * 5 + 8.660254 * (1 + 3 + 5 + 7 + 9)) +
+                        25 * (5 + 8.660254 * 10)) /
+                       300.0;
+    const double height = column(rows.last(), 6);
+    QVERIFY2(height > 0.99 * hex && height < 1.03 * hex, qPrintable(QString("height %1, hex packing %2").arg(height).arg(hex)));
+    QVERIFY2(column(rows.last(), 3) < column(rows.first(), 3), qPrintable(r.out));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

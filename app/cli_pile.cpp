@@ -1,0 +1,89 @@
+// forcelab-cli pile: the peer scene's pile followed in time
+// (sim/pile_study.h), with the solver's knobs as options, so each figure of
+// the jitter study in docs/performance.md can be run again.
+
+#include "cli_args.h"
+#include "cli_commands.h"
+
+#include "sim/pile_study.h"
+#include "sim/threads.h"
+
+#include <cmath>
+#include <functional>
+#include <memory>
+
+namespace forcelab::cli {
+namespace {
+
+// One numeric option: its name, what it sets (with the unit), its range, and
+// whether it must be whole.
+struct PileOption {
+    const char* name;
+    const char* help;
+    double min, max;
+    bool whole;
+    std::function<void(sim::PileStudyOptions&, double)> set;
+};
+
+const std::vector<PileOption>& pileOptions()
+{
+    static const std::vector<PileOption> options = {
+        {"balls", "Balls in the peer scene (default 5000).", 1, 1000000, true,
+         [](sim::PileStudyOptions& o, double v) { o.balls = static_cast<int>(v); }},
+        {"substeps", "Sub-steps per 1/60 s step (default 1).", 1, 64, true,
+         [](sim::PileStudyOptions& o, double v) { o.substeps = static_cast<int>(v); }},
+        {"seconds", "Simulated time in s (default 10).", 0.1, 600, false,
+         [](sim::PileStudyOptions& o, double v) { o.seconds = v; }},
+        {"every", "Seconds between two rows (default 0.5).", 1.0 / 60.0, 600, false,
+         [](sim::PileStudyOptions& o, double v) { o.every = v; }},
+        {"restitution", "Restitution e of balls and walls (default 0.9).", 0, 1, false,
+         [](sim::PileStudyOptions& o, double v) { o.restitution = v; }},
+        {"velocity-passes", "Most velocity passes per sub-step (default 30).", 1, 10000, true,
+         [](sim::PileStudyOptions& o, double v) { o.solver.velocityPasses = static_cast<int>(v); }},
+        {"position-passes", "Passes of positional correction per sub-step (default 4).", 1, 1000, true,
+         [](sim::PileStudyOptions& o, double v) { o.solver.positionPasses = static_cast<int>(v); }},
+        {"correction", "Share of the overlap beyond the slop removed per pass (default 0.8; 0: none).", 0, 1, false,
+         [](sim::PileStudyOptions& o, double v) { o.solver.correction = v; }},
+        {"slop", "Overlap allowed, as a share of the smaller radius (default 0.005).", 0, 0.5, false,
+         [](sim::PileStudyOptions& o, double v) { o.solver.slop = v; }},
+        {"threads", "Most threads for the solver's passes (default: every core; same bits for any count).", 1, 256,
+         true, [](sim::PileStudyOptions&, double) {}},
+    };
+    return options;
+}
+
+} // namespace
+
+void declarePile(QCommandLineParser& p)
+{
+    for (const PileOption& o : pileOptions())
+        p.addOption({QString::fromLatin1(o.name), QString::fromLatin1(o.help), QStringLiteral("X")});
+}
+
+int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
+{
+    sim::PileStudyOptions study;
+    std::unique_ptr<sim::ThreadLimit> limit;
+    for (const PileOption& o : pileOptions()) {
+        if (!parser.isSet(QString::fromLatin1(o.name)))
+            continue;
+        const std::string text = valueOf(parser, o.name);
+        const auto v = parseFiniteNumber(text);
+        if (!v || *v < o.min || *v > o.max || (o.whole && std::floor(*v) != *v)) {
+            err << "forcelab-cli pile: --" << o.name << ": expected " << (o.whole ? "a whole number" : "a number")
+                << " in [" << o.min << ", " << o.max << "], got '" << text << "'\n";
+            return 2;
+        }
+        o.set(study, *v);
+        if (std::string_view(o.name) == "threads")
+            limit = std::make_unique<sim::ThreadLimit>(static_cast<int>(*v));
+    }
+    out << "Peer scene pile: " << study.balls << " balls (r = 5 px), e = " << study.restitution << ", "
+        << study.substeps << " sub-step(s) of 1/60 s, " << study.solver.velocityPasses << " velocity passes, "
+        << study.solver.positionPasses << " position passes, correction " << study.solver.correction << ", slop "
+        << study.solver.slop << " r\n";
+    sim::runPileStudy(study, &out);
+    return 0;
+}
+
+} // namespace forcelab::cli

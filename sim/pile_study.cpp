@@ -1,0 +1,49 @@
+#include "pile_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace forcelab::sim {
+
+std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* out)
+{
+    Scene scene = peerScene(o.balls);
+    scene.settings.time.substeps = o.substeps;
+    scene.settings.collisions.restitution = o.restitution;
+    scene.settings.walls.restitution = o.restitution;
+    World world(scene);
+    world.collisionSystem().setSolverSettings(o.solver);
+
+    const double dt = scene.settings.time.dt;
+    const long steps = std::lround(o.seconds / dt);
+    const long stride = std::max(1L, std::lround(o.every / dt));
+    if (out)
+        *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px\n";
+    std::vector<PileStudyRow> rows;
+    for (long s = 1; s <= steps; ++s) {
+        world.step();
+        if (s % stride != 0 && s != steps)
+            continue;
+        PileStudyRow row;
+        row.time = static_cast<double>(s) * dt;
+        row.measures = measurePile(world);
+        const BallState& b = world.balls();
+        for (int i = 0; i < b.size(); ++i) {
+            const double speed = b.velocity.col(i).norm();
+            row.maxSpeed = std::max(row.maxSpeed, speed);
+            row.movingBalls += speed > 5.0 ? 1 : 0;
+        }
+        rows.push_back(row);
+        if (out) {
+            char line[160];
+            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f\n", row.time,
+                          row.measures.deepestOverlap, row.measures.meanOverlap, row.measures.rmsSpeed, row.maxSpeed,
+                          row.movingBalls, row.measures.meanHeight);
+            *out << line << std::flush;
+        }
+    }
+    return rows;
+}
+
+} // namespace forcelab::sim

@@ -1,0 +1,37 @@
+#pragma once
+// The peer scene's pile followed in time: N equal balls (r = 5 px) fall into a
+// square box and settle, and every `every` seconds the pile's measures are
+// taken (peer_scene.h) together with the fastest ball and how many balls move
+// faster than 5 px/s. The solver's settings and the sub-steps can be changed,
+// so the trade between overlap and jitter can be measured one knob at a time
+// (`forcelab-cli pile`, docs/performance.md).
+
+#include "collision/contact_solver.h"
+#include "peer_scene.h"
+
+#include <ostream>
+#include <vector>
+
+namespace forcelab::sim {
+
+struct PileStudyOptions {
+    int balls = 5000;             ///< 1, balls in the peer scene
+    int substeps = 1;             ///< 1, sub-steps per 1/60 s step
+    double seconds = 10.0;        ///< s, simulated time
+    double every = 0.5;           ///< s, between two rows
+    double restitution = 0.9;     ///< 1, e of balls and walls
+    ContactSolverSettings solver; ///< the resting solver's settings
+};
+
+/// The pile at one moment.
+struct PileStudyRow {
+    double time = 0.0;     ///< s
+    PileMeasures measures; ///< overlaps (r), rms speed (px/s), mean height (px)
+    double maxSpeed = 0.0; ///< px/s, the fastest ball
+    int movingBalls = 0;   ///< 1, balls faster than 5 px/s
+};
+
+/// Runs the study; with `out`, prints each row as it is taken.
+std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& options, std::ostream* out);
+
+} // namespace forcelab::sim
