@@ -6,11 +6,9 @@
 #include "cli_commands.h"
 
 #include "sim/pile_study.h"
-#include "sim/threads.h"
 
 #include <cmath>
 #include <functional>
-#include <memory>
 
 namespace forcelab::cli {
 namespace {
@@ -47,7 +45,7 @@ const std::vector<PileOption>& pileOptions()
         {"slop", "Overlap allowed, as a share of the smaller radius (default 0.005).", 0, 0.5, false,
          [](sim::PileStudyOptions& o, double v) { o.solver.slop = v; }},
         {"threads", "Most threads for the solver's passes (default: every core; same bits for any count).", 1, 256,
-         true, [](sim::PileStudyOptions&, double) {}},
+         true, [](sim::PileStudyOptions& o, double v) { o.threads = static_cast<int>(v); }},
     };
     return options;
 }
@@ -57,13 +55,13 @@ const std::vector<PileOption>& pileOptions()
 void declarePile(QCommandLineParser& p)
 {
     for (const PileOption& o : pileOptions())
-        p.addOption({QString::fromLatin1(o.name), QString::fromLatin1(o.help), QStringLiteral("X")});
+        p.addOption({QString::fromLatin1(o.name), QString::fromLatin1(o.help),
+                     o.whole ? QStringLiteral("N") : QStringLiteral("X")});
 }
 
 int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err)
 {
     sim::PileStudyOptions study;
-    std::unique_ptr<sim::ThreadLimit> limit;
     for (const PileOption& o : pileOptions()) {
         if (!parser.isSet(QString::fromLatin1(o.name)))
             continue;
@@ -75,8 +73,6 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
             return 2;
         }
         o.set(study, *v);
-        if (std::string_view(o.name) == "threads")
-            limit = std::make_unique<sim::ThreadLimit>(static_cast<int>(*v));
     }
     out << "Peer scene pile: " << study.balls << " balls (r = 5 px), e = " << study.restitution << ", "
         << study.substeps << " sub-step(s) of 1/60 s, " << study.solver.velocityPasses << " velocity passes, "

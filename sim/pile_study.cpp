@@ -1,8 +1,11 @@
 #include "pile_study.h"
 
+#include "threads.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace forcelab::sim {
 
@@ -12,6 +15,9 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
     scene.settings.time.substeps = o.substeps;
     scene.settings.collisions.restitution = o.restitution;
     scene.settings.walls.restitution = o.restitution;
+    std::unique_ptr<ThreadLimit> limit;
+    if (o.threads > 0)
+        limit = std::make_unique<ThreadLimit>(o.threads);
     World world(scene);
     world.collisionSystem().setSolverSettings(o.solver);
 

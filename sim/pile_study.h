@@ -20,6 +20,7 @@ struct PileStudyOptions {
     double seconds = 10.0;        ///< s, simulated time
     double every = 0.5;           ///< s, between two rows
     double restitution = 0.9;     ///< 1, e of balls and walls
+    int threads = 0;              ///< 1, most threads for the solver's passes (0: every core; the bits are the same)
     ContactSolverSettings solver; ///< the resting solver's settings
 };
 
