@@ -10,28 +10,30 @@
 namespace forcelab::sim {
 namespace {
 
-// Calls f on every row, in four interleaved runs: rows k, k + q, k + 2q,
-// k + 3q, then k + 1, ... (q = a quarter). Rows next to each other in (a, b)
-// order share a ball, so each waits for the one before it; rows a quarter
-// apart rarely do, and the processor works on four of them at once. The
-// order is fixed by the row count alone, so a run stays repeatable.
+// Calls f on every row k of [begin, end), in four interleaved runs: rows
+// begin, begin + q, begin + 2q, begin + 3q, then begin + 1, ... (q = a
+// quarter). Rows next to each other in (a, b) order share a ball, so each
+// waits for the one before it; rows a quarter apart rarely do, and the
+// processor works on four of them at once. The order is fixed by the range
+// alone, so a run stays repeatable.
 template <class F>
-void forEachInterleaved(std::size_t m, F&& f)
+void forEachInterleaved(int begin, int end, F&& f)
 {
+    const std::size_t b = static_cast<std::size_t>(begin), m = static_cast<std::size_t>(end - begin);
     const std::size_t q = (m + 3) / 4;
     std::size_t k = 0;
     for (; k + 3 * q < m; ++k) {
-        f(k);
-        f(k + q);
-        f(k + 2 * q);
-        f(k + 3 * q);
+        f(b + k);
+        f(b + k + q);
+        f(b + k + 2 * q);
+        f(b + k + 3 * q);
     }
     for (; k < q; ++k) {
-        f(k);
+        f(b + k);
         if (k + q < m)
-            f(k + q);
+            f(b + k + q);
         if (k + 2 * q < m)
-            f(k + 2 * q);
+            f(b + k + 2 * q);
     }
 }
 
@@ -53,13 +55,6 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     sortRowsByStrip();
     m_stripMoved.resize(m_strips.stripCount());
     m_stripSolves.resize(m_strips.stripCount());
-    for (const auto& [ball, axis] : m_takenBack) {
-        // The integrator's step ended on the wall: the position stage moves
-        // such a ball by its new velocity alone, from the wall.
-        const int k = m_bodyOf[static_cast<std::size_t>(ball)];
-        if (k >= 0)
-            m_bodyVelocity0[2 * static_cast<std::size_t>(k) + static_cast<std::size_t>(axis)] = 0.0;
-    }
     clock.lap(profile.wallScan);
     warmStart();
     m_lastPasses = 0;
@@ -141,8 +136,12 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
     const double* x = balls.position.data();
     const auto kk = static_cast<std::size_t>(k);
     m_bodies[kk] = {{v[2 * i], v[2 * i + 1]}, balls.inverseMass[static_cast<Eigen::Index>(i)], -1};
-    m_bodyVelocity0[2 * kk] = v[2 * i];
-    m_bodyVelocity0[2 * kk + 1] = v[2 * i + 1];
+    // A ball whose wall bounce stage 0 took back ended the integrator's step
+    // on the wall: along that axis the position stage moves it by its new
+    // velocity alone, from the wall.
+    const unsigned char* tookBack = &m_tookBack[2 * i];
+    m_bodyVelocity0[2 * kk] = tookBack[0] ? 0.0 : v[2 * i];
+    m_bodyVelocity0[2 * kk + 1] = tookBack[1] ? 0.0 : v[2 * i + 1];
     m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)],
                            balls.inverseMass[static_cast<Eigen::Index>(i)]};
     return k;
@@ -158,7 +157,6 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
 // e_w·g·h every step and kicks the pile above it.
 void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& c)
 {
-    m_takenBack.clear();
     m_tookBack.assign(2 * static_cast<std::size_t>(balls.size()), 0);
     const double ew = c.walls.restitution;
     if (!(ew > 0.0))
@@ -177,7 +175,6 @@ void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& 
             const double p = x[2 * i + k];
             if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
                 vk = -vk / ew;
-                m_takenBack.push_back({i, k});
                 m_tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = 1;
             }
         }
@@ -393,8 +390,7 @@ void RestingSolver::relax(const SubStepContext& c, CollisionProfile& profile, bo
         m_strips.run([&](int strip, int begin, int end) {
             bool stripMoved = false;
             std::int64_t stripSolves = 0;
-            forEachInterleaved(static_cast<std::size_t>(end - begin), [&](std::size_t i) {
-                const std::size_t k = static_cast<std::size_t>(begin) + i;
+            forEachInterleaved(begin, end, [&](std::size_t k) {
                 const PairRow& row = rows[k];
                 Body& ba = body[row.a];
                 Body& bb = body[row.b];
@@ -530,37 +526,36 @@ void RestingSolver::correctPositions(const SubStepContext& c)
     BodyPosition* position = m_bodyPositions.data();
     for (int pass = 0; pass < std::max(1, c.solver.positionPasses); ++pass) {
         m_strips.run([&](int, int begin, int end) {
-        forEachInterleaved(static_cast<std::size_t>(end - begin), [&](std::size_t i) {
-            const std::size_t k = static_cast<std::size_t>(begin) + i;
-            const PairRow& row = rows[k];
-            BodyPosition& A = position[row.a];
-            BodyPosition& B = position[row.b];
-            const double ra = A.r, rb = B.r;
-            const double allowed = c.solver.slop * std::min(ra, rb);
-            const double reachAllowed = ra + rb - allowed; // centres closer than this get a push
-            const double dx = B.x - A.x, dy = B.y - A.y;
-            if (!(dx * dx + dy * dy < reachAllowed * reachAllowed) || !(reachAllowed > 0.0))
-                return;
-            Vec2 pa(A.x, A.y), pb(B.x, B.y);
-            const double depth = ra + rb - std::sqrt(dx * dx + dy * dy);
-            if (!(depth > allowed))
-                return;
-            const double push = c.solver.correction * (depth - allowed);
-            const Vec2 nrm(row.nx, row.ny);
-            const double wa = A.w, wb = B.w;
-            const double moveA = push * (wa / (wa + wb));
-            const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
-            if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
-                pa = qa;
-                pb = qb;
-            } else {
-                pushApart(pa, pb, {ra, rb, nrm, wa, wb}, push, c.box, c.walls); // stops at the walls
-            }
-            A.x = pa.x();
-            A.y = pa.y();
-            B.x = pb.x();
-            B.y = pb.y();
-        });
+            forEachInterleaved(begin, end, [&](std::size_t k) {
+                const PairRow& row = rows[k];
+                BodyPosition& A = position[row.a];
+                BodyPosition& B = position[row.b];
+                const double ra = A.r, rb = B.r;
+                const double allowed = c.solver.slop * std::min(ra, rb);
+                const double reachAllowed = ra + rb - allowed; // centres closer than this get a push
+                const double dx = B.x - A.x, dy = B.y - A.y;
+                if (!(dx * dx + dy * dy < reachAllowed * reachAllowed) || !(reachAllowed > 0.0))
+                    return;
+                Vec2 pa(A.x, A.y), pb(B.x, B.y);
+                const double depth = ra + rb - std::sqrt(dx * dx + dy * dy);
+                if (!(depth > allowed))
+                    return;
+                const double push = c.solver.correction * (depth - allowed);
+                const Vec2 nrm(row.nx, row.ny);
+                const double wa = A.w, wb = B.w;
+                const double moveA = push * (wa / (wa + wb));
+                const Vec2 qa = pa - moveA * nrm, qb = pb + (push - moveA) * nrm;
+                if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
+                    pa = qa;
+                    pb = qb;
+                } else {
+                    pushApart(pa, pb, {ra, rb, nrm, wa, wb}, push, c.box, c.walls); // stops at the walls
+                }
+                A.x = pa.x();
+                A.y = pa.y();
+                B.x = pb.x();
+                B.y = pb.y();
+            });
         });
     }
 }

@@ -29,7 +29,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace forcelab::sim {
@@ -116,8 +115,7 @@ private:
     std::vector<BodyPosition> m_bodyPositions;
     std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
     std::vector<double> m_bodyVelocity0;
-    std::vector<std::pair<int, int>> m_takenBack; // (ball, axis) whose wall bounce stage 0 took back
-    std::vector<unsigned char> m_tookBack;        // per ball and axis: 1 when stage 0 took its bounce back
+    std::vector<unsigned char> m_tookBack;   // per ball and axis: 1 when stage 0 took its bounce back
     RowStrips m_strips;                      // the rows cut into strips for the passes (row_strips.h)
     std::vector<unsigned char> m_stripMoved; // per strip, this pass: a ball changed by more than the tolerance
     std::vector<std::int64_t> m_stripSolves; // per strip, this pass: rows solved
