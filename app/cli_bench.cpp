@@ -118,9 +118,9 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     std::unique_ptr<sim::ThreadLimit> limit;
     if (has("threads")) {
         const auto t = parseSizes(valueOf(parser, "threads"));
-        if (!t || t->size() != 1 || (*t)[0] < 1 || (*t)[0] > 256) {
-            err << "forcelab-cli bench: --threads: expected an integer in [1, 256], got '" << valueOf(parser, "threads")
-                << "'\n";
+        if (!t || t->size() != 1 || (*t)[0] < 1 || (*t)[0] > sim::kMostThreads) {
+            err << "forcelab-cli bench: --threads: expected an integer in [1, " << sim::kMostThreads << "], got '"
+                << valueOf(parser, "threads") << "'\n";
             return 2;
         }
         limit = std::make_unique<sim::ThreadLimit>((*t)[0]);

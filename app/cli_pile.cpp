@@ -6,6 +6,7 @@
 #include "cli_commands.h"
 
 #include "sim/pile_study.h"
+#include "sim/threads.h"
 
 #include <cmath>
 #include <functional>
@@ -44,8 +45,8 @@ const std::vector<PileOption>& pileOptions()
          [](sim::PileStudyOptions& o, double v) { o.solver.correction = v; }},
         {"slop", "Overlap allowed, as a share of the smaller radius (default 0.005).", 0, 0.5, false,
          [](sim::PileStudyOptions& o, double v) { o.solver.slop = v; }},
-        {"threads", "Most threads for the solver's passes (default: every core; same bits for any count).", 1, 256,
-         true, [](sim::PileStudyOptions& o, double v) { o.threads = static_cast<int>(v); }},
+        {"threads", "Most threads for the solver's passes (default: every core; same bits for any count).", 1,
+         sim::kMostThreads, true, [](sim::PileStudyOptions& o, double v) { o.threads = static_cast<int>(v); }},
     };
     return options;
 }

@@ -8,6 +8,9 @@
 
 namespace forcelab::sim {
 
+/// The most threads a user may ask for (the commands' --threads options).
+constexpr int kMostThreads = 256;
+
 /// While it lives, at most `threads` threads run the simulation's parallel
 /// work (1: the calling thread alone). A later, inner limit replaces it.
 class ThreadLimit {
