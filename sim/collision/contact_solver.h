@@ -45,8 +45,8 @@
 //    instead of sinking into it, and a column standing at touching distance
 //    holds. contacts() and the counters still report only pairs that overlap.
 // 5. Positional correction with slop. Overlap up to slop · (smaller radius)
-//    is allowed, and only `correction` of the overlap beyond it is removed per
-//    sub-step. A resting pair then sits still at a tiny overlap instead of
+//    is allowed, and only `correction` of the overlap beyond it is removed in
+//    each of the `positionPasses` passes. A resting pair then sits still at a tiny overlap instead of
 //    being pushed apart and falling back every sub-step (jitter). Positions
 //    only: velocities are never changed by it.
 
@@ -57,7 +57,7 @@ struct ContactSolverSettings {
     double restingFactor = 2.0;   ///< 1, c in v_rest = c·|g|·h; approaches slower than v_rest do not bounce
     double relaxTolerance = 0.001; ///< 1, stop the passes when no pair approaches faster than this × v_rest
     double slop = 0.005;          ///< 1, allowed overlap as a share of the smaller radius
-    double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per sub-step
+    double correction = 0.8;      ///< 1, share of the overlap beyond the slop removed per position pass
     int positionPasses = 4;       ///< 1, passes of positional correction per sub-step
     double speculative = 4.0;     ///< 1, most a ball's radius grows by to find speculative contacts (0: none)
 };
