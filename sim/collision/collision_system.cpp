@@ -74,7 +74,8 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
 } // namespace
 
 SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const BoxSettings& box,
-                                        const WallSettings& walls, double h, double restingSpeed, double gravity) const
+                                        const WallSettings& walls, double h, double restingSpeed,
+                                        const Vec2& gravity) const
 {
     SubStepContext c;
     c.h = h;
@@ -83,7 +84,9 @@ SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const
     c.walls = walls;
     c.restitution = settings.restitution;
     c.restingSpeed = restingSpeed;
-    c.gravity = gravity;
+    c.gravity = gravity.norm();
+    c.gravityX = gravity.x();
+    c.gravityY = gravity.y();
     c.solver = m_solver;
     return c;
 }
@@ -180,7 +183,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         // The solver puts the pairs that overlap now back into m_contacts
         // (what contacts(), the flags and the counters report) as it builds
         // its rows.
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, g), m_speculative, &m_contacts, clock,
+        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_speculative, &m_contacts, clock,
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
         stats.contacts = static_cast<std::int64_t>(m_contacts.size());
@@ -206,7 +209,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         return stats;
     }
     if (resting) {
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, g), m_contacts, nullptr, clock,
+        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_contacts, nullptr, clock,
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
         if (m_profiling)

@@ -82,7 +82,7 @@ private:
     void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
                  const WallSettings& walls, double dt);
     SubStepContext subStep(const CollisionSettings& settings, const BoxSettings& box, const WallSettings& walls,
-                           double h, double restingSpeed, double gravity) const;
+                           double h, double restingSpeed, const Vec2& gravity) const;
 
     RestingSolver m_resting;
     SpeculativeMargin m_margin;

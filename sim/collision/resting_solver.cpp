@@ -56,8 +56,21 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     m_stripMoved.resize(m_strips.stripCount());
     m_stripSolves.resize(m_strips.stripCount());
     clock.lap(profile.wallScan);
-    warmStart();
     m_lastPasses = 0;
+    if (c.solver.stages > 1) {
+        clock.lap(profile.wallScan);
+        stagedSolve(c);
+        if (profiling) {
+            profile.rows += static_cast<std::int64_t>(m_rowCount);
+            profile.solves += static_cast<std::int64_t>(m_rowCount) * m_lastPasses;
+        }
+        clock.lap(profile.velocity);
+        stagedWriteBack(balls, c);
+        restoreRowOrder();
+        clock.lap(profile.position);
+        return;
+    }
+    warmStart();
     relax(c, profile, profiling);
     clock.lap(profile.velocity);
     bounce(c, profile, profiling);
@@ -78,7 +91,7 @@ void RestingSolver::sortRowsByStrip()
     const std::vector<int>& order = m_strips.order();
     if (m_spareRows.size() < m_rowCount) // the arrays only grow
         m_spareRows.resize(m_rowCount);
-    for (auto* values : {&m_spareImpulse, &m_spareVn0})
+    for (auto* values : {&m_spareImpulse, &m_spareVn0, &m_spareGap})
         if (values->size() < m_rowCount)
             values->resize(m_rowCount);
     for (std::size_t i = 0; i < m_rowCount; ++i) {
@@ -86,10 +99,12 @@ void RestingSolver::sortRowsByStrip()
         m_spareRows[i] = m_pairRows[k];
         m_spareImpulse[i] = m_impulse[k];
         m_spareVn0[i] = m_vn0[k];
+        m_spareGap[i] = m_gap[k];
     }
     m_pairRows.swap(m_spareRows);
     m_impulse.swap(m_spareImpulse);
     m_vn0.swap(m_spareVn0);
+    m_gap.swap(m_spareGap);
 }
 
 // The impulses back in (a, b) order, beside m_rowBalls, for the next
@@ -166,6 +181,7 @@ void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& 
     double* x = balls.position.data();
     double* v = balls.velocity.data();
     const double* radius = balls.radius.data();
+    const bool staged = c.solver.stages > 1;
     for (int i = 0; i < balls.size(); ++i) {
         const double r = radius[i];
         for (int k = 0; k < 2; ++k) {
@@ -173,6 +189,11 @@ void RestingSolver::takeBackWallBounces(BallState& balls, const SubStepContext& 
                 continue;
             double& vk = v[2 * i + k];
             const double p = x[2 * i + k];
+            // The staged solve takes back only the small bounces of a ball
+            // resting on a wall; a faster one stays the wall stage's, which
+            // keeps a restitution-1 ball's energy exactly.
+            if (staged && !(std::abs(vk) <= ew * c.restingSpeed))
+                continue;
             if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
                 vk = -vk / ew;
                 m_tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = 1;
@@ -202,7 +223,7 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         m_spareRows.resize(m);
     if (m_spareBalls.size() < m)
         m_spareBalls.resize(m);
-    for (auto* values : {&m_spareImpulse, &m_vn0})
+    for (auto* values : {&m_spareImpulse, &m_vn0, &m_gap})
         if (values->size() < m)
             values->resize(m);
     std::size_t old = 0, count = 0, overlapping = 0;
@@ -255,6 +276,7 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         // A pair that pushed on each other in the last sub-step rests: only a
         // new contact bounces (a pile's pairs do not trade small bounces).
         m_vn0[count] = warm > 0.0 ? 0.0 : vn0;
+        m_gap[count] = gapStart;
         ++count;
     }
     if (touching)

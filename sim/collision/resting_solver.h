@@ -1,12 +1,24 @@
 #pragma once
 // The resting-contact solver of contact_solver.h as named stages: sequential
 // impulses with accumulated, warm-started impulses over the ball–ball and
-// ball–wall contacts, then positional correction with slop. One solve runs
+// ball–wall contacts. One solve runs
 //
 //   0. takeBackWallBounces  the wall stage's bounce of a ball it left on a wall
+//                        (staged solve: only a bounce slower than v_rest)
 //   1. buildPairRows     ball–ball rows (line of impact, effective mass, the
-//                        speed a gap may close at, last sub-step's impulse)
+//                        gap at the start, last sub-step's impulse)
 //   2. buildWallRows     ball–wall rows for the balls on or near a wall
+//
+// then, with settings.stages > 1 (the default), the staged solve of
+// soft_stages.cpp (point 6 of contact_solver.h):
+//
+//   3. stagedSolve       the sub-step cut into stages: gravity's share, warm
+//                        start, soft passes, move, relax; then the bounces
+//   4. stagedWriteBack   bodies no impulse touched keep the integrator's
+//                        result; the others go back to the balls
+//
+// or, with stages = 1, the one-stage solve:
+//
 //   3. warmStart         last sub-step's impulses applied again
 //   4. relax             velocity passes until no ball changes speed
 //   5. bounce            restitution targets for new pairs that hit, the passes
@@ -99,6 +111,17 @@ private:
     void moveBodies(const SubStepContext& c);
     void correctPositions(const SubStepContext& c);
     void writeBack(BallState& balls, const SubStepContext& c);
+    // The staged solve (soft_stages.cpp), replacing stages 3-8 when
+    // c.solver.stages > 1.
+    void stagedSolve(const SubStepContext& c);
+    // A soft contact's constants for one stage of length hs: the share of
+    // the overlap pushed apart per second, and how much of the row's mass
+    // and of its impulse so far a pushing pass uses (soft_stages.cpp).
+    struct SoftContact {
+        double hs, inverseHs, biasRate, massScale, impulseScale;
+    };
+    void stagePass(const SubStepContext& c, const SoftContact& soft, bool push, bool bounce, bool last);
+    void stagedWriteBack(BallState& balls, const SubStepContext& c);
 
     void applyPair(const PairRow& row, double j);
     double normalSpeed(const PairRow& row) const;
@@ -109,6 +132,11 @@ private:
     std::vector<PairRow> m_pairRows, m_spareRows;
     std::vector<Contact> m_rowBalls, m_spareBalls;
     std::vector<double> m_impulse, m_spareImpulse, m_vn0, m_spareVn0;
+    std::vector<double> m_gap, m_spareGap; // per row: centre distance less the radii at the start of the sub-step
+    std::vector<unsigned char> m_pushed;   // per row, staged solve: its impulse was above 0 in some stage
+    std::vector<double> m_hitSpeed;        // per row, staged solve: v_n at the start of the stage it first pushed in
+    std::vector<double> m_stageVelocity;   // per body, staged solve: v at the start of this stage
+    std::vector<double> m_bodyStart;       // per body, staged solve: x, y at the start of the sub-step
     std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;

@@ -17,6 +17,8 @@ struct SubStepContext {
     double restitution = 1.0;     ///< 1, ball–ball restitution e
     double restingSpeed = 0.0;    ///< px/s, v_rest = restingFactor·|g|·h: slower approaches rest instead of bouncing
     double gravity = 0.0;         ///< px/s², |g|
+    double gravityX = 0.0;        ///< px/s², g along x (the staged solve adds g·h/stages per stage)
+    double gravityY = 0.0;        ///< px/s², g along y
     ContactSolverSettings solver; ///< passes, slop, correction, tolerances
 };
 
