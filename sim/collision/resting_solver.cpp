@@ -8,36 +8,6 @@
 #include <cmath>
 
 namespace forcelab::sim {
-namespace {
-
-// Calls f on every row k of [begin, end), in four interleaved runs: rows
-// begin, begin + q, begin + 2q, begin + 3q, then begin + 1, ... (q = a
-// quarter). Rows next to each other in (a, b) order share a ball, so each
-// waits for the one before it; rows a quarter apart rarely do, and the
-// processor works on four of them at once. The order is fixed by the range
-// alone, so a run stays repeatable.
-template <class F>
-void forEachInterleaved(int begin, int end, F&& f)
-{
-    const std::size_t b = static_cast<std::size_t>(begin), m = static_cast<std::size_t>(end - begin);
-    const std::size_t q = (m + 3) / 4;
-    std::size_t k = 0;
-    for (; k + 3 * q < m; ++k) {
-        f(b + k);
-        f(b + k + q);
-        f(b + k + 2 * q);
-        f(b + k + 3 * q);
-    }
-    for (; k < q; ++k) {
-        f(b + k);
-        if (k + q < m)
-            f(b + k + q);
-        if (k + 2 * q < m)
-            f(b + k + 2 * q);
-    }
-}
-
-} // namespace
 
 void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                           std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile)

@@ -14,25 +14,10 @@
 #include <numbers>
 
 namespace forcelab::sim {
-namespace {
-
-// The same interleaved walk as the one-stage passes (resting_solver.cpp):
-// four runs a quarter apart, an order fixed by the range alone.
-template <class F>
-void forEachQuarter(int begin, int end, F&& f)
-{
-    const std::size_t b = static_cast<std::size_t>(begin), m = static_cast<std::size_t>(end - begin);
-    const std::size_t q = (m + 3) / 4;
-    for (std::size_t k = 0; k < q; ++k)
-        for (std::size_t part = 0; part < 4; ++part)
-            if (k + part * q < m)
-                f(b + k + part * q);
-}
-
-} // namespace
 
 // A soft contact is a stiff spring with a damper, solved implicitly over one
-// stage: with ω = 2π·hertz, ζ the damping ratio and hs the stage,
+// stage: with ω = 2π·stiffness/hs (the spring frequency a share of the stage
+// rate), ζ the damping ratio and hs the stage,
 //   a1 = 2ζ + hs·ω,  a2 = hs·ω·a1,  a3 = 1 / (1 + a2),
 // an overlap s < 0 asks for the separating speed −s·ω/a1 (biasRate), and the
 // impulse that meets it is scaled by a2·a3 (massScale) less a3 times the
@@ -215,7 +200,7 @@ void RestingSolver::stagePass(const SubStepContext& c, const SoftContact& soft, 
         }
     };
     m_strips.run([&](int, int begin, int end) {
-        forEachQuarter(begin, end, [&](std::size_t k) {
+        forEachInterleaved(begin, end, [&](std::size_t k) {
             const PairRow& row = rows[k];
             Body& A = body[row.a];
             Body& B = body[row.b];
