@@ -28,7 +28,6 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     clock.lap(profile.wallScan);
     m_lastPasses = 0;
     if (c.solver.stages > 1) {
-        clock.lap(profile.wallScan);
         stagedSolve(c);
         if (profiling) {
             profile.rows += static_cast<std::int64_t>(m_rowCount);
@@ -61,7 +60,7 @@ void RestingSolver::sortRowsByStrip()
     const std::vector<int>& order = m_strips.order();
     if (m_spareRows.size() < m_rowCount) // the arrays only grow
         m_spareRows.resize(m_rowCount);
-    for (auto* values : {&m_spareImpulse, &m_spareVn0, &m_spareGap})
+    for (auto* values : {&m_spareImpulse, &m_spareVn0})
         if (values->size() < m_rowCount)
             values->resize(m_rowCount);
     for (std::size_t i = 0; i < m_rowCount; ++i) {
@@ -69,12 +68,10 @@ void RestingSolver::sortRowsByStrip()
         m_spareRows[i] = m_pairRows[k];
         m_spareImpulse[i] = m_impulse[k];
         m_spareVn0[i] = m_vn0[k];
-        m_spareGap[i] = m_gap[k];
     }
     m_pairRows.swap(m_spareRows);
     m_impulse.swap(m_spareImpulse);
     m_vn0.swap(m_spareVn0);
-    m_gap.swap(m_spareGap);
 }
 
 // The impulses back in (a, b) order, beside m_rowBalls, for the next
@@ -193,7 +190,7 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         m_spareRows.resize(m);
     if (m_spareBalls.size() < m)
         m_spareBalls.resize(m);
-    for (auto* values : {&m_spareImpulse, &m_vn0, &m_gap})
+    for (auto* values : {&m_spareImpulse, &m_vn0})
         if (values->size() < m)
             values->resize(m);
     std::size_t old = 0, count = 0, overlapping = 0;
@@ -246,7 +243,6 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         // A pair that pushed on each other in the last sub-step rests: only a
         // new contact bounces (a pile's pairs do not trade small bounces).
         m_vn0[count] = warm > 0.0 ? 0.0 : vn0;
-        m_gap[count] = gapStart;
         ++count;
     }
     if (touching)

@@ -132,7 +132,7 @@ private:
     std::vector<PairRow> m_pairRows, m_spareRows;
     std::vector<Contact> m_rowBalls, m_spareBalls;
     std::vector<double> m_impulse, m_spareImpulse, m_vn0, m_spareVn0;
-    std::vector<double> m_gap, m_spareGap; // per row: centre distance less the radii at the start of the sub-step
+    std::vector<double> m_gap;             // per row, staged solve: centre distance less the radii at the start
     std::vector<unsigned char> m_pushed;   // per row, staged solve: its impulse was above 0 in some stage
     std::vector<double> m_hitSpeed;        // per row, staged solve: v_n at the start of the stage it first pushed in
     std::vector<double> m_stageVelocity;   // per body, staged solve: v at the start of this stage

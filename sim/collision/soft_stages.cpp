@@ -69,6 +69,8 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     }
     // Each row's line of impact and gap from its bodies' start positions (the
     // wall stage may have moved one ball of a pair back onto a wall).
+    if (m_gap.size() < m_rowCount)
+        m_gap.resize(m_rowCount);
     for (std::size_t k = 0; k < m_rowCount; ++k) {
         PairRow& row = m_pairRows[k];
         const BodyPosition& A = m_bodyPositions[static_cast<std::size_t>(row.a)];
