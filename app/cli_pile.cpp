@@ -87,10 +87,16 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
         }
         o.set(study, *v);
     }
+    // The header names the knobs the chosen solve reads.
+    const sim::ContactSolverSettings& solver = study.solver;
     out << "Peer scene pile: " << study.balls << " balls (r = 5 px), e = " << study.restitution << ", "
-        << study.substeps << " sub-step(s) of 1/60 s, " << study.solver.velocityPasses << " velocity passes, "
-        << study.solver.positionPasses << " position passes, correction " << study.solver.correction << ", slop "
-        << study.solver.slop << " r\n";
+        << study.substeps << " sub-step(s) of 1/60 s, ";
+    if (solver.stages > 1)
+        out << solver.stages << " stages of " << solver.stagePasses << " + " << solver.relaxPasses
+            << " passes, stiffness " << solver.contactStiffness << ", damping ratio " << solver.dampingRatio << "\n";
+    else
+        out << "one stage: " << solver.velocityPasses << " velocity passes, " << solver.positionPasses
+            << " position passes, correction " << solver.correction << ", slop " << solver.slop << " r\n";
     sim::runPileStudy(study, &out);
     return 0;
 }

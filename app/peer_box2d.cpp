@@ -34,8 +34,8 @@ double nowMilliseconds()
 
 void print(const char* engine, int n, double ms, const PileMeasures& m)
 {
-    std::printf("%-10s %7d %10.2f %10.3f %10.4f %10.2f %10.1f\n", engine, n, ms, m.deepestOverlap, m.meanOverlap,
-                m.rmsSpeed, m.meanHeight);
+    std::printf("%-10s %7d %10.2f %10.3f %10.4f %10.2f %10.1f %10.2f %10d\n", engine, n, ms, m.deepestOverlap,
+                m.meanOverlap, m.rmsSpeed, m.meanHeight, m.pileRmsSpeed, m.inFlight);
 }
 
 // ForceLab on `threads` threads: the wall-clock time per step (with one
@@ -130,8 +130,8 @@ int main(int argc, char** argv)
     std::printf("Peer scene, %d steps at 60 Hz; ms per step (wall clock; ForceLab/T: T threads, Box2D one); "
                 "end state after 10 s\n",
                 kSteps);
-    std::printf("%-10s %7s %10s %10s %10s %10s %10s\n", "engine", "N", "ms/step", "deepest r", "mean r", "rms px/s",
-                "height px");
+    std::printf("%-10s %7s %10s %10s %10s %10s %10s %10s %10s\n", "engine", "N", "ms/step", "deepest r", "mean r",
+                "rms px/s", "height px", "pile px/s", "in flight");
     for (int n : sizes) {
         const Scene scene = peerScene(n);
         runForceLab(scene, 1);

@@ -58,17 +58,20 @@ PileMeasures measurePile(const std::vector<double>& x, const std::vector<double>
         return m;
     double rMax = 0.0, speed2 = 0.0, heights = 0.0;
     double minX = x[0], minY = y[0];
+    std::vector<char> inPile(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         rMax = std::max(rMax, r[i]);
         speed2 += vx[i] * vx[i] + vy[i] * vy[i];
         heights += height - y[i];
         minX = std::min(minX, x[i]);
         minY = std::min(minY, y[i]);
+        inPile[i] = height - y[i] - r[i] < kTouching * r[i] ? 1 : 0; // on the floor
     }
     m.rmsSpeed = std::sqrt(speed2 / static_cast<double>(n));
     m.meanHeight = heights / static_cast<double>(n);
-    // Cells one diameter wide: a pair that overlaps is in the same or a neighbouring cell.
-    const double cell = 2.0 * rMax;
+    // Cells as wide as the farthest two touching balls can be apart: a pair
+    // that touches is in the same or a neighbouring cell.
+    const double cell = (2.0 + kTouching) * rMax;
     std::vector<std::pair<std::int64_t, std::size_t>> keyed(n);
     auto cellOf = [&](double v, double lo) { return static_cast<std::int64_t>(std::floor((v - lo) / cell)); };
     const std::int64_t width = 1 << 20;
@@ -77,11 +80,15 @@ PileMeasures measurePile(const std::vector<double>& x, const std::vector<double>
     std::sort(keyed.begin(), keyed.end());
     double sum = 0.0;
     auto visit = [&](std::size_t i, std::size_t j) {
-        const double dx = x[j] - x[i], dy = y[j] - y[i], s = r[i] + r[j];
+        const double dx = x[j] - x[i], dy = y[j] - y[i], s = r[i] + r[j], smaller = std::min(r[i], r[j]);
         const double d2 = dx * dx + dy * dy;
+        const double touch = s + kTouching * smaller;
+        if (!(d2 < touch * touch))
+            return;
+        inPile[i] = inPile[j] = 1;
         if (!(d2 < s * s))
             return;
-        const double depth = (s - std::sqrt(d2)) / std::min(r[i], r[j]);
+        const double depth = (s - std::sqrt(d2)) / smaller;
         m.deepestOverlap = std::max(m.deepestOverlap, depth);
         sum += depth;
         ++m.overlapping;
@@ -97,6 +104,16 @@ PileMeasures measurePile(const std::vector<double>& x, const std::vector<double>
                 visit(i, it->second);
         }
     }
+    double pileSpeed2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (inPile[i])
+            pileSpeed2 += vx[i] * vx[i] + vy[i] * vy[i];
+        else
+            ++m.inFlight;
+    }
+    const std::size_t piled = n - static_cast<std::size_t>(m.inFlight);
+    if (piled > 0)
+        m.pileRmsSpeed = std::sqrt(pileSpeed2 / static_cast<double>(piled));
     if (m.overlapping > 0)
         m.meanOverlap = sum / m.overlapping;
     return m;

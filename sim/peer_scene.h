@@ -21,11 +21,19 @@ Scene boxScene(int n, double rMin, double rMax, double speed, double e, Detectio
 /// The peer scene: equal balls (r = 5 px) at rest, e = 0.9, grid detection.
 Scene peerScene(int n);
 
+/// How close a ball must come to another ball or the floor to count as part
+/// of the pile, as a share of the smaller radius.
+inline constexpr double kTouching = 0.1;
+
 /// How still and how sound a pile is at one moment.
 struct PileMeasures {
     double deepestOverlap = 0.0; ///< r, the deepest overlap of a pair over the smaller radius
     double meanOverlap = 0.0;    ///< r, the mean overlap over the pairs that overlap
     double rmsSpeed = 0.0;       ///< px/s, √(mean |v|²)
+    /// px/s, the same over the balls in the pile: those within kTouching of
+    /// another ball or of the floor (a ball in flight above it is left out)
+    double pileRmsSpeed = 0.0;
+    int inFlight = 0;            ///< 1, balls that touch no other ball and not the floor
     double meanHeight = 0.0;     ///< px, the mean height of the centres above the floor
     int overlapping = 0;         ///< 1, pairs that overlap
 };

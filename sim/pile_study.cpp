@@ -25,7 +25,7 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
     const long steps = std::lround(o.seconds / dt);
     const long stride = std::max(1L, std::lround(o.every / dt));
     if (out)
-        *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px\n";
+        *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px   pile px/s   in flight\n";
     std::vector<PileStudyRow> rows;
     for (long s = 1; s <= steps; ++s) {
         world.step();
@@ -43,9 +43,10 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
         rows.push_back(row);
         if (out) {
             char line[160];
-            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f\n", row.time,
+            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f %11.2f %11d\n", row.time,
                           row.measures.deepestOverlap, row.measures.meanOverlap, row.measures.rmsSpeed, row.maxSpeed,
-                          row.movingBalls, row.measures.meanHeight);
+                          row.movingBalls, row.measures.meanHeight, row.measures.pileRmsSpeed,
+                          row.measures.inFlight);
             *out << line << std::flush;
         }
     }

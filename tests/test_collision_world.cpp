@@ -610,6 +610,28 @@ TEST_CASE("TestCollisionWorld::speculativeMarginsFindEveryPair")
     VERIFY(*std::max_element(grow.begin(), grow.end()) <= 2.0 * 20.0 * h + 1e-9);
 }
 
+// measurePile on three balls of r = 5 px in a box 100 px tall: two side by
+// side on the floor (0.3 px apart, within the 0.5 px that counts as
+// touching) moving at 3 and 4 px/s, one 20 px above them at 12 px/s. The
+// rms over all three is √((9 + 16 + 144)/3) = 7.51 px/s; the pile is the two
+// on the floor, √((9 + 16)/2) = 3.54 px/s, and one ball is in flight. Moved
+// 0.6 px apart and 0.6 px off the floor, the right one is in flight too.
+TEST_CASE("TestCollisionWorld::pileMeasuresLeaveOutBallsInFlight")
+{
+    std::vector<double> x{20.0, 30.3, 25.0}, y{95.0, 95.0, 75.0}, vx{3.0, 0.0, 0.0}, vy{0.0, 4.0, -12.0},
+        r{5.0, 5.0, 5.0};
+    PileMeasures m = measurePile(x, y, vx, vy, r, 100.0);
+    CHECK(m.rmsSpeed == doctest::Approx(std::sqrt(169.0 / 3.0)).epsilon(1e-12));
+    CHECK(m.pileRmsSpeed == doctest::Approx(std::sqrt(12.5)).epsilon(1e-12));
+    CHECK(m.inFlight == 1);
+    CHECK(m.overlapping == 0);
+    x[1] = 30.6;
+    y[1] = 94.4;
+    m = measurePile(x, y, vx, vy, r, 100.0);
+    CHECK(m.inFlight == 2);
+    CHECK(m.pileRmsSpeed == doctest::Approx(3.0).epsilon(1e-12));
+}
+
 // The issue's peer scene at 5,000 balls (r = 5 px, 30% of the box, e = 0.9,
 // 60 Hz, one sub-step): after 10 s the pile stands still. Targets (issue
 // #18, item 1): rms speed below 1 px/s (measured 0.16), deepest overlap below
