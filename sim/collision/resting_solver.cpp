@@ -323,26 +323,6 @@ void RestingSolver::buildWallRows(const BallState& balls, const SubStepContext& 
     m_wallRows.swap(m_spareWalls);
 }
 
-// The impulse j along the row's normal: a gets −w_a j n, b gets +w_b j n.
-void RestingSolver::applyPair(const PairRow& row, double j)
-{
-    Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
-    Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
-    const double ja = ba.w * j, jb = bb.w * j;
-    ba.v[0] -= ja * row.nx;
-    ba.v[1] -= ja * row.ny;
-    bb.v[0] += jb * row.nx;
-    bb.v[1] += jb * row.ny;
-}
-
-// v_n = (v_b − v_a)·n: negative while the pair approaches.
-double RestingSolver::normalSpeed(const PairRow& row) const
-{
-    const Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
-    const Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
-    return (bb.v[0] - ba.v[0]) * row.nx + (bb.v[1] - ba.v[1]) * row.ny;
-}
-
 // Stage 3. Last sub-step's impulse of every contact that is still there: a
 // pile that rested then starts from the pushes that held it.
 void RestingSolver::warmStart()

@@ -123,8 +123,26 @@ private:
     void stagePass(const SubStepContext& c, const SoftContact& soft, bool push, bool bounce, bool last);
     void stagedWriteBack(BallState& balls, const SubStepContext& c);
 
-    void applyPair(const PairRow& row, double j);
-    double normalSpeed(const PairRow& row) const;
+    // The passes' two innermost operations, here so that every pass (in
+    // resting_solver.cpp and soft_stages.cpp) inlines them.
+    // The impulse j along the row's normal: a gets −w_a j n, b gets +w_b j n.
+    void applyPair(const PairRow& row, double j)
+    {
+        Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
+        Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
+        const double ja = ba.w * j, jb = bb.w * j;
+        ba.v[0] -= ja * row.nx;
+        ba.v[1] -= ja * row.ny;
+        bb.v[0] += jb * row.nx;
+        bb.v[1] += jb * row.ny;
+    }
+    // v_n = (v_b − v_a)·n: negative while the pair approaches.
+    double normalSpeed(const PairRow& row) const
+    {
+        const Body& ba = m_bodies[static_cast<std::size_t>(row.a)];
+        const Body& bb = m_bodies[static_cast<std::size_t>(row.b)];
+        return (bb.v[0] - ba.v[0]) * row.nx + (bb.v[1] - ba.v[1]) * row.ny;
+    }
     double& wallSpeed(const WallRow& row) { return m_bodies[static_cast<std::size_t>(row.body)].v[row.axis]; }
 
     // The row arrays only grow (rows are written by index, no push_back);
@@ -137,6 +155,7 @@ private:
     std::vector<double> m_hitSpeed;        // per row, staged solve: v_n at the start of the stage it first pushed in
     std::vector<double> m_stageVelocity;   // per body, staged solve: v at the start of this stage
     std::vector<double> m_bodyStart;       // per body, staged solve: x, y at the start of the sub-step
+    std::vector<double> m_bodyMoved;       // per body, staged solve: x, y now less x, y at the start
     std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;

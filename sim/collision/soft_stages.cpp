@@ -45,8 +45,10 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     const auto bodies = static_cast<std::size_t>(m_bodyCount);
     if (m_bodyStart.size() < 2 * bodies) {
         m_bodyStart.resize(2 * bodies);
+        m_bodyMoved.resize(2 * bodies);
         m_stageVelocity.resize(2 * bodies);
     }
+    std::fill_n(m_bodyMoved.begin(), 2 * bodies, 0.0);
     // A ball the wall stage has just bounced (its new velocity would take it
     // back beyond the wall) starts where the wall stage left it along that
     // axis.
@@ -131,6 +133,8 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
             keepInsideWalls(from, to, p.r, c.box, c.walls);
             p.x = to.x();
             p.y = to.y();
+            m_bodyMoved[2 * k] = p.x - m_bodyStart[2 * k];
+            m_bodyMoved[2 * k + 1] = p.y - m_bodyStart[2 * k + 1];
         }
         // 5. Relax: passes without the push, so the speed that pushed the
         //    overlaps apart does not stay in the bodies.
@@ -182,7 +186,7 @@ void RestingSolver::stagePass(const SubStepContext& c, const SoftContact& soft, 
     const double* gap = m_gap.data();
     Body* body = m_bodies.data();
     const BodyPosition* position = m_bodyPositions.data();
-    const double* start = m_bodyStart.data();
+    const double* moved = m_bodyMoved.data();
     unsigned char* pushed = m_pushed.data();
     double* hitSpeed = m_hitSpeed.data();
     const double* stageVelocity = m_stageVelocity.data();
@@ -207,9 +211,7 @@ void RestingSolver::stagePass(const SubStepContext& c, const SoftContact& soft, 
             Body& A = body[row.a];
             Body& B = body[row.b];
             const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-            const double moved = ((position[b].x - start[2 * b]) - (position[a].x - start[2 * a])) * row.nx +
-                                 ((position[b].y - start[2 * b + 1]) - (position[a].y - start[2 * a + 1])) * row.ny;
-            const double sep = gap[k] + moved;
+            const double sep = gap[k] + ((moved[2 * b] - moved[2 * a]) * row.nx + (moved[2 * b + 1] - moved[2 * a + 1]) * row.ny);
             const bool bouncing = bounce && pushed[k] == 2;
             double bias, massScale, impulseScale;
             target(sep, bias, massScale, impulseScale);
