@@ -4,12 +4,14 @@
 // (fused multiply-add contraction) are switched off in the top CMakeLists.
 
 #include "lessons/lesson_loader.h"
+#include "sim/collision/row_strips.h"
 #include "sim/peer_scene.h"
 #include "sim/threads.h"
 #include "sim/world.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace forcelab;
@@ -109,9 +111,16 @@ void TestReproducible::everyThreadCountSameBits()
         const ThreadLimit limit(threads);
         QVERIFY(availableThreads() >= 1 && availableThreads() <= threads);
         World w(pile);
-        for (int k = 0; k < 120; ++k)
+        w.collisionSystem().setProfiling(true); // counts the rows; the bits do not change
+        std::int64_t mostRows = 0;
+        for (int k = 0; k < 120; ++k) {
+            w.collisionSystem().resetProfile();
             w.step();
+            mostRows = std::max(mostRows, w.collisionSystem().profile().rows);
+        }
         QVERIFY(w.collisionSystem().lastVelocityPasses() > 1); // the solver ran its passes
+        // Some steps had enough rows for the strips to go to both threads.
+        QVERIFY2(mostRows >= static_cast<std::int64_t>(RowStrips::kParallelRows), qPrintable(QString::number(mostRows)));
         pileHash[threads - 1] = hashState(w);
         showcaseHash[threads - 1] = run(showcase(), 2000);
     }

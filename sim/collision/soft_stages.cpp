@@ -211,7 +211,8 @@ void RestingSolver::stagePass(const SubStepContext& c, const SoftContact& soft, 
             Body& A = body[row.a];
             Body& B = body[row.b];
             const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-            const double sep = gap[k] + ((moved[2 * b] - moved[2 * a]) * row.nx + (moved[2 * b + 1] - moved[2 * a + 1]) * row.ny);
+            const double sep =
+                gap[k] + ((moved[2 * b] - moved[2 * a]) * row.nx + (moved[2 * b + 1] - moved[2 * a + 1]) * row.ny);
             const bool bouncing = bounce && pushed[k] == 2;
             double bias, massScale, impulseScale;
             target(sep, bias, massScale, impulseScale);
