@@ -29,7 +29,8 @@ void runOnce(const sim::Scene& scene, int subSteps, float contactHertz, const ch
 {
     b2SetLengthUnitsPerMeter(100.0f);
     b2WorldDef def = b2DefaultWorldDef();
-    def.gravity = b2Vec2{static_cast<float>(scene.settings.gravity.g.x()), static_cast<float>(scene.settings.gravity.g.y())};
+    const sim::Vec2& g = scene.settings.gravity.g;
+    def.gravity = b2Vec2{static_cast<float>(g.x()), static_cast<float>(g.y())};
     def.workerCount = 1;
     def.contactHertz = contactHertz;
     const b2WorldId world = b2CreateWorld(&def);

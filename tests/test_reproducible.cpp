@@ -120,7 +120,8 @@ void TestReproducible::everyThreadCountSameBits()
         }
         QVERIFY(w.collisionSystem().lastVelocityPasses() > 1); // the solver ran its passes
         // Some steps had enough rows for the strips to go to both threads.
-        QVERIFY2(mostRows >= static_cast<std::int64_t>(RowStrips::kParallelRows), qPrintable(QString::number(mostRows)));
+        QVERIFY2(mostRows >= static_cast<std::int64_t>(RowStrips::kParallelRows),
+                 qPrintable(QString::number(mostRows)));
         pileHash[threads - 1] = hashState(w);
         showcaseHash[threads - 1] = run(showcase(), 2000);
     }
