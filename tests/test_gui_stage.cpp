@@ -9,10 +9,15 @@
 #include "ui/number_control.h"
 #include "ui/stage_sliders.h"
 #include "ui/simulation_controller.h"
+#include "ui/stage_bar.h"
 #include "ui/world_painter.h"
+
+#include "lessons/lesson_loader.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileInfo>
+#include <QFontMetrics>
 #include <QLabel>
 #include <QMenuBar>
 #include <QSettings>
@@ -38,6 +43,9 @@ private slots:
     void stageSlidersEditTheWorld();
     void normalLayoutGivesTheBoxHalfTheWindow_data();
     void normalLayoutGivesTheBoxHalfTheWindow();
+    void stageTextIsNeverCut_data();
+    void stageTextIsNeverCut();
+    void tooLongAChallengeEndsInAnEllipsis();
 };
 
 void GuiStageTest::stageFillsTheScreen_data()
@@ -250,6 +258,110 @@ void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow()
     QVERIFY2(share >= 0.45, qPrintable(QString::number(share)));
     auto* lessons = window.findChild<QDockWidget*>(QStringLiteral("lessonsDock"));
     QVERIFY(lessons && lessons->isVisible()); // raised: the lesson text shows
+}
+
+void GuiStageTest::stageTextIsNeverCut_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("1024x768") << QSize(1024, 768);
+    QTest::newRow("1280x720") << QSize(1280, 720);
+}
+
+// Every lesson in the stage view at a projector's 1024x768 and 1280x720:
+// the challenge is never cut off (its lines fit the room its label has, in
+// the window's text size or larger; a challenge too long even then ends in
+// "…" with the whole text as its tooltip), and the readout's lines fit its
+// room at 7 pt or more (its floor). Before, lesson 12's challenge lost its first and
+// last lines at 1024x768 and lesson 07's readout shrank to 7 pt and still
+// lost the speed.
+void GuiStageTest::stageTextIsNeverCut()
+{
+    QFETCH(QSize, size);
+    MainWindow window(QStringLiteral("gravity"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
+    window.showNormal();
+    window.setGeometry(QRect(QPoint(0, 0), size));
+    QTRY_COMPARE(window.size(), size);
+    QWidget* bar = window.findChild<QWidget*>(QStringLiteral("stageBar"));
+    auto* challenge = window.findChild<QLabel*>(QStringLiteral("stageChallenge"));
+    auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
+    QVERIFY(bar && challenge && readout);
+    QStringList shortened;
+    for (const QString& file : LessonLoader::builtInFiles()) {
+        QVERIFY2(window.openLesson(file), qPrintable(file));
+        QTest::qWait(30); // the bar lays out and fits its text after the lesson's first frame
+        const QString name = QFileInfo(file).baseName();
+        if (challenge->isVisible()) {
+            const QRect room = challenge->contentsRect();
+            const int need = QFontMetrics(challenge->font())
+                                 .boundingRect(QRect(0, 0, room.width(), 1 << 20), Qt::TextWordWrap, challenge->text())
+                                 .height();
+            QVERIFY2(need <= room.height(), qPrintable(QStringLiteral("%1: challenge needs %2 px, has %3")
+                                                           .arg(name).arg(need).arg(room.height())));
+            QVERIFY2(challenge->font().pointSizeF() >= bar->font().pointSizeF(), qPrintable(name));
+            if (challenge->text() != window.lesson().challenges.value(0)) {
+                shortened << name;
+                QVERIFY2(challenge->text().endsWith(QStringLiteral("…")), qPrintable(name));
+                QCOMPARE(challenge->toolTip(), window.lesson().challenges.value(0));
+            }
+        }
+        if (readout->isVisible()) {
+            const QFontMetrics fm(readout->font());
+            const QStringList lines = readout->text().split(QLatin1Char('\n'));
+            int widest = 0;
+            for (const QString& line : lines)
+                widest = std::max(widest, fm.horizontalAdvance(line));
+            const QRect room = readout->contentsRect();
+            QVERIFY2(widest <= room.width() && lines.size() * fm.lineSpacing() <= room.height(),
+                     qPrintable(QStringLiteral("%1: readout %2 x %3 px in %4 x %5 at %6 pt")
+                                    .arg(name)
+                                    .arg(widest)
+                                    .arg(lines.size() * fm.lineSpacing())
+                                    .arg(room.width())
+                                    .arg(room.height())
+                                    .arg(readout->font().pointSizeF())));
+            QVERIFY2(readout->font().pointSizeF() >= 7.0,
+                     qPrintable(QStringLiteral("%1: readout at %2 pt").arg(name).arg(readout->font().pointSizeF())));
+        }
+    }
+    qInfo("%dx%d: %lld of %lld challenges shortened (%s)", size.width(), size.height(),
+          static_cast<long long>(shortened.size()), static_cast<long long>(LessonLoader::builtInFiles().size()),
+          qPrintable(shortened.join(QStringLiteral(", "))));
+}
+
+// A row bar 600 px wide and 100 px tall with a challenge of 120 words: the
+// font goes down to the window's text size, the text stops after the last
+// whole word that fits with "…", and the tooltip holds all of it. Given
+// room again, the whole challenge comes back at its own size.
+void GuiStageTest::tooLongAChallengeEndsInAnEllipsis()
+{
+    QAction play(QStringLiteral("Play"));
+    StageBar bar({&play});
+    bar.setVertical(false);
+    bar.setFixedSize(600, 100);
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    QStringList words;
+    for (int i = 0; i < 120; ++i)
+        words << QStringLiteral("word%1").arg(i);
+    const QString challenge = words.join(QLatin1Char(' '));
+    bar.setCaption(QStringLiteral("Title"), challenge);
+    auto* label = bar.findChild<QLabel*>(QStringLiteral("stageChallenge"));
+    QVERIFY(label);
+    QTRY_VERIFY(label->text().endsWith(QStringLiteral(" …")));
+    QCOMPARE(label->toolTip(), challenge);
+    QVERIFY(challenge.startsWith(label->text().chopped(2)));
+    QCOMPARE(label->font().pointSizeF(), bar.font().pointSizeF());
+    const QRect room = label->contentsRect();
+    QVERIFY(QFontMetrics(label->font())
+                .boundingRect(QRect(0, 0, room.width(), 1 << 20), Qt::TextWordWrap, label->text())
+                .height() <= room.height());
+    bar.setFixedSize(1600, 400);
+    QTRY_COMPARE(label->text(), challenge);
+    QVERIFY(label->toolTip().isEmpty());
+    QVERIFY(label->font().pointSizeF() > bar.font().pointSizeF());
 }
 
 QTEST_MAIN(GuiStageTest)

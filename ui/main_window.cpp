@@ -110,6 +110,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_stageLayout->addWidget(m_stageBar);
     m_stageBar->hide();
     connect(m_controller, &SimulationController::stepped, this, &MainWindow::updateStageReadout);
+    connect(m_stageBar, &StageBar::readoutRoomChanged, this, &MainWindow::updateStageReadout, Qt::QueuedConnection);
     // Escape leaves the stage view.
     auto* leave = new QShortcut(QKeySequence(Qt::Key_Escape), this);
     connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
@@ -952,9 +953,18 @@ void MainWindow::updateStageReadout()
 {
     if (!m_stageBar->isVisible())
         return;
+    // Long lines in a row, short ones in a column, and in a row too when
+    // the long ones would have to shrink out of reading size.
+    QString text = stageReadoutText(m_stageBar->isVertical());
+    if (!m_stageBar->isVertical() && !m_stageBar->readoutFits(text))
+        text = stageReadoutText(true);
+    m_stageBar->setReadout(text);
+}
+
+QString MainWindow::stageReadoutText(bool narrow) const
+{
     const sim::World& world = m_controller->world();
     QStringList lines;
-    const bool narrow = m_stageBar->isVertical();
     if (m_stageOverlays.readout && !world.balls().empty()) {
         const sim::Matrix2X a = world.accelerations();
         if (narrow) {
@@ -977,13 +987,19 @@ void MainWindow::updateStageReadout()
             const sim::Energy e = world.energy();
             const sim::Vec2 p = world.momentum();
             lines << tr("energy: kinetic %1").arg(e.kinetic, 0, 'g', 4) << tr("  potential %1").arg(e.potential, 0, 'g', 4)
-                  << tr("  total %1").arg(e.total(), 0, 'g', 4)
-                  << tr("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
+                  << tr("  total %1").arg(e.total(), 0, 'g', 4);
+            // A column is too narrow for the momentum on one line; a row's
+            // short form needs the line it saves.
+            const QString momentum = QStringLiteral("(%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
+            if (m_stageBar->isVertical())
+                lines << tr("momentum") << QStringLiteral("  ") + momentum;
+            else
+                lines << tr("momentum %1").arg(momentum);
         } else {
             lines << WorldPainter::totalsText(world, true);
         }
     }
-    m_stageBar->setReadout(lines.join(QLatin1Char('\n')));
+    return lines.join(QLatin1Char('\n'));
 }
 
 void MainWindow::updateStageCaption()

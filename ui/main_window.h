@@ -110,6 +110,7 @@ private slots:
     void useCompactDocks();
     void updateStageCaption();
     void updateStageReadout();
+    QString stageReadoutText(bool narrow) const; // the readout and totals, in short lines or long
     Overlays readoutsToStageBar(Overlays overlays);
     void layoutStage();
     void about();

@@ -1,6 +1,7 @@
 #include "stage_bar.h"
 
 #include <QAction>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
@@ -34,6 +35,8 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     QFont text = font();
     text.setPointSizeF(text.pointSizeF() * 1.3);
     m_challenge->setFont(text);
+    m_challenge->setAlignment(Qt::AlignLeft | Qt::AlignTop); // if anything is cut, never the start
+    m_challengeFont = text;
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("stageReadout"));
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
@@ -41,6 +44,9 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     m_readout->setFont(mono);
     m_readoutFont = mono;
     m_readout->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // Each label fits its text again whenever the grid gives it a new size.
+    m_readout->installEventFilter(this);
+    m_challenge->installEventFilter(this);
     m_readout->hide();
     for (QAction* action : transport) {
         auto* b = new QToolButton(this);
@@ -61,48 +67,161 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
 void StageBar::setCaption(const QString& title, const QString& challenge)
 {
     m_title->setText(title);
+    m_challengeText = challenge;
     m_challenge->setText(challenge);
+    m_challenge->setToolTip(QString());
+    m_challenge->setFont(m_challengeFont);
     m_challenge->setVisible(!challenge.isEmpty());
+    QTimer::singleShot(0, this, &StageBar::fitChallenge); // once the grid has laid the new text out
 }
 
 void StageBar::setReadout(const QString& text)
 {
+    const bool wasHidden = m_readout->isHidden();
     m_readout->setText(text);
     m_readout->setVisible(!text.isEmpty());
+    if (!m_vertical && m_readout->isHidden() != wasHidden)
+        setVertical(false); // in a row the caption takes the readout's room when there is none
     fitReadout();
+}
+
+namespace {
+
+// The size `lines` take in `font`: the widest line, and all lines stacked.
+QSize textSize(const QFont& font, const QStringList& lines)
+{
+    const QFontMetrics fm(font);
+    int w = 0;
+    for (const QString& line : lines)
+        w = std::max(w, fm.horizontalAdvance(line));
+    return QSize(w, static_cast<int>(lines.size()) * fm.lineSpacing());
+}
+
+} // namespace
+
+bool StageBar::readoutFits(const QString& text) const
+{
+    if (m_readoutRoom.isEmpty())
+        return true;
+    QFont readable = m_readoutFont;
+    readable.setPointSizeF(m_readoutFont.pointSizeF() * 0.75);
+    const QSize need = textSize(readable, text.split(QLatin1Char('\n')));
+    return need.width() <= m_readoutRoom.width() && need.height() <= m_readoutRoom.height();
 }
 
 void StageBar::fitReadout()
 {
     // The readout's lines are never cut: its font shrinks (to 7 pt at
-    // least) until the longest line fits the column's width, or in a row
-    // the width its grid cell got (the label asks for none, so a long
-    // readout never makes the window wider than the screen).
+    // least) until they fit the column's width, or in a row the cell its
+    // grid gave it (the label asks for no width, so a long readout never
+    // makes the window wider than the screen), and in a row its height.
     QFont font = m_readoutFont;
-    const int room = m_vertical ? width() - m_grid->contentsMargins().left() - m_grid->contentsMargins().right()
-                                : m_readout->width();
-    if (room > 0) {
-        const QStringList lines = m_readout->text().split(QLatin1Char('\n'));
-        auto widest = [&](const QFont& f) {
-            const QFontMetrics fm(f);
-            int w = 0;
-            for (const QString& line : lines)
-                w = std::max(w, fm.horizontalAdvance(line));
-            return w;
+    const QStringList lines = m_readout->text().split(QLatin1Char('\n'));
+    if (!m_vertical && !m_readout->isHidden())
+        sizeReadoutColumn(lines);
+    const QMargins margins = m_grid->contentsMargins();
+    const int labelWidth = m_readout->contentsRect().width();
+    const QSize room = m_vertical ? QSize(labelWidth > 0 ? labelWidth : width() - margins.left() - margins.right(),
+                                          QWIDGETSIZE_MAX)
+                                  : m_readout->contentsRect().size();
+    if (room.width() > 0 && room.height() > 0 && !m_readout->isHidden()) {
+        auto fits = [&](const QFont& f) {
+            const QSize need = textSize(f, lines);
+            return need.width() <= room.width() && need.height() <= room.height();
         };
-        while (font.pointSizeF() > 7.0 && widest(font) > room)
+        while (font.pointSizeF() - 0.5 >= 7.0 && !fits(font))
             font.setPointSizeF(font.pointSizeF() - 0.5);
+        if (room != m_readoutRoom) {
+            m_readoutRoom = room;
+            emit readoutRoomChanged();
+        }
     }
     if (font != m_readout->font())
         m_readout->setFont(font);
+}
+
+// In a row the readout's column is as wide as its lines at the readout's
+// own size, but no narrower than 30% and no wider than 60% of the width the
+// buttons leave; the caption has the rest. (A change of less than 12 px is
+// left alone, so the caption does not reflow as the numbers tick.)
+void StageBar::sizeReadoutColumn(const QStringList& lines)
+{
+    int buttons = 0;
+    for (const QToolButton* b : m_buttons)
+        buttons += std::max(b->minimumWidth(), b->sizeHint().width());
+    const QMargins margins = m_grid->contentsMargins();
+    const int spacing = m_grid->horizontalSpacing();
+    const int free = width() - margins.left() - margins.right() - buttons -
+                     spacing * static_cast<int>(m_buttons.size() + 1);
+    if (free <= 0)
+        return;
+    const int want = std::clamp(textSize(m_readoutFont, lines).width(), free * 3 / 10, free * 6 / 10);
+    if (std::abs(want - m_readoutColumn) <= 12)
+        return;
+    m_readoutColumn = want;
+    m_grid->setColumnMinimumWidth(1, want);
+}
+
+// The challenge is never cut off: in a row, in the room the grid gives it,
+// its font shrinks (to the window's own text size at least) until every line
+// fits; if it still does not, it ends after the last whole word that fits,
+// with "…", and the whole challenge is its tooltip (and in the Lesson panel).
+void StageBar::fitChallenge()
+{
+    if (m_challengeText.isEmpty())
+        return;
+    if (m_vertical) {
+        // A column gives the challenge the height its lines need.
+        m_challenge->setFont(m_challengeFont);
+        m_challenge->setText(m_challengeText);
+        m_challenge->setToolTip(QString());
+        return;
+    }
+    const QRect room = m_challenge->contentsRect();
+    if (room.width() <= 0 || room.height() <= 0)
+        return;
+    auto height = [&](const QFont& f, const QString& s) {
+        return QFontMetrics(f).boundingRect(QRect(0, 0, room.width(), 1 << 20), Qt::TextWordWrap, s).height();
+    };
+    QFont f = m_challengeFont;
+    const qreal smallest = font().pointSizeF();
+    while (f.pointSizeF() - 0.5 >= smallest && height(f, m_challengeText) > room.height())
+        f.setPointSizeF(f.pointSizeF() - 0.5);
+    if (height(f, m_challengeText) > room.height())
+        f.setPointSizeF(smallest);
+    QString shown = m_challengeText;
+    if (height(f, shown) > room.height()) {
+        QStringList words = m_challengeText.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        while (words.size() > 1 && height(f, words.join(QLatin1Char(' ')) + QStringLiteral(" …")) > room.height())
+            words.removeLast();
+        shown = words.join(QLatin1Char(' ')) + QStringLiteral(" …");
+    }
+    if (f != m_challenge->font())
+        m_challenge->setFont(f);
+    if (shown != m_challenge->text())
+        m_challenge->setText(shown);
+    m_challenge->setToolTip(shown == m_challengeText ? QString() : m_challengeText);
+}
+
+bool StageBar::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::Resize) {
+        if (watched == m_readout)
+            QTimer::singleShot(0, this, &StageBar::fitReadout);
+        else if (watched == m_challenge)
+            QTimer::singleShot(0, this, &StageBar::fitChallenge);
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void StageBar::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
     fitReadout();
-    // In a row the readout's cell is known once the grid has laid out.
+    // In a row the readout's and the challenge's cells are known once the
+    // grid has laid out.
     QTimer::singleShot(0, this, &StageBar::fitReadout);
+    QTimer::singleShot(0, this, &StageBar::fitChallenge);
 }
 
 void StageBar::setSliders(QWidget* sliders)
@@ -137,8 +256,11 @@ void StageBar::setVertical(bool vertical)
         delete m_grid->takeAt(0); // the layout item only; the widget stays
     for (int k = 0; k < m_grid->rowCount(); ++k) // no stretch carries over from the other orientation
         m_grid->setRowStretch(k, 0);
-    for (int k = 0; k < m_grid->columnCount(); ++k)
+    for (int k = 0; k < m_grid->columnCount(); ++k) {
         m_grid->setColumnStretch(k, 0);
+        m_grid->setColumnMinimumWidth(k, 0);
+    }
+    m_readoutColumn = 0;
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);
@@ -151,17 +273,24 @@ void StageBar::setVertical(bool vertical)
             m_grid->addWidget(m_sliders, after + 1, 0, 1, 2);
         m_grid->setRowStretch(after + 2, 1);
     } else {
-        // One row: the caption, then the buttons.
-        m_grid->addWidget(m_title, 0, 0);
-        m_grid->addWidget(m_challenge, 1, 0);
-        m_grid->addWidget(m_readout, 0, 1, 2, 1);
+        // One row: the caption, then the buttons. Without a readout the
+        // caption has the readout's room too.
+        const int captionColumns = m_readout->isHidden() ? 2 : 1;
+        m_grid->addWidget(m_title, 0, 0, 1, captionColumns);
+        m_grid->addWidget(m_challenge, 1, 0, 1, captionColumns);
+        if (!m_readout->isHidden())
+            m_grid->addWidget(m_readout, 0, 1, 2, 1);
         for (qsizetype i = 0; i < m_buttons.size(); ++i)
             m_grid->addWidget(m_buttons[i], 0, 2 + static_cast<int>(i), 2, 1);
         if (m_sliders) // a row of its own under the caption and the buttons
             m_grid->addWidget(m_sliders, 2, 0, 1, 2 + static_cast<int>(m_buttons.size()));
-        m_grid->setColumnStretch(0, 1);
-        m_grid->setColumnStretch(1, 1); // the readout: as wide as the caption
+        m_grid->setColumnStretch(0, 1); // the readout's column: see sizeReadoutColumn
+        // The challenge has all the height the title leaves, whatever its
+        // text asks (fitChallenge fits the text to that room).
+        m_grid->setRowStretch(1, 1);
     }
+    QTimer::singleShot(0, this, &StageBar::fitReadout);
+    QTimer::singleShot(0, this, &StageBar::fitChallenge);
 }
 
 } // namespace forcelab

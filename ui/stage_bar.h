@@ -7,6 +7,8 @@
 
 #include <QFont>
 #include <QList>
+#include <QSize>
+#include <QStringList>
 #include <QWidget>
 
 class QAction;
@@ -30,22 +32,37 @@ public:
     /// stage view keeps the box free of panels); empty hides it.
     void setReadout(const QString& text);
     bool isVertical() const { return m_vertical; }
+    /// Whether `text` fits the readout's room at three quarters of the
+    /// readout's own size or more (true while the room is not known yet): a
+    /// row's readout then keeps its long lines, else it gets short ones.
+    bool readoutFits(const QString& text) const;
     /// The lesson's sliders (StageSliders), under the buttons; not owned before, owned after.
     void setSliders(QWidget* sliders);
     /// Shows or hides the sliders' area (a row bar without room for them).
     void setSlidersShown(bool shown);
 
+signals:
+    /// The readout's room changed size: its text may want the other form.
+    void readoutRoomChanged();
+
 protected:
     void resizeEvent(QResizeEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void fitReadout();
+    void sizeReadoutColumn(const QStringList& lines);
+    void fitChallenge();
 
     QLabel* m_title = nullptr;
     QLabel* m_challenge = nullptr;
     QLabel* m_readout = nullptr;
     QWidget* m_sliders = nullptr;
-    QFont m_readoutFont; // the readout's own size, before fitting
+    QFont m_readoutFont;     // the readout's own size, before fitting
+    QSize m_readoutRoom;     // the readout's room when it was last fitted
+    int m_readoutColumn = 0; // px, a row's readout column (0: not set)
+    QFont m_challengeFont;   // the challenge's own size, before fitting
+    QString m_challengeText; // the whole challenge (the label may show it shortened)
     QList<QToolButton*> m_buttons;
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;
