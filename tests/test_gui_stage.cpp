@@ -20,6 +20,7 @@
 #include <QFontMetrics>
 #include <QLabel>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -271,7 +272,8 @@ void GuiStageTest::stageTextIsNeverCut_data()
 // the challenge is never cut off (its lines fit the room its label has, in
 // the window's text size or larger; a challenge too long even then ends in
 // "…" with the whole text as its tooltip), and the readout's lines fit its
-// room at 7 pt or more (its floor). Before, lesson 12's challenge lost its first and
+// room at 7 pt or more (its floor), and no word of a slider's label is cut.
+// Before, lesson 12's challenge lost its first and
 // last lines at 1024x768 and lesson 07's readout shrank to 7 pt and still
 // lost the speed.
 void GuiStageTest::stageTextIsNeverCut()
@@ -306,6 +308,18 @@ void GuiStageTest::stageTextIsNeverCut()
                 QVERIFY2(challenge->text().endsWith(QStringLiteral("…")), qPrintable(name));
                 QCOMPARE(challenge->toolTip(), window.lesson().challenges.value(0));
             }
+        }
+        // Every word of a stage slider's label fits its width (a label may
+        // wrap, but "restitution" must not lose its end).
+        for (QLabel* label : bar->findChildren<QLabel*>()) {
+            if (!label->isVisible() || !label->objectName().startsWith(QStringLiteral("stage_")))
+                continue;
+            QString plain = label->text();
+            plain.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
+            const QFontMetrics fm(label->font());
+            for (const QString& word : plain.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+                QVERIFY2(fm.horizontalAdvance(word) <= label->contentsRect().width(),
+                         qPrintable(QStringLiteral("%1: '%2' in %3 px").arg(name, word).arg(label->contentsRect().width())));
         }
         if (readout->isVisible()) {
             const QFontMetrics fm(readout->font());

@@ -1032,8 +1032,12 @@ void MainWindow::layoutStage()
     // A row is as tall as its caption, readout and sliders need, up to a
     // seventh of the screen (the box keeps over 80% of it); the sliders
     // stay in the Parameters panel when they would not fit under that.
-    // Two sliders side by side in a column; in a row as many as fit its width.
-    m_stageSliders->setColumns(vertical ? 2 : std::clamp(area.width() / 240, 1, std::max(1, m_stageSliders->count())));
+    // Two sliders side by side in a column at least 320 px wide (one in a
+    // narrower one, so a label such as "Ball restitution" is not cut); in a
+    // row as many as fit its width.
+    const int columnWidth = std::max(200, static_cast<int>(side));
+    m_stageSliders->setColumns(vertical ? (columnWidth >= 320 ? 2 : 1)
+                                        : std::clamp(area.width() / 240, 1, std::max(1, m_stageSliders->count())));
     int minimum = 200;
     if (!vertical) {
         const int cap = std::max(96, area.height() / 7);

@@ -247,6 +247,19 @@ void StageBar::setSlidersShown(bool shown)
 {
     if (m_sliders)
         m_sliders->setVisible(shown);
+    if (m_vertical)
+        stretchColumnRows();
+}
+
+// In a column the sliders' area takes the height left under the readout,
+// so they scroll only when they do not fit the screen; without sliders an
+// empty row takes it and the rest stays at the top.
+void StageBar::stretchColumnRows()
+{
+    const int after = 2 + static_cast<int>((m_buttons.size() + 1) / 2);
+    const bool sliders = m_sliders && !m_sliders->isHidden();
+    m_grid->setRowStretch(after + 1, sliders ? 1 : 0);
+    m_grid->setRowStretch(after + 2, sliders ? 0 : 1);
 }
 
 void StageBar::setVertical(bool vertical)
@@ -271,7 +284,7 @@ void StageBar::setVertical(bool vertical)
         m_grid->addWidget(m_readout, after, 0, 1, 2);
         if (m_sliders)
             m_grid->addWidget(m_sliders, after + 1, 0, 1, 2);
-        m_grid->setRowStretch(after + 2, 1);
+        stretchColumnRows();
     } else {
         // One row: the caption, then the buttons. Without a readout the
         // caption has the readout's room too.

@@ -53,6 +53,7 @@ private:
     void fitReadout();
     void sizeReadoutColumn(const QStringList& lines);
     void fitChallenge();
+    void stretchColumnRows();
 
     QLabel* m_title = nullptr;
     QLabel* m_challenge = nullptr;

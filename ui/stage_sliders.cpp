@@ -98,11 +98,17 @@ void StageSliders::arrange()
 {
     while (m_grid->count() > 0)
         delete m_grid->takeAt(0); // the layout item only; the widgets stay
+    for (int k = 0; k < m_grid->rowCount(); ++k)
+        m_grid->setRowStretch(k, 0);
     for (qsizetype i = 0; i < m_sliders.size(); ++i) {
         const int row = static_cast<int>(i / m_columns) * 2, column = static_cast<int>(i % m_columns);
         m_grid->addWidget(m_sliders[i].label, row, column);
         m_grid->addWidget(m_sliders[i].control, row + 1, column);
     }
+    // Room to spare goes under the last slider, so the sliders stay together
+    // at the top of a tall area.
+    const int rows = static_cast<int>((m_sliders.size() + m_columns - 1) / m_columns) * 2;
+    m_grid->setRowStretch(rows, 1);
 }
 
 void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)
