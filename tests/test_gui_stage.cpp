@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
@@ -289,7 +290,8 @@ void GuiStageTest::stageTextIsNeverCut()
     QWidget* bar = window.findChild<QWidget*>(QStringLiteral("stageBar"));
     auto* challenge = window.findChild<QLabel*>(QStringLiteral("stageChallenge"));
     auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
-    QVERIFY(bar && challenge && readout);
+    auto* sliderArea = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
+    QVERIFY(bar && challenge && readout && sliderArea);
     QStringList shortened;
     for (const QString& file : LessonLoader::builtInFiles()) {
         QVERIFY2(window.openLesson(file), qPrintable(file));
@@ -317,9 +319,17 @@ void GuiStageTest::stageTextIsNeverCut()
             QString plain = label->text();
             plain.remove(QRegularExpression(QStringLiteral("<[^>]*>")));
             const QFontMetrics fm(label->font());
+            const int width = label->contentsRect().width();
             for (const QString& word : plain.split(QLatin1Char(' '), Qt::SkipEmptyParts))
-                QVERIFY2(fm.horizontalAdvance(word) <= label->contentsRect().width(),
-                         qPrintable(QStringLiteral("%1: '%2' in %3 px").arg(name, word).arg(label->contentsRect().width())));
+                QVERIFY2(fm.horizontalAdvance(word) <= width,
+                         qPrintable(QStringLiteral("%1: '%2' in %3 px").arg(name, word).arg(width)));
+            // ... and the label is not under the sliders' scroll bar.
+            QWidget* viewport = sliderArea->viewport();
+            const int right = label->mapTo(viewport, QPoint(label->width(), 0)).x();
+            QVERIFY2(right <= viewport->width(), qPrintable(QStringLiteral("%1: a slider label ends at %2 of %3 px")
+                                                                .arg(name)
+                                                                .arg(right)
+                                                                .arg(viewport->width())));
         }
         if (readout->isVisible()) {
             const QFontMetrics fm(readout->font());
