@@ -955,51 +955,46 @@ void MainWindow::updateStageReadout()
         return;
     // Long lines in a row, short ones in a column, and in a row too when
     // the long ones would have to shrink out of reading size.
-    QString text = stageReadoutText(m_stageBar->isVertical());
-    if (!m_stageBar->isVertical() && !m_stageBar->readoutFits(text))
-        text = stageReadoutText(true);
-    m_stageBar->setReadout(text);
+    const StageReadout text = stageReadoutText();
+    const bool wide = !m_stageBar->isVertical() && m_stageBar->readoutFits(text.wide);
+    m_stageBar->setReadout(wide ? text.wide : text.narrow);
 }
 
-QString MainWindow::stageReadoutText(bool narrow) const
+// Both forms from one evaluation of the accelerations and the energy (each
+// a pass over every pair of balls when they attract).
+MainWindow::StageReadout MainWindow::stageReadoutText() const
 {
     const sim::World& world = m_controller->world();
-    QStringList lines;
+    QStringList wide, narrow;
     if (m_stageOverlays.readout && !world.balls().empty()) {
         const sim::Matrix2X a = world.accelerations();
-        if (narrow) {
-            // A column is narrow: short lines, x and y side by side.
-            const int n = world.balls().size(), selected = m_canvas->selectedBall();
-            const int i = selected >= 0 && selected < n ? selected : 0;
-            const sim::Vec2 x = world.balls().position.col(i), v = world.balls().velocity.col(i);
-            auto num = [](double value) { return QString::number(value, 'f', 1); };
-            lines << tr("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3)
-                  << QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y()))
-                  << QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y()))
-                  << QStringLiteral("a (%1, %2) px/s²").arg(num(a(0, i)), num(a(1, i)))
-                  << tr("speed %1 px/s").arg(v.norm(), 0, 'f', 1);
-        } else {
-            lines << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a, true);
-        }
+        wide << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a, true);
+        // Short lines, x and y side by side.
+        const int n = world.balls().size(), selected = m_canvas->selectedBall();
+        const int i = selected >= 0 && selected < n ? selected : 0;
+        const sim::Vec2 x = world.balls().position.col(i), v = world.balls().velocity.col(i);
+        auto num = [](double value) { return QString::number(value, 'f', 1); };
+        narrow << tr("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3)
+               << QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y()))
+               << QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y()))
+               << QStringLiteral("a (%1, %2) px/s²").arg(num(a(0, i)), num(a(1, i)))
+               << tr("speed %1 px/s").arg(v.norm(), 0, 'f', 1);
     }
     if (m_stageOverlays.totals) {
-        if (narrow) {
-            const sim::Energy e = world.energy();
-            const sim::Vec2 p = world.momentum();
-            lines << tr("energy: kinetic %1").arg(e.kinetic, 0, 'g', 4) << tr("  potential %1").arg(e.potential, 0, 'g', 4)
-                  << tr("  total %1").arg(e.total(), 0, 'g', 4);
-            // A column is too narrow for the momentum on one line; a row's
-            // short form needs the line it saves.
-            const QString momentum = QStringLiteral("(%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
-            if (m_stageBar->isVertical())
-                lines << tr("momentum") << QStringLiteral("  ") + momentum;
-            else
-                lines << tr("momentum %1").arg(momentum);
-        } else {
-            lines << WorldPainter::totalsText(world, true);
-        }
+        const sim::Energy e = world.energy();
+        const sim::Vec2 p = world.momentum();
+        wide << WorldPainter::totalsText(e, p, true);
+        narrow << tr("energy: kinetic %1").arg(e.kinetic, 0, 'g', 4) << tr("  potential %1").arg(e.potential, 0, 'g', 4)
+               << tr("  total %1").arg(e.total(), 0, 'g', 4);
+        // A column is too narrow for the momentum on one line; a row's
+        // short form needs the line it saves.
+        const QString momentum = QStringLiteral("(%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
+        if (m_stageBar->isVertical())
+            narrow << tr("momentum") << QStringLiteral("  ") + momentum;
+        else
+            narrow << tr("momentum %1").arg(momentum);
     }
-    return lines.join(QLatin1Char('\n'));
+    return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
 }
 
 void MainWindow::updateStageCaption()

@@ -110,12 +110,15 @@ private slots:
     void useCompactDocks();
     void updateStageCaption();
     void updateStageReadout();
-    QString stageReadoutText(bool narrow) const; // the readout and totals, in short lines or long
     Overlays readoutsToStageBar(Overlays overlays);
     void layoutStage();
     void about();
 
 private:
+    struct StageReadout {
+        QString wide, narrow; // the readout and totals in long lines, and in short ones
+    };
+    StageReadout stageReadoutText() const;
     void createActions();
     void createMenus();
     void createToolBars();

@@ -1232,8 +1232,11 @@ void WorldPainter::paintVanes(QPainter& p, const ViewTransform& view, const sim:
 
 QStringList WorldPainter::totalsText(const sim::World& world, bool wide)
 {
-    const sim::Energy e = world.energy();
-    const sim::Vec2 m = world.momentum();
+    return totalsText(world.energy(), world.momentum(), wide);
+}
+
+QStringList WorldPainter::totalsText(const sim::Energy& e, const sim::Vec2& m, bool wide)
+{
     if (wide)
         return wideTotals(e, m);
     auto num = [](double v) { return QString::number(v, 'g', 6); };

@@ -193,6 +193,8 @@ public:
     static constexpr int kMaxGhostBalls = 5000;
     /// The lines of the totals panel: kinetic, potential and total energy, momentum.
     static QStringList totalsText(const sim::World& world, bool wide = false);
+    /// The same from an energy and a momentum already worked out.
+    static QStringList totalsText(const sim::Energy& e, const sim::Vec2& momentum, bool wide = false);
     /// The lines of the readout of ball `selected` (ball 0 when none).
     static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations,
                                    bool wide = false);
