@@ -77,7 +77,7 @@ void runBox2D(const sim::Scene& scene)
         vy[i] = bodies[i]->GetLinearVelocity().y * kPixelsPerMetre;
         r[i] = scene.balls[i].radius;
     }
-    print("Box2D 2.4", static_cast<int>(n), ms, measurePile(x, y, vx, vy, r, height));
+    print(box2dName(), static_cast<int>(n), ms, measurePile(x, y, vx, vy, r, height));
 }
 
 } // namespace forcelab::peer
