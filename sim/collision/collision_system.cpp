@@ -155,6 +155,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
 {
     CollisionStats stats;
     m_lastPasses = 0;
+    m_lastBounceRows = 0;
     StageClock clock(m_profiling);
     if (m_profiling)
         ++m_profile.calls;
@@ -186,6 +187,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_speculative, &m_contacts, clock,
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
+        m_lastBounceRows = m_resting.lastBounceRows();
         stats.contacts = static_cast<std::int64_t>(m_contacts.size());
         if (m_profiling)
             m_profile.passes += m_lastPasses;
@@ -212,6 +214,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_contacts, nullptr, clock,
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
+        m_lastBounceRows = m_resting.lastBounceRows();
         if (m_profiling)
             m_profile.passes += m_lastPasses;
         return stats;

@@ -54,6 +54,9 @@ public:
     const ContactSolverSettings& solverSettings() const { return m_solver; }
     /// Velocity passes the last step() made (0 when it had no resting-contact solve).
     int lastVelocityPasses() const { return m_lastPasses; }
+    /// Rows that alone got the extra passes of a bounce in the last step()
+    /// (the rows near it; 0: no bounce, or every row got them).
+    std::size_t lastBounceRegionRows() const { return m_lastBounceRows; }
 
     /// Detection alone: every touching pair (distance < r_a + r_b), sorted by
     /// (a, b) and identical for every method.
@@ -90,6 +93,7 @@ private:
     std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)
     ContactSolverSettings m_solver;
     int m_lastPasses = 0;
+    std::size_t m_lastBounceRows = 0;
     bool m_profiling = false;
     CollisionProfile m_profile;
 

@@ -88,7 +88,8 @@ struct ContactSolverSettings {
     int stages = 6;               ///< 1, solver stages per sub-step (1: one stage with positional correction)
     int stagePasses = 4;          ///< 1, velocity passes per stage that also push overlaps apart
     int relaxPasses = 1;          ///< 1, velocity passes per stage after the move, without the push
-    int bouncePasses = 4;         ///< 1, passes after the last stage (velocityPasses when a pair bounces)
+    int bouncePasses = 4;         ///< 1, passes after the last stage over every row (velocityPasses when a pair bounces)
+    int bounceLayers = 12;        ///< 1, the passes a bounce adds go to the rows this many balls from it (0: every row)
     double contactStiffness = 0.5; ///< 1, a soft contact's spring frequency as a share of the stage rate 1/hs
     double dampingRatio = 1.0;    ///< 1, the soft contact's damping as a share of critical damping
     double pushSpeed = 300.0;     ///< px/s, fastest speed at which an overlap is pushed apart

@@ -27,11 +27,14 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     m_stripSolves.resize(m_strips.stripCount());
     clock.lap(profile.wallScan);
     m_lastPasses = 0;
+    m_lastBounceRows = 0;
+    m_lastBouncePasses = 0;
     if (c.solver.stages > 1) {
         stagedSolve(c);
         if (profiling) {
             profile.rows += static_cast<std::int64_t>(m_rowCount);
-            profile.solves += static_cast<std::int64_t>(m_rowCount) * m_lastPasses;
+            profile.solves += static_cast<std::int64_t>(m_rowCount) * m_lastPasses +
+                              static_cast<std::int64_t>(m_lastBounceRows) * m_lastBouncePasses;
         }
         clock.lap(profile.velocity);
         stagedWriteBack(balls, c);

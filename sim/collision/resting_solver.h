@@ -58,8 +58,13 @@ public:
     /// Forgets the impulses kept for the next warm start (another kind of
     /// step ran, so they no longer belong to these contacts).
     void forget() { m_warmCount = -1; }
-    /// Velocity passes the last solve made.
+    /// Velocity passes over every row the last solve made.
     int lastPasses() const { return m_lastPasses; }
+    /// Rows that alone got the passes a bounce adds in the last solve (the
+    /// rows near a bounce); 0 when no pair bounced or every row got them.
+    std::size_t lastBounceRows() const { return m_lastBounceRows; }
+    /// How many passes those rows got on top of the passes over every row.
+    int lastBouncePasses() const { return m_lastBouncePasses; }
 
 private:
     // One ball–ball contact: its two bodies, the line of impact at detection,
@@ -120,7 +125,12 @@ private:
     struct SoftContact {
         double hs, inverseHs, biasRate, massScale, impulseScale;
     };
-    void stagePass(const SubStepContext& c, const SoftContact& soft, bool push, bool bounce, bool last);
+    // One pass over every row (onlyRows null) or over the rows listed.
+    void stagePass(const SubStepContext& c, const SoftContact& soft, bool push, bool bounce, bool last,
+                   const std::vector<int>* onlyRows = nullptr);
+    // The rows near a bounce, for the passes a bounce adds (soft_stages.cpp).
+    bool markBounceRegion(int layers);
+    static constexpr unsigned char kFarFromBounce = 255;
     void stagedWriteBack(BallState& balls, const SubStepContext& c);
 
     // The passes' two innermost operations, here so that every pass (in
@@ -156,6 +166,8 @@ private:
     std::vector<double> m_stageVelocity;   // per body, staged solve: v at the start of this stage
     std::vector<double> m_bodyStart;       // per body, staged solve: x, y at the start of the sub-step
     std::vector<double> m_bodyMoved;       // per body, staged solve: x, y now less x, y at the start
+    std::vector<unsigned char> m_bodyLayer; // per body, staged solve: rows between it and a bounce (kFarFromBounce: more)
+    std::vector<int> m_bounceRows;         // staged solve: the rows near a bounce, in row order
     std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;
@@ -169,6 +181,8 @@ private:
     int m_bodyCount = 0;
     int m_warmCount = -1;
     int m_lastPasses = 0;
+    std::size_t m_lastBounceRows = 0;
+    int m_lastBouncePasses = 0;
 };
 
 } // namespace forcelab::sim
