@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
 
 namespace forcelab::cli {
 namespace {
@@ -53,6 +54,8 @@ const std::vector<PileOption>& pileOptions()
          [](sim::PileStudyOptions& o, double v) { o.solver.stagePasses = static_cast<int>(v); }},
         {"relax-passes", "Velocity passes per stage after the move, without the push (default 1).", 0, 1000, true,
          [](sim::PileStudyOptions& o, double v) { o.solver.relaxPasses = static_cast<int>(v); }},
+        {"bounce-layers", "The passes a bounce adds go to the rows this many balls from it (default 12; 0: every row).",
+         0, 254, true, [](sim::PileStudyOptions& o, double v) { o.solver.bounceLayers = static_cast<int>(v); }},
         {"stiffness", "A soft contact's spring frequency as a share of the stage rate (default 0.5).", 0.001, 1000,
          false, [](sim::PileStudyOptions& o, double v) { o.solver.contactStiffness = v; }},
         {"damping-ratio", "A soft contact's damping as a share of critical damping (default 1).", 0, 1000, false,
@@ -93,7 +96,11 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
         << study.substeps << " sub-step(s) of 1/60 s, ";
     if (solver.stages > 1)
         out << solver.stages << " stages of " << solver.stagePasses << " + " << solver.relaxPasses
-            << " passes, stiffness " << solver.contactStiffness << ", damping ratio " << solver.dampingRatio << "\n";
+            << " passes, stiffness " << solver.contactStiffness << ", damping ratio " << solver.dampingRatio
+            << ", a bounce's extra passes "
+            << (solver.bounceLayers > 0 ? "within " + std::to_string(solver.bounceLayers) + " balls of it"
+                                        : std::string("on every row"))
+            << "\n";
     else
         out << "one stage: " << solver.velocityPasses << " velocity passes, " << solver.positionPasses
             << " position passes, correction " << solver.correction << ", slop " << solver.slop << " r\n";
