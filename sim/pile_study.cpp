@@ -3,6 +3,7 @@
 #include "threads.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -25,14 +26,28 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
     const long steps = std::lround(o.seconds / dt);
     const long stride = std::max(1L, std::lround(o.every / dt));
     if (out)
-        *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px   pile px/s   in flight\n";
+        *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px   pile px/s   in flight"
+                "    ms/step   bounced\n";
     std::vector<PileStudyRow> rows;
+    // Only the steps are timed, not the measures between the rows.
+    double stepSeconds = 0.0;
+    long stepsTimed = 0;
+    int bounceSteps = 0;
     for (long s = 1; s <= steps; ++s) {
+        const auto start = std::chrono::steady_clock::now();
         world.step();
+        stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ++stepsTimed;
+        bounceSteps += world.collisionSystem().lastStepBounced() ? 1 : 0;
         if (s % stride != 0 && s != steps)
             continue;
         PileStudyRow row;
         row.time = static_cast<double>(s) * dt;
+        row.msPerStep = 1000.0 * stepSeconds / static_cast<double>(stepsTimed);
+        row.bounceSteps = bounceSteps;
+        stepSeconds = 0.0;
+        stepsTimed = 0;
+        bounceSteps = 0;
         row.measures = measurePile(world);
         const BallState& b = world.balls();
         for (int i = 0; i < b.size(); ++i) {
@@ -42,11 +57,11 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
         }
         rows.push_back(row);
         if (out) {
-            char line[160];
-            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f %11.2f %11d\n", row.time,
-                          row.measures.deepestOverlap, row.measures.meanOverlap, row.measures.rmsSpeed, row.maxSpeed,
-                          row.movingBalls, row.measures.meanHeight, row.measures.pileRmsSpeed,
-                          row.measures.inFlight);
+            char line[200];
+            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f %11.2f %11d %10.2f %9d\n",
+                          row.time, row.measures.deepestOverlap, row.measures.meanOverlap, row.measures.rmsSpeed,
+                          row.maxSpeed, row.movingBalls, row.measures.meanHeight, row.measures.pileRmsSpeed,
+                          row.measures.inFlight, row.msPerStep, row.bounceSteps);
             *out << line << std::flush;
         }
     }

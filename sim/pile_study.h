@@ -30,6 +30,8 @@ struct PileStudyRow {
     PileMeasures measures; ///< overlaps (r), rms speed (px/s), mean height (px)
     double maxSpeed = 0.0; ///< px/s, the fastest ball
     int movingBalls = 0;   ///< 1, balls faster than 5 px/s
+    double msPerStep = 0.0; ///< ms, wall-clock time per step since the row before
+    int bounceSteps = 0;   ///< 1, steps since the row before in which a pair or a wall bounced
 };
 
 /// Runs the study; with `out`, prints each row as it is taken.

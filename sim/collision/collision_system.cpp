@@ -156,6 +156,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     CollisionStats stats;
     m_lastPasses = 0;
     m_lastBounceRows = 0;
+    m_lastBounced = false;
     StageClock clock(m_profiling);
     if (m_profiling)
         ++m_profile.calls;
@@ -188,6 +189,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
         m_lastBounceRows = m_resting.lastBounceRows();
+        m_lastBounced = m_resting.lastBounced();
         stats.contacts = static_cast<std::int64_t>(m_contacts.size());
         if (m_profiling)
             m_profile.passes += m_lastPasses;
@@ -215,6 +217,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
         m_lastBounceRows = m_resting.lastBounceRows();
+        m_lastBounced = m_resting.lastBounced();
         if (m_profiling)
             m_profile.passes += m_lastPasses;
         return stats;

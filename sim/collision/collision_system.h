@@ -57,6 +57,8 @@ public:
     /// Rows that alone got the extra passes of a bounce in the last step()
     /// (the rows near it; 0: no bounce, or every row got them).
     std::size_t lastBounceRegionRows() const { return m_lastBounceRows; }
+    /// Whether the last step()'s staged solve had a pair or a wall bounce.
+    bool lastStepBounced() const { return m_lastBounced; }
 
     /// Detection alone: every touching pair (distance < r_a + r_b), sorted by
     /// (a, b) and identical for every method.
@@ -94,6 +96,7 @@ private:
     ContactSolverSettings m_solver;
     int m_lastPasses = 0;
     std::size_t m_lastBounceRows = 0;
+    bool m_lastBounced = false;
     bool m_profiling = false;
     CollisionProfile m_profile;
 

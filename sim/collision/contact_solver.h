@@ -68,9 +68,11 @@
 //    and its speed does not. No positional correction runs. The bounces of
 //    point 1 come after the last stage, at e times the speed each pair
 //    hit with in the stage where it met (not the speed at the end of the
-//    sub-step, which has up to g·h more in it). Gravity in short stages is
-//    what the pile needs: the overlap one of 6 stages makes is 1/36 of a
-//    whole step's. A body no contact pushed keeps the integrator's result, so a
+//    sub-step, which has up to g·h more in it); `bouncePasses` passes over
+//    every row follow, and a bounce adds velocityPasses − bouncePasses more
+//    over the rows within `bounceLayers` balls of it. Gravity in short
+//    stages is what the pile needs: the overlap one of 6 stages makes is
+//    1/36 of a whole step's. A body no contact pushed keeps the integrator's result, so a
 //    lone ball (a restitution-1 ball bouncing for ever) moves exactly as
 //    without the solver.
 

@@ -29,6 +29,7 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
     m_lastPasses = 0;
     m_lastBounceRows = 0;
     m_lastBouncePasses = 0;
+    m_lastBounced = false;
     if (c.solver.stages > 1) {
         stagedSolve(c);
         if (profiling) {

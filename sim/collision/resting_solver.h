@@ -65,6 +65,8 @@ public:
     std::size_t lastBounceRows() const { return m_lastBounceRows; }
     /// How many passes those rows got on top of the passes over every row.
     int lastBouncePasses() const { return m_lastBouncePasses; }
+    /// Whether a pair or a ball on a wall bounced in the last solve.
+    bool lastBounced() const { return m_lastBounced; }
 
 private:
     // One ball–ball contact: its two bodies, the line of impact at detection,
@@ -183,6 +185,7 @@ private:
     int m_lastPasses = 0;
     std::size_t m_lastBounceRows = 0;
     int m_lastBouncePasses = 0;
+    bool m_lastBounced = false;
 };
 
 } // namespace forcelab::sim

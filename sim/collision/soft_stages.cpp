@@ -174,6 +174,7 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     //    one ball bouncing on a resting pile of 20,000 then costs a few
     //    hundred rows a pass instead of the whole pile. The passes over
     //    every row come last, so every row ends on the same footing.
+    m_lastBounced = any;
     const int allPasses = std::max(1, settings.bouncePasses);
     int extraPasses = any ? std::max(0, settings.velocityPasses - allPasses) : 0;
     if (extraPasses > 0 && settings.bounceLayers > 0 && markBounceRegion(settings.bounceLayers)) {
@@ -201,31 +202,40 @@ bool RestingSolver::markBounceRegion(int layers)
     layers = std::min(layers, static_cast<int>(kFarFromBounce) - 1);
     const auto bodies = static_cast<std::size_t>(m_bodyCount);
     m_bodyLayer.assign(bodies, kFarFromBounce);
+    // A region of half the bodies or more has about half the rows or more:
+    // stop looking (in the landing of a pile, where bounces are everywhere).
+    std::size_t marked = 0;
+    auto mark = [&](int body, unsigned char layer) {
+        unsigned char& l = m_bodyLayer[static_cast<std::size_t>(body)];
+        if (l == kFarFromBounce)
+            ++marked;
+        l = std::min(l, layer);
+    };
     for (std::size_t k = 0; k < m_rowCount; ++k)
         if (m_pushed[k] == 2) {
-            m_bodyLayer[static_cast<std::size_t>(m_pairRows[k].a)] = 0;
-            m_bodyLayer[static_cast<std::size_t>(m_pairRows[k].b)] = 0;
+            mark(m_pairRows[k].a, 0);
+            mark(m_pairRows[k].b, 0);
         }
     for (const WallRow& row : m_wallRows)
         if (row.allowed >= 0.0)
-            m_bodyLayer[static_cast<std::size_t>(row.body)] = 0;
-    for (int layer = 0; layer + 1 < layers; ++layer) {
+            mark(row.body, 0);
+    for (int layer = 0; layer + 1 < layers && 2 * marked < bodies; ++layer) {
         const auto from = static_cast<unsigned char>(layer), to = static_cast<unsigned char>(layer + 1);
-        bool grew = false;
+        const std::size_t before = marked;
         for (std::size_t k = 0; k < m_rowCount; ++k) {
-            unsigned char& la = m_bodyLayer[static_cast<std::size_t>(m_pairRows[k].a)];
-            unsigned char& lb = m_bodyLayer[static_cast<std::size_t>(m_pairRows[k].b)];
-            if (la == from && lb > to) {
-                lb = to;
-                grew = true;
-            } else if (lb == from && la > to) {
-                la = to;
-                grew = true;
-            }
+            const PairRow& row = m_pairRows[k];
+            const unsigned char la = m_bodyLayer[static_cast<std::size_t>(row.a)];
+            const unsigned char lb = m_bodyLayer[static_cast<std::size_t>(row.b)];
+            if (la == from && lb > to)
+                mark(row.b, to);
+            else if (lb == from && la > to)
+                mark(row.a, to);
         }
-        if (!grew)
+        if (marked == before)
             break;
     }
+    if (2 * marked >= bodies)
+        return false;
     m_bounceRows.clear();
     for (std::size_t k = 0; k < m_rowCount; ++k) {
         const unsigned char la = m_bodyLayer[static_cast<std::size_t>(m_pairRows[k].a)];
