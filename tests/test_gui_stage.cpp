@@ -48,6 +48,7 @@ private slots:
     void stageTextIsNeverCut_data();
     void stageTextIsNeverCut();
     void tooLongAChallengeEndsInAnEllipsis();
+    void rowReadoutUsesTextColumns();
 };
 
 namespace {
@@ -300,6 +301,10 @@ void GuiStageTest::stageTextIsNeverCut()
     auto* sliderArea = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
     QVERIFY(bar && challenge && readout && sliderArea);
     QStringList shortened;
+    struct Smallest {
+        qreal points = 1000.0;
+        QString lesson;
+    } smallestInRow, smallestInColumn;
     for (const QString& file : LessonLoader::builtInFiles()) {
         QVERIFY2(window.openLesson(file), qPrintable(file));
         QTest::qWait(30); // the bar lays out and fits its text after the lesson's first frame
@@ -355,11 +360,18 @@ void GuiStageTest::stageTextIsNeverCut()
                                     .arg(readout->font().pointSizeF())));
             QVERIFY2(readout->font().pointSizeF() >= 7.0,
                      qPrintable(QStringLiteral("%1: readout at %2 pt").arg(name).arg(readout->font().pointSizeF())));
+            auto* stageBar = qobject_cast<StageBar*>(bar);
+            Smallest& smallest = stageBar && stageBar->isVertical() ? smallestInColumn : smallestInRow;
+            if (readout->font().pointSizeF() < smallest.points)
+                smallest = {readout->font().pointSizeF(), name};
         }
     }
     qInfo("%dx%d: %lld of %lld challenges shortened (%s)", size.width(), size.height(),
           static_cast<long long>(shortened.size()), static_cast<long long>(LessonLoader::builtInFiles().size()),
           qPrintable(shortened.join(QStringLiteral(", "))));
+    qInfo("%dx%d: smallest readout %.1f pt in a row (%s), %.1f pt in a column (%s)", size.width(), size.height(),
+          smallestInRow.points, qPrintable(smallestInRow.lesson), smallestInColumn.points,
+          qPrintable(smallestInColumn.lesson));
 }
 
 // A row bar 600 px wide and 100 px tall with a challenge of 120 words: the
@@ -393,6 +405,42 @@ void GuiStageTest::tooLongAChallengeEndsInAnEllipsis()
     QTRY_COMPARE(label->text(), challenge);
     QVERIFY(label->toolTip().isEmpty());
     QVERIFY(label->font().pointSizeF() > bar.font().pointSizeF());
+}
+
+// Lesson 26 at 1280x720 puts its ten lines of readout (a ball, then the
+// totals) in a row bar about 120 px tall: in one text column they fit only at
+// 7 pt, too small for the back of a classroom. Set in two text columns they
+// are at 10 pt or more, every line is still there, and no group is split
+// ("potential" and "total" stay under "energy: kinetic").
+void GuiStageTest::rowReadoutUsesTextColumns()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    QVERIFY(presentAt(window, QSize(1280, 720)));
+    QVERIFY(window.openLesson(QStringLiteral("26-bouncing-in-1d-naively")));
+    auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
+    QVERIFY(readout);
+    QTRY_VERIFY(readout->isVisible() && readout->text().contains(QStringLiteral("momentum")));
+    QTest::qWait(50); // the bar fits its text once the grid has laid out
+    auto* bar = window.findChild<StageBar*>(QStringLiteral("stageBar"));
+    QVERIFY(bar && !bar->isVertical());
+    const QStringList shown = readout->text().split(QLatin1Char('\n'));
+    qInfo("lesson 26 at 1280x720: %lld lines in the label, at %.1f pt", static_cast<long long>(shown.size()),
+          readout->font().pointSizeF());
+    QVERIFY2(readout->font().pointSizeF() >= 10.0, qPrintable(QString::number(readout->font().pointSizeF())));
+    QVERIFY(shown.size() <= 6);
+    int energy = -1, column = -1;
+    for (qsizetype row = 0; row < shown.size(); ++row) {
+        const int at = static_cast<int>(shown[row].indexOf(QStringLiteral("energy: kinetic")));
+        if (at >= 0) {
+            energy = static_cast<int>(row);
+            column = at;
+        }
+    }
+    QVERIFY(energy >= 0 && energy + 2 < shown.size());
+    QCOMPARE(shown[energy + 1].indexOf(QStringLiteral("potential")), column + 2);
+    QCOMPARE(shown[energy + 2].indexOf(QStringLiteral("total")), column + 2);
+    for (const QString& line : {QStringLiteral("ball 0"), QStringLiteral("speed"), QStringLiteral("momentum")})
+        QVERIFY2(readout->text().contains(line), qPrintable(line));
 }
 
 QTEST_MAIN(GuiStageTest)

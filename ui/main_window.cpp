@@ -973,7 +973,11 @@ MainWindow::StageReadout MainWindow::stageReadoutText() const
         const int n = world.balls().size(), selected = m_canvas->selectedBall();
         const int i = selected >= 0 && selected < n ? selected : 0;
         const sim::Vec2 x = world.balls().position.col(i), v = world.balls().velocity.col(i);
-        auto num = [](double value) { return QString::number(value, 'f', 1); };
+        // One decimal, or four significant digits from 100,000 on (a stiff
+        // spring's −1e+06 px/s², not −1000000.0).
+        auto num = [](double value) {
+            return std::abs(value) < 1e5 ? QString::number(value, 'f', 1) : QString::number(value, 'g', 4);
+        };
         narrow << tr("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3)
                << QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y()))
                << QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y()))
@@ -984,15 +988,21 @@ MainWindow::StageReadout MainWindow::stageReadoutText() const
         const sim::Energy e = world.energy();
         const sim::Vec2 p = world.momentum();
         wide << WorldPainter::totalsText(e, p, true);
-        narrow << tr("energy: kinetic %1").arg(e.kinetic, 0, 'g', 4) << tr("  potential %1").arg(e.potential, 0, 'g', 4)
-               << tr("  total %1").arg(e.total(), 0, 'g', 4);
-        // A column is too narrow for the momentum on one line; a row's
-        // short form needs the line it saves.
-        const QString momentum = QStringLiteral("(%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
-        if (m_stageBar->isVertical())
-            narrow << tr("momentum") << QStringLiteral("  ") + momentum;
+        // A column is narrow: there "energy" and "momentum" head lines of
+        // their own and the momentum's x and y take one line each, so no
+        // line is much wider than one number's; a row's short form needs
+        // the lines this saves.
+        const bool column = m_stageBar->isVertical();
+        const QString kinetic = QString::number(e.kinetic, 'g', 4);
+        if (column)
+            narrow << tr("energy") << tr("  kinetic %1").arg(kinetic);
         else
-            narrow << tr("momentum %1").arg(momentum);
+            narrow << tr("energy: kinetic %1").arg(kinetic);
+        narrow << tr("  potential %1").arg(e.potential, 0, 'g', 4) << tr("  total %1").arg(e.total(), 0, 'g', 4);
+        if (column)
+            narrow << tr("momentum") << tr("  x %1").arg(p.x(), 0, 'g', 4) << tr("  y %1").arg(p.y(), 0, 'g', 4);
+        else
+            narrow << tr("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
     }
     return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
 }

@@ -10,6 +10,8 @@
 #include <QToolButton>
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 
 namespace forcelab {
 
@@ -78,7 +80,7 @@ void StageBar::setCaption(const QString& title, const QString& challenge)
 void StageBar::setReadout(const QString& text)
 {
     const bool wasHidden = m_readout->isHidden();
-    m_readout->setText(text);
+    m_readoutText = text; // fitReadout sets the label's text
     m_readout->setVisible(!text.isEmpty());
     if (!m_vertical && m_readout->isHidden() != wasHidden)
         setVertical(false); // in a row the caption takes the readout's room when there is none
@@ -86,6 +88,73 @@ void StageBar::setReadout(const QString& text)
 }
 
 namespace {
+
+// The most text columns a row's readout is set in.
+constexpr int kMostReadoutColumns = 3;
+
+// `lines` set in `columns` text columns side by side (monospace: each line
+// padded to its column's widest), read down the first column, then the
+// next. A column starts only at a line that starts a group (not indented,
+// so "  potential" stays under "energy: kinetic"), at the breaks that make
+// the longest column shortest; empty when there are not enough groups.
+QStringList flowLines(const QStringList& lines, int columns)
+{
+    if (columns <= 1)
+        return lines;
+    QList<int> starts; // where a column may start
+    for (qsizetype i = 1; i < lines.size(); ++i)
+        if (!lines[i].startsWith(QLatin1Char(' ')))
+            starts << static_cast<int>(i);
+    if (starts.size() < columns - 1)
+        return {};
+    // Every choice of columns − 1 breaks among the starts (a readout has a
+    // dozen lines, so there are few).
+    QList<int> best, pick;
+    int bestLongest = std::numeric_limits<int>::max();
+    const int n = static_cast<int>(lines.size());
+    std::function<void(int)> choose = [&](int from) {
+        if (pick.size() == columns - 1) {
+            int longest = 0, begin = 0;
+            for (int k = 0; k <= pick.size(); ++k) {
+                const int end = k < pick.size() ? pick[k] : n;
+                longest = std::max(longest, end - begin);
+                begin = end;
+            }
+            if (longest < bestLongest) {
+                bestLongest = longest;
+                best = pick;
+            }
+            return;
+        }
+        for (qsizetype i = from; i < starts.size(); ++i) {
+            pick << starts[i];
+            choose(static_cast<int>(i) + 1);
+            pick.removeLast();
+        }
+    };
+    choose(0);
+    QList<QStringList> parts;
+    int begin = 0;
+    for (int k = 0; k <= best.size(); ++k) {
+        const int end = k < best.size() ? best[k] : n;
+        parts << lines.mid(begin, end - begin);
+        begin = end;
+    }
+    QStringList out(bestLongest);
+    for (qsizetype k = 0; k < parts.size(); ++k) {
+        qsizetype width = 0;
+        for (const QString& line : parts[k])
+            width = std::max(width, line.size());
+        for (int row = 0; row < bestLongest; ++row) {
+            const QString cell = row < parts[k].size() ? parts[k][row] : QString();
+            out[row] += k + 1 < parts.size() ? cell.leftJustified(width + 3) : cell;
+        }
+    }
+    for (QString& line : out)
+        while (line.endsWith(QLatin1Char(' ')))
+            line.chop(1);
+    return out;
+}
 
 // The size `lines` take in `font`: the widest line, and all lines stacked.
 QSize textSize(const QFont& font, const QStringList& lines)
@@ -97,6 +166,33 @@ QSize textSize(const QFont& font, const QStringList& lines)
     return QSize(w, static_cast<int>(lines.size()) * fm.lineSpacing());
 }
 
+// The text columns (1 to `mostColumns`) and font that set `lines` at the
+// largest size that fits `room`: the readout's own font, shrunk in steps of
+// half a point to 7 pt at least (then it may not fit).
+struct ReadoutFit {
+    QFont font;
+    QStringList lines;
+};
+ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int mostColumns)
+{
+    auto fits = [&](const QFont& f, const QStringList& text) {
+        const QSize need = textSize(f, text);
+        return need.width() <= room.width() && need.height() <= room.height();
+    };
+    ReadoutFit best{own, lines};
+    for (int columns = 1; columns <= mostColumns; ++columns) {
+        const QStringList flowed = flowLines(lines, columns);
+        if (flowed.isEmpty())
+            continue;
+        QFont f = own;
+        while (f.pointSizeF() - 0.5 >= 7.0 && !fits(f, flowed))
+            f.setPointSizeF(f.pointSizeF() - 0.5);
+        if (columns == 1 || (fits(f, flowed) && f.pointSizeF() > best.font.pointSizeF()))
+            best = {f, flowed};
+    }
+    return best;
+}
+
 } // namespace
 
 bool StageBar::readoutFits(const QString& text) const
@@ -105,8 +201,16 @@ bool StageBar::readoutFits(const QString& text) const
         return true;
     QFont readable = m_readoutFont;
     readable.setPointSizeF(m_readoutFont.pointSizeF() * 0.75);
-    const QSize need = textSize(readable, text.split(QLatin1Char('\n')));
-    return need.width() <= m_readoutRoom.width() && need.height() <= m_readoutRoom.height();
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    for (int columns = 1; columns <= (m_vertical ? 1 : kMostReadoutColumns); ++columns) {
+        const QStringList flowed = flowLines(lines, columns);
+        if (flowed.isEmpty())
+            continue;
+        const QSize need = textSize(readable, flowed);
+        if (need.width() <= m_readoutRoom.width() && need.height() <= m_readoutRoom.height())
+            return true;
+    }
+    return false;
 }
 
 void StageBar::fitReadout()
@@ -114,9 +218,10 @@ void StageBar::fitReadout()
     // The readout's lines are never cut: its font shrinks (to 7 pt at
     // least) until they fit the column's width, or in a row the cell its
     // grid gave it (the label asks for no width, so a long readout never
-    // makes the window wider than the screen), and in a row its height.
-    QFont font = m_readoutFont;
-    const QStringList lines = m_readout->text().split(QLatin1Char('\n'));
+    // makes the window wider than the screen), and in a row its height. A
+    // row is short and wide, so there the lines may also be set in two or
+    // three text columns, whichever gives the largest font.
+    const QStringList lines = m_readoutText.split(QLatin1Char('\n'));
     if (!m_vertical && !m_readout->isHidden())
         sizeReadoutColumn(lines);
     const QMargins margins = m_grid->contentsMargins();
@@ -124,25 +229,28 @@ void StageBar::fitReadout()
     const QSize room = m_vertical ? QSize(labelWidth > 0 ? labelWidth : width() - margins.left() - margins.right(),
                                           QWIDGETSIZE_MAX)
                                   : m_readout->contentsRect().size();
+    QFont font = m_readoutFont;
+    QStringList shown = lines;
     if (room.width() > 0 && room.height() > 0 && !m_readout->isHidden()) {
-        auto fits = [&](const QFont& f) {
-            const QSize need = textSize(f, lines);
-            return need.width() <= room.width() && need.height() <= room.height();
-        };
-        while (font.pointSizeF() - 0.5 >= 7.0 && !fits(font))
-            font.setPointSizeF(font.pointSizeF() - 0.5);
+        const ReadoutFit fit = bestFit(m_readoutFont, lines, room, m_vertical ? 1 : kMostReadoutColumns);
+        font = fit.font;
+        shown = fit.lines;
         if (room != m_readoutRoom) {
             m_readoutRoom = room;
             emit readoutRoomChanged();
         }
     }
+    const QString text = shown.join(QLatin1Char('\n'));
+    if (text != m_readout->text())
+        m_readout->setText(text);
     if (font != m_readout->font())
         m_readout->setFont(font);
 }
 
-// In a row the readout's column is as wide as its lines at the readout's
-// own size, but no narrower than 30% and no wider than 60% of the width the
-// buttons leave; the caption has the rest. (A change of less than 12 px is
+// In a row the readout's column is as wide as its lines need at the size
+// (and in the text columns) that suit them best in a column 60% of the
+// width the buttons leave and the row's height, but no narrower than 30%
+// of that width; the caption has the rest. (A change of less than 12 px is
 // left alone, so the caption does not reflow as the numbers tick.)
 void StageBar::sizeReadoutColumn(const QStringList& lines)
 {
@@ -155,7 +263,10 @@ void StageBar::sizeReadoutColumn(const QStringList& lines)
                      spacing * static_cast<int>(m_buttons.size() + 1);
     if (free <= 0)
         return;
-    const int want = std::clamp(textSize(m_readoutFont, lines).width(), free * 3 / 10, free * 6 / 10);
+    const int tall = m_readout->contentsRect().height() > 0 ? m_readout->contentsRect().height()
+                                                             : height() - margins.top() - margins.bottom();
+    const ReadoutFit fit = bestFit(m_readoutFont, lines, QSize(free * 6 / 10, tall), kMostReadoutColumns);
+    const int want = std::clamp(textSize(fit.font, fit.lines).width() + 1, free * 3 / 10, free * 6 / 10);
     if (std::abs(want - m_readoutColumn) <= 12)
         return;
     m_readoutColumn = want;

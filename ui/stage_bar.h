@@ -59,6 +59,7 @@ private:
     QLabel* m_challenge = nullptr;
     QLabel* m_readout = nullptr;
     QWidget* m_sliders = nullptr;
+    QString m_readoutText;   // the readout's lines (the label may show them in text columns)
     QFont m_readoutFont;     // the readout's own size, before fitting
     QSize m_readoutRoom;     // the readout's room when it was last fitted
     int m_readoutColumn = 0; // px, a row's readout column (0: not set)
