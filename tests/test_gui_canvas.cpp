@@ -100,6 +100,7 @@ private slots:
     void trailRingIsBoundedAndOrdered();
     void trailFollowsThePastPath();
     void vanePointsWhereTheWindBlows();
+    void vanesLeaveASmallBoxFree();
     void lineOfImpactPassesThroughBothCentres();
     void totalsShowTheWorldsEnergyAndMomentum();
     void broadPhaseShowsCellsAndIntervals();
@@ -250,6 +251,50 @@ void GuiCanvasTest::vanePointsWhereTheWindBlows()
     if (std::abs(share) > 0.3) // its arrow points its own way
         QVERIFY(nearestColorDistance(image, second + QPointF(0.25 * r * (share > 0 ? 1 : -1), 0),
                                      canvas_colors::kVane, 0) <= 30);
+}
+
+// In the normal layout at 1024x768 the box is small and the vanes covered a
+// third of its height; where the canvas has room over the box they sit
+// there, and draw nothing inside the box. Where it has none (the stage
+// view) they stay in the box's corner.
+void GuiCanvasTest::vanesLeaveASmallBoxFree()
+{
+    SimulationController controller;
+    sim::Scene scene = box({ball({300, 500}, {0, 0}, 10)});
+    scene.settings.wind.mode = sim::WindMode::Random;
+    scene.settings.wind.strength = 200.0;
+    scene.settings.wind.compare = sim::WindMode::Smoothed;
+    QVERIFY(!controller.setScene(scene));
+    controller.stepOnce();
+    Canvas canvas(&controller);
+    canvas.setOverlays(only([](Overlays& o) { o.vanes = true; }));
+    const double r = WorldPainter::vaneRadius(1.0);
+
+    canvas.resize(600, 700); // a tall canvas: room over the box
+    QImage image = canvas.grab().toImage();
+    QRectF boxRect = canvas.viewTransform().boxRect();
+    for (int i = 0; i < 2; ++i) {
+        const QPointF c = WorldPainter::vaneCentre(canvas.viewTransform(), i, 1.0);
+        QVERIFY2(c.y() + r + 14.0 < boxRect.top(), qPrintable(QStringLiteral("%1 %2").arg(c.y()).arg(boxRect.top())));
+        QVERIFY(c.y() - r >= 0.0);
+        QVERIFY(nearestColorDistance(image, c, canvas_colors::kVane, 0) <= 30); // its hub
+    }
+    // Nothing of the vanes in the box: its top-left corner is as without them.
+    canvas.setOverlays(only([](Overlays&) {}));
+    const QImage bare = canvas.grab().toImage();
+    const QRect corner = boxRect.toAlignedRect().adjusted(2, 2, 0, 0);
+    int differing = 0;
+    for (int y = corner.top(); y < corner.top() + 100; ++y)
+        for (int x = corner.left(); x < corner.left() + 300; ++x)
+            differing += image.pixel(x, y) != bare.pixel(x, y) ? 1 : 0;
+    QCOMPARE(differing, 0);
+
+    canvas.setOverlays(only([](Overlays& o) { o.vanes = true; }));
+    canvas.resize(900, 500); // no room over the box: in its corner
+    boxRect = canvas.viewTransform().boxRect();
+    const QPointF inside = WorldPainter::vaneCentre(canvas.viewTransform(), 0, 1.0);
+    QVERIFY(boxRect.contains(inside - QPointF(r, r)));
+    QVERIFY(nearestColorDistance(canvas.grab().toImage(), inside, canvas_colors::kVane, 0) <= 30);
 }
 
 void GuiCanvasTest::lineOfImpactPassesThroughBothCentres()

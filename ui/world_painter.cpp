@@ -1186,7 +1186,14 @@ QPointF WorldPainter::vaneCentre(const ViewTransform& view, int index, double li
     // Far enough apart that the labels, which start at a vane's left edge,
     // do not run into the next vane's ("smoothed  -267 px/s²" is about
     // 135 px at 12 px).
-    return box.topLeft() + QPointF(r + 14.0 * lineScale + index * (2.0 * r + 100.0 * lineScale), r + 14.0 * lineScale);
+    const double x = box.left() + r + 14.0 * lineScale + index * (2.0 * r + 100.0 * lineScale);
+    // Above the box when the space over it (the widget starts at y = 0)
+    // holds a vane and its label, as in a small box in the normal layout,
+    // so the vanes cover no ball; otherwise inside its top-left corner.
+    const double label = 18.0 * lineScale, gap = 6.0 * lineScale;
+    if (box.top() >= 2.0 * r + label + 2.0 * gap)
+        return {x, box.top() - gap - label - r};
+    return {x, box.top() + r + 14.0 * lineScale};
 }
 
 void WorldPainter::paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world,
