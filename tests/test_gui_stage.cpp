@@ -49,6 +49,7 @@ private slots:
     void stageTextIsNeverCut();
     void tooLongAChallengeEndsInAnEllipsis();
     void rowReadoutUsesTextColumns();
+    void slidersButtonShowsARowBarsSliders();
 };
 
 namespace {
@@ -112,7 +113,13 @@ void GuiStageTest::stageFillsTheScreen()
     QVERIFY2(readout->text().contains(QStringLiteral("ball 0")), qPrintable(readout->text()));
     QVERIFY(!window.canvas()->overlays().readout);
     QCOMPARE(title->text(), window.lesson().title);
-    const auto buttons = window.findChild<QWidget*>(QStringLiteral("stageBar"))->findChildren<QToolButton*>();
+    // Play, Step, Reset, Slower, Faster (and Sliders, when the lesson's
+    // sliders do not fit the bar).
+    auto* slidersAction = window.findChild<QAction*>(QStringLiteral("stageSlidersAction"));
+    QList<QToolButton*> buttons;
+    for (QToolButton* b : window.findChild<QWidget*>(QStringLiteral("stageBar"))->findChildren<QToolButton*>())
+        if (b->defaultAction() != slidersAction)
+            buttons << b;
     QCOMPARE(buttons.size(), 5);
     for (QToolButton* b : buttons)
         QVERIFY(b->isVisible() && b->height() >= 56);
@@ -343,6 +350,10 @@ void GuiStageTest::stageTextIsNeverCut()
                                                                 .arg(right)
                                                                 .arg(viewport->width())));
         }
+        if (qEnvironmentVariableIsSet("DBGS")) {
+            auto* sliders = window.findChild<StageSliders*>();
+            qInfo("SLIDERS %s count %d shown %d", qPrintable(name), sliders ? sliders->count() : -1, int(sliderArea->isVisible()));
+        }
         if (readout->isVisible()) {
             const QFontMetrics fm(readout->font());
             const QStringList lines = readout->text().split(QLatin1Char('\n'));
@@ -441,6 +452,64 @@ void GuiStageTest::rowReadoutUsesTextColumns()
     QCOMPARE(shown[energy + 2].indexOf(QStringLiteral("total")), column + 2);
     for (const QString& line : {QStringLiteral("ball 0"), QStringLiteral("speed"), QStringLiteral("momentum")})
         QVERIFY2(readout->text().contains(line), qPrintable(line));
+}
+
+// On a 4:3 projector the bar under the box has no room for a lesson's
+// sliders (37 of the 39 lessons with sliders had none in the stage view at
+// 1024x768). The Sliders button shows them: the bar grows, every slider is
+// in view without scrolling and edits the world, and the box keeps over 60%
+// of its size; pressed again, the box gets its room back. Where the
+// sliders fit (a column on a 16:9 screen) there is no such button.
+void GuiStageTest::slidersButtonShowsARowBarsSliders()
+{
+    MainWindow window(QStringLiteral("losing-energy"));
+    QVERIFY(presentAt(window, QSize(1024, 768)));
+    auto* action = window.findChild<QAction*>(QStringLiteral("stageSlidersAction"));
+    auto* area = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
+    auto* sliders = window.findChild<StageSliders*>(QStringLiteral("stageSliders"));
+    QVERIFY(action && area && sliders);
+    QCOMPARE(sliders->count(), 4);
+    QToolButton* button = nullptr;
+    for (QToolButton* b : window.findChildren<QToolButton*>())
+        if (b->defaultAction() == action)
+            button = b;
+    QVERIFY(button);
+    QTRY_VERIFY(button->isVisible());
+    QVERIFY(!area->isVisible());
+    QTest::qWait(50); // the stage's layout settles
+    const double windowArea = 1024.0 * 768.0;
+    auto boxShare = [&] {
+        const QRectF box = window.canvas()->viewTransform().boxRect();
+        return box.width() * box.height() / windowArea;
+    };
+    const double hiddenShare = boxShare();
+
+    QTest::mouseClick(button, Qt::LeftButton);
+    QTRY_VERIFY(area->isVisible());
+    QTest::qWait(50);
+    QVERIFY(action->isChecked());
+    QVERIFY2(area->widget()->height() <= area->viewport()->height(),
+             qPrintable(QStringLiteral("%1 of %2").arg(area->widget()->height()).arg(area->viewport()->height())));
+    const double shownShare = boxShare();
+    qInfo("the box takes %.1f%% of 1024x768 with the sliders hidden, %.1f%% with them shown", 100 * hiddenShare,
+          100 * shownShare);
+    QVERIFY(shownShare < hiddenShare);
+    QVERIFY2(shownShare >= 0.6 * hiddenShare, qPrintable(QString::number(shownShare)));
+    if (qEnvironmentVariableIsSet("SHOTS"))
+        window.grab().save(QStringLiteral("/tmp/sliders_shown.png"));
+    NumberControl* e = sliders->slider(QStringLiteral("wall_restitution"));
+    QVERIFY(e && e->isVisibleTo(&window));
+    e->slider()->setValue(e->positionFor(0.5));
+    QVERIFY(std::abs(window.controller()->world().settings().walls.restitution - 0.5) < 1e-9);
+
+    QTest::mouseClick(button, Qt::LeftButton);
+    QTRY_VERIFY(!area->isVisible());
+    QTRY_VERIFY(std::abs(boxShare() - hiddenShare) < 1e-9);
+
+    // A 16:9 screen: the bar is a column beside the box, with the sliders.
+    window.setGeometry(QRect(QPoint(0, 0), QSize(1280, 720)));
+    QTRY_VERIFY(area->isVisible());
+    QVERIFY(!button->isVisible());
 }
 
 QTEST_MAIN(GuiStageTest)

@@ -106,7 +106,8 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 
     createActions();
     m_overlayActions = new OverlayActions(m_canvas, this);
-    m_stageBar = new StageBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction}, central);
+    m_stageBar = new StageBar(
+        {m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction, m_stageSlidersAction}, central);
     m_stageLayout->addWidget(m_stageBar);
     m_stageBar->hide();
     connect(m_controller, &SimulationController::stepped, this, &MainWindow::updateStageReadout);
@@ -162,6 +163,17 @@ void MainWindow::createActions()
     m_fasterAction->setShortcut(Qt::Key_BracketRight);
     m_fasterAction->setStatusTip(tr("Double the speed, up to %1× (])").arg(SimulationController::kMaxTimeScale));
     connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
+
+    // The stage view's row bar under the box has room for the lesson's
+    // sliders only on a wide screen; on a 4:3 projector this button makes
+    // the bar taller to show them (the box shrinks while they are shown).
+    m_stageSlidersAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Sliders"), this);
+    m_stageSlidersAction->setObjectName(QStringLiteral("stageSlidersAction"));
+    m_stageSlidersAction->setCheckable(true);
+    m_stageSlidersAction->setShortcut(Qt::Key_S);
+    m_stageSlidersAction->setStatusTip(tr("Show the lesson's sliders under the box in the stage view (S)"));
+    m_stageSlidersAction->setVisible(false);
+    connect(m_stageSlidersAction, &QAction::toggled, this, &MainWindow::layoutStage);
 
     m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
     m_openAction->setObjectName(QStringLiteral("openAction"));
@@ -1045,12 +1057,21 @@ void MainWindow::layoutStage()
                                         : std::clamp(area.width() / 240, 1, std::max(1, m_stageSliders->count())));
     int minimum = 200;
     if (!vertical) {
+        // Sliders that do not fit under the cap wait for the Sliders button,
+        // which lets the bar take up to 2/5 of the screen to show them.
         const int cap = std::max(96, area.height() / 7);
-        m_stageBar->setSlidersShown(m_stageSliders->count() > 0);
-        if (m_stageBar->sizeHint().height() > cap)
-            m_stageBar->setSlidersShown(false);
+        const bool sliders = m_stageSliders->count() > 0;
+        m_stageBar->unfitChallenge(); // its size hint at its own font, whatever room it had before
+        m_stageBar->setSlidersShown(sliders);
+        const bool fit = m_stageBar->sizeHint().height() <= cap;
+        m_stageSlidersAction->setVisible(sliders && !fit);
+        const bool asked = sliders && !fit && m_stageSlidersAction->isChecked();
+        m_stageBar->setSlidersShown(sliders && (fit || asked));
         minimum = std::clamp(m_stageBar->sizeHint().height(), 96, cap);
+        if (asked) // the bar as without them, plus the rows of sliders
+            minimum = std::min(cap + m_stageSliders->sizeHint().height() + 8, area.height() * 2 / 5);
     } else {
+        m_stageSlidersAction->setVisible(false);
         m_stageBar->setSlidersShown(m_stageSliders->count() > 0);
     }
     const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));

@@ -161,6 +161,7 @@ private:
     QAction* m_resetAction = nullptr;
     QAction* m_slowerAction = nullptr;
     QAction* m_fasterAction = nullptr;
+    QAction* m_stageSlidersAction = nullptr; // shows a row bar's sliders when they do not fit
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_openAction = nullptr;

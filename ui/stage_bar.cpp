@@ -56,8 +56,12 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
         b->setIconSize(QSize(32, 32));
         b->setFont(text);
-        b->setMinimumSize(80, 60);
+        b->setMinimumSize(80, 60); // 72 px wide in a row (setVertical)
         b->setFocusPolicy(Qt::NoFocus); // the keyboard stays with the stage: Space, →, R
+        // A button shows only while its action is visible (a tool button
+        // outside a tool bar does not follow it by itself).
+        b->setVisible(action->isVisible());
+        connect(action, &QAction::changed, b, [b, action] { b->setVisible(action->isVisible()); });
         m_buttons << b;
     }
     m_grid = new QGridLayout(this);
@@ -255,18 +259,40 @@ void StageBar::fitReadout()
 void StageBar::sizeReadoutColumn(const QStringList& lines)
 {
     int buttons = 0;
+    int shownButtons = 0;
     for (const QToolButton* b : m_buttons)
-        buttons += std::max(b->minimumWidth(), b->sizeHint().width());
+        if (!b->isHidden()) {
+            buttons += std::max(b->minimumWidth(), b->sizeHint().width());
+            ++shownButtons;
+        }
     const QMargins margins = m_grid->contentsMargins();
     const int spacing = m_grid->horizontalSpacing();
-    const int free = width() - margins.left() - margins.right() - buttons -
-                     spacing * static_cast<int>(m_buttons.size() + 1);
+    const int free = width() - margins.left() - margins.right() - buttons - spacing * (shownButtons + 1);
     if (free <= 0)
         return;
     const int tall = m_readout->contentsRect().height() > 0 ? m_readout->contentsRect().height()
                                                              : height() - margins.top() - margins.bottom();
     const ReadoutFit fit = bestFit(m_readoutFont, lines, QSize(free * 6 / 10, tall), kMostReadoutColumns);
-    const int want = std::clamp(textSize(fit.font, fit.lines).width() + 1, free * 3 / 10, free * 6 / 10);
+    int want = std::clamp(textSize(fit.font, fit.lines).width() + 1, free * 3 / 10, free * 6 / 10);
+    // The challenge comes first: while it would not fit beside the readout
+    // at the bar's own text size, the readout gives back width, down to
+    // what its lines need at 8 pt.
+    if (!m_challengeText.isEmpty()) {
+        QFont small = m_readoutFont;
+        small.setPointSizeF(std::min(8.0, m_readoutFont.pointSizeF()));
+        const ReadoutFit tight = bestFit(small, lines, QSize(free * 6 / 10, tall), kMostReadoutColumns);
+        const int least = textSize(tight.font, tight.lines).width() + 1;
+        QFont plain = m_challengeFont;
+        plain.setPointSizeF(font().pointSizeF());
+        const QFontMetrics fm(plain);
+        auto challengeFits = [&](int readout) {
+            const int caption = free - readout;
+            const int room = tall - m_title->heightForWidth(caption) - m_grid->verticalSpacing();
+            return fm.boundingRect(QRect(0, 0, caption, 1 << 20), Qt::TextWordWrap, m_challengeText).height() <= room;
+        };
+        while (want - 8 >= least && !challengeFits(want))
+            want -= 8;
+    }
     if (std::abs(want - m_readoutColumn) <= 12)
         return;
     m_readoutColumn = want;
@@ -354,10 +380,23 @@ void StageBar::setSliders(QWidget* sliders)
     setVertical(m_vertical);
 }
 
+void StageBar::unfitChallenge()
+{
+    m_challenge->setFont(m_challengeFont);
+    m_challenge->setText(m_challengeText);
+    QTimer::singleShot(0, this, &StageBar::fitChallenge);
+}
+
 void StageBar::setSlidersShown(bool shown)
 {
-    if (m_sliders)
+    if (m_sliders) {
         m_sliders->setVisible(shown);
+        // In a row the sliders take the height of their rows and no more:
+        // the caption above them has the rest.
+        const auto* scroll = qobject_cast<const QScrollArea*>(m_sliders);
+        const int rows = scroll && scroll->widget() ? scroll->widget()->sizeHint().height() : QWIDGETSIZE_MAX;
+        m_sliders->setMaximumHeight(m_vertical ? QWIDGETSIZE_MAX : rows);
+    }
     if (m_vertical)
         stretchColumnRows();
 }
@@ -385,6 +424,10 @@ void StageBar::setVertical(bool vertical)
         m_grid->setColumnMinimumWidth(k, 0);
     }
     m_readoutColumn = 0;
+    // A row has six buttons across when the lesson's sliders wait for the
+    // Sliders button: a little narrower there, so the caption keeps room.
+    for (QToolButton* b : m_buttons)
+        b->setMinimumWidth(vertical ? 80 : 72);
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);

@@ -40,6 +40,9 @@ public:
     void setSliders(QWidget* sliders);
     /// Shows or hides the sliders' area (a row bar without room for them).
     void setSlidersShown(bool shown);
+    /// The challenge at its own size again, so that sizeHint() does not
+    /// depend on how the last room fitted it; it is fitted again at once.
+    void unfitChallenge();
 
 signals:
     /// The readout's room changed size: its text may want the other form.
