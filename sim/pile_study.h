@@ -1,8 +1,9 @@
 #pragma once
 // The peer scene's pile followed in time: N equal balls (r = 5 px) fall into a
 // square box and settle, and every `every` seconds the pile's measures are
-// taken (peer_scene.h) together with the fastest ball and how many balls move
-// faster than 5 px/s. The solver's settings and the sub-steps can be changed,
+// taken (peer_scene.h) together with the fastest ball, how many balls move
+// faster than 5 px/s, the wall-clock time per step and how many steps had a
+// bounce since the row before. The solver's settings and the sub-steps can be changed,
 // so the trade between overlap and jitter can be measured one knob at a time
 // (`forcelab-cli pile`, docs/performance.md).
 

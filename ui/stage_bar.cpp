@@ -183,7 +183,10 @@ ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int m
         const QSize need = textSize(f, text);
         return need.width() <= room.width() && need.height() <= room.height();
     };
+    // A setting that fits beats one that does not; then the larger font
+    // wins, and of equal ones the fewer columns.
     ReadoutFit best{own, lines};
+    bool bestFits = false;
     for (int columns = 1; columns <= mostColumns; ++columns) {
         const QStringList flowed = flowLines(lines, columns);
         if (flowed.isEmpty())
@@ -191,8 +194,11 @@ ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int m
         QFont f = own;
         while (f.pointSizeF() - 0.5 >= 7.0 && !fits(f, flowed))
             f.setPointSizeF(f.pointSizeF() - 0.5);
-        if (columns == 1 || (fits(f, flowed) && f.pointSizeF() > best.font.pointSizeF()))
+        const bool ok = fits(f, flowed);
+        if (columns == 1 || (ok && (!bestFits || f.pointSizeF() > best.font.pointSizeF()))) {
             best = {f, flowed};
+            bestFits = ok;
+        }
     }
     return best;
 }

@@ -72,9 +72,9 @@
 //    every row follow, and a bounce adds velocityPasses − bouncePasses more
 //    over the rows within `bounceLayers` balls of it. Gravity in short
 //    stages is what the pile needs: the overlap one of 6 stages makes is
-//    1/36 of a whole step's. A body no contact pushed keeps the integrator's result, so a
-//    lone ball (a restitution-1 ball bouncing for ever) moves exactly as
-//    without the solver.
+//    1/36 of a whole step's. A body no contact pushed keeps the
+//    integrator's result, so a lone ball (a restitution-1 ball bouncing for
+//    ever) moves exactly as without the solver.
 
 namespace forcelab::sim {
 
@@ -91,7 +91,7 @@ struct ContactSolverSettings {
     int stagePasses = 4;          ///< 1, velocity passes per stage that also push overlaps apart
     int relaxPasses = 1;          ///< 1, velocity passes per stage after the move, without the push
     int bouncePasses = 4;         ///< 1, passes after the last stage over every row (velocityPasses when a pair bounces)
-    int bounceLayers = 12;        ///< 1, the passes a bounce adds go to the rows this many balls from it (0: every row)
+    int bounceLayers = 12;        ///< 1, staged solve: the passes a bounce adds go to the rows this many balls from it (0: every row)
     double contactStiffness = 0.5; ///< 1, a soft contact's spring frequency as a share of the stage rate 1/hs
     double dampingRatio = 1.0;    ///< 1, the soft contact's damping as a share of critical damping
     double pushSpeed = 300.0;     ///< px/s, fastest speed at which an overlap is pushed apart

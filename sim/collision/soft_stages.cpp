@@ -195,8 +195,8 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
 // off a wall), and the rows that touch a body of a layer below `layers`,
 // in row order. One sweep over the rows per layer, on one thread, so the
 // region is the same whatever the thread count. False (and the region
-// unused) when it would hold half the rows or more: then every row gets
-// every pass, as without a region.
+// unused) when it would hold half the bodies or half the rows or more: then
+// every row gets every pass, as without a region.
 bool RestingSolver::markBounceRegion(int layers)
 {
     layers = std::min(layers, static_cast<int>(kFarFromBounce) - 1);
