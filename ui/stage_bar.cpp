@@ -45,6 +45,7 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     mono.setPointSizeF(text.pointSizeF());
     m_readout->setFont(mono);
     m_readoutFont = mono;
+    m_fitFont = mono;
     m_readout->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     // Each label fits its text again whenever the grid gives it a new size.
     m_readout->installEventFilter(this);
@@ -176,6 +177,7 @@ QSize textSize(const QFont& font, const QStringList& lines)
 struct ReadoutFit {
     QFont font;
     QStringList lines;
+    int columns = 1;
 };
 ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int mostColumns)
 {
@@ -196,11 +198,22 @@ ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int m
             f.setPointSizeF(f.pointSizeF() - 0.5);
         const bool ok = fits(f, flowed);
         if (columns == 1 || (ok && (!bestFits || f.pointSizeF() > best.font.pointSizeF()))) {
-            best = {f, flowed};
+            best = {f, flowed, columns};
             bestFits = ok;
         }
     }
     return best;
+}
+
+// The readout's text with every digit as 0: in the readout's fixed-width
+// font two texts of the same shape take the same room, whatever the
+// numbers.
+QString shapeOf(QString text)
+{
+    for (QChar& c : text)
+        if (c.isDigit())
+            c = QLatin1Char('0');
+    return text;
 }
 
 } // namespace
@@ -231,26 +244,41 @@ void StageBar::fitReadout()
     // makes the window wider than the screen), and in a row its height. A
     // row is short and wide, so there the lines may also be set in two or
     // three text columns, whichever gives the largest font.
+    //
+    // The readout changes every frame but its shape seldom does, so the
+    // search for the size and the columns runs only when the shape, the
+    // room, the bar or what shares the row with the readout changed; in
+    // between, the new numbers go into the columns and size found last.
     const QStringList lines = m_readoutText.split(QLatin1Char('\n'));
-    if (!m_vertical && !m_readout->isHidden())
-        sizeReadoutColumn(lines);
     const QMargins margins = m_grid->contentsMargins();
     const int labelWidth = m_readout->contentsRect().width();
     const QSize room = m_vertical ? QSize(labelWidth > 0 ? labelWidth : width() - margins.left() - margins.right(),
                                           QWIDGETSIZE_MAX)
                                   : m_readout->contentsRect().size();
-    QFont font = m_readoutFont;
-    QStringList shown = lines;
-    if (room.width() > 0 && room.height() > 0 && !m_readout->isHidden()) {
-        const ReadoutFit fit = bestFit(m_readoutFont, lines, room, m_vertical ? 1 : kMostReadoutColumns);
-        font = fit.font;
-        shown = fit.lines;
-        if (room != m_readoutRoom) {
-            m_readoutRoom = room;
-            emit readoutRoomChanged();
+    int shownButtons = 0;
+    for (const QToolButton* b : m_buttons)
+        shownButtons += b->isHidden() ? 0 : 1;
+    const FitKey key{shapeOf(m_readoutText), room, size(), m_challengeText, m_vertical, m_readout->isHidden(),
+                     shownButtons};
+    if (!(key == m_fitKey)) {
+        m_fitKey = key;
+        if (!m_vertical && !m_readout->isHidden())
+            sizeReadoutColumn(lines);
+        m_fitFont = m_readoutFont;
+        m_fitColumns = 1;
+        if (room.width() > 0 && room.height() > 0 && !m_readout->isHidden()) {
+            const ReadoutFit fit = bestFit(m_readoutFont, lines, room, m_vertical ? 1 : kMostReadoutColumns);
+            m_fitFont = fit.font;
+            m_fitColumns = fit.columns;
+            if (room != m_readoutRoom) {
+                m_readoutRoom = room;
+                emit readoutRoomChanged();
+            }
         }
     }
-    const QString text = shown.join(QLatin1Char('\n'));
+    const QFont& font = m_fitFont;
+    const QStringList flowed = flowLines(lines, m_fitColumns);
+    const QString text = (flowed.isEmpty() ? lines : flowed).join(QLatin1Char('\n'));
     if (text != m_readout->text())
         m_readout->setText(text);
     if (font != m_readout->font())

@@ -65,6 +65,18 @@ private:
     QString m_readoutText;   // the readout's lines (the label may show them in text columns)
     QFont m_readoutFont;     // the readout's own size, before fitting
     QSize m_readoutRoom;     // the readout's room when it was last fitted
+    // What the last fit of the readout depended on, and what it found.
+    struct FitKey {
+        QString shape; // the readout with every digit as 0
+        QSize room, bar;
+        QString challenge;
+        bool vertical = true, hidden = true;
+        int buttons = 0; // shown
+        bool operator==(const FitKey&) const = default;
+    };
+    FitKey m_fitKey;
+    QFont m_fitFont;
+    int m_fitColumns = 1;
     int m_readoutColumn = 0; // px, a row's readout column (0: not set)
     QFont m_challengeFont;   // the challenge's own size, before fitting
     QString m_challengeText; // the whole challenge (the label may show it shortened)
