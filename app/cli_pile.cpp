@@ -56,6 +56,12 @@ const std::vector<PileOption>& pileOptions()
          [](sim::PileStudyOptions& o, double v) { o.solver.relaxPasses = static_cast<int>(v); }},
         {"bounce-layers", "The passes a bounce adds go to the rows this many balls from it (default 12; 0: every row).",
          0, 254, true, [](sim::PileStudyOptions& o, double v) { o.solver.bounceLayers = static_cast<int>(v); }},
+        {"sleep-time", "Seconds a held ball stays still before it sleeps (default 0.5; 0: no sleeping).", 0, 1000,
+         false, [](sim::PileStudyOptions& o, double v) { o.solver.sleepTime = v; }},
+        {"wake-share", "A pair approaching faster than this share of v_rest wakes the sleepers near it (default 0.5).",
+         0, 1000, false, [](sim::PileStudyOptions& o, double v) { o.solver.wakeShare = v; }},
+        {"still-share", "A ball slower than this share of v_rest is still (default 0.1).", 0, 1000, false,
+         [](sim::PileStudyOptions& o, double v) { o.solver.stillShare = v; }},
         {"stiffness", "A soft contact's spring frequency as a share of the stage rate (default 0.5).", 0.001, 1000,
          false, [](sim::PileStudyOptions& o, double v) { o.solver.contactStiffness = v; }},
         {"damping-ratio", "A soft contact's damping as a share of critical damping (default 1).", 0, 1000, false,
@@ -94,16 +100,21 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
     const sim::ContactSolverSettings& solver = study.solver;
     out << "Peer scene pile: " << study.balls << " balls (r = 5 px), e = " << study.restitution << ", "
         << study.substeps << " sub-step(s) of 1/60 s, ";
-    if (solver.stages > 1)
+    if (solver.stages > 1) {
         out << solver.stages << " stages of " << solver.stagePasses << " + " << solver.relaxPasses
             << " passes, stiffness " << solver.contactStiffness << ", damping ratio " << solver.dampingRatio
             << ", a bounce's extra passes "
             << (solver.bounceLayers > 0 ? "within " + std::to_string(solver.bounceLayers) + " balls of it"
                                         : std::string("on every row"))
-            << "\n";
-    else
+            << ", ";
+        if (solver.sleepTime > 0.0)
+            out << "balls still for " << solver.sleepTime << " s sleep\n";
+        else
+            out << "no sleeping\n";
+    } else {
         out << "one stage: " << solver.velocityPasses << " velocity passes, " << solver.positionPasses
             << " position passes, correction " << solver.correction << ", slop " << solver.slop << " r\n";
+    }
     sim::runPileStudy(study, &out);
     return 0;
 }

@@ -188,7 +188,8 @@ const ForceModelInfo kModels[] = {
          addUniformGravity(c.settings.gravity, a);
      },
      .potential = &gravityPotential,
-     .switchOff = [](WorldSettings& s) { s.gravity.enabled = false; }},
+     .switchOff = [](WorldSettings& s) { s.gravity.enabled = false; },
+     .steadyAtRest = true},
     {.name = "drag",
      .on = [](const WorldSettings& s) { return s.drag.enabled; },
      .add = [](const ForceContext& c, const Matrix2X&, const Matrix2X& v, double, Matrix2X& a) {
@@ -201,7 +202,8 @@ const ForceModelInfo kModels[] = {
      .stiffness = [](const WorldSettings& s, double dragFactor, double&, double& damping) {
          if (s.drag.law == DragLaw::Linear)
              damping += s.drag.k * dragFactor; // the ball that drag slows fastest
-     }},
+     },
+     .steadyAtRest = true}, // nothing on a ball at rest
     {.name = "wind",
      .on = [](const WorldSettings& s) { return s.wind.mode != WindMode::Off; },
      .add = [](const ForceContext& c, const Matrix2X&, const Matrix2X&, double t, Matrix2X& a) {
@@ -231,7 +233,8 @@ const ForceModelInfo kModels[] = {
      .potential = &pointPotential,
      .conservativePart = [](WorldSettings& s) { s.point.maxAccel = 0.0; },
      .switchOff = [](WorldSettings& s) { s.point.enabled = false; },
-     .notConstant = [](const WorldSettings&) -> const char* { return "the point force depends on position"; }},
+     .notConstant = [](const WorldSettings&) -> const char* { return "the point force depends on position"; },
+     .steadyAtRest = true},
     {.name = "pointer",
      .on = [](const WorldSettings& s) { return s.pointer.enabled; },
      .add = [](const ForceContext& c, const Matrix2X& x, const Matrix2X&, double, Matrix2X& a) {
@@ -251,7 +254,8 @@ const ForceModelInfo kModels[] = {
      .potential = &springPotential,
      .switchOff = [](WorldSettings& s) { s.spring.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "the spring force depends on position"; },
-     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.spring.k; }},
+     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.spring.k; },
+     .steadyAtRest = true},
     {.name = "homing",
      .on = [](const WorldSettings& s) { return s.homing.enabled; },
      .add = [](const ForceContext& c, const Matrix2X& x, const Matrix2X&, double, Matrix2X& a) {
@@ -260,7 +264,8 @@ const ForceModelInfo kModels[] = {
      .potential = &homingPotential,
      .switchOff = [](WorldSettings& s) { s.homing.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "homing depends on position"; },
-     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.homing.strength; }},
+     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.homing.strength; },
+     .steadyAtRest = true},
     {.name = "between balls",
      .on = [](const WorldSettings& s) { return s.mutualGravity.enabled; },
      .add = [](const ForceContext& c, const Matrix2X& x, const Matrix2X&, double, Matrix2X& a) {
@@ -278,7 +283,8 @@ const ForceModelInfo kModels[] = {
      },
      .switchOff = [](WorldSettings& s) { s.magnetic.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "the magnetic force depends on velocity"; },
-     .velocityDependent = true},
+     .velocityDependent = true,
+     .steadyAtRest = true}, // nothing on a ball at rest
     // The student's own law. With a potential it is counted as potential
     // energy; without one its work is booked like the drag's.
     {.name = "custom force",

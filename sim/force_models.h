@@ -52,6 +52,10 @@ struct ForceModelInfo {
     /// Adds its part to the stability test motion x'' = −ω² x − c x': ω² in
     /// 1/s², c in 1/s (`dragFactor`: the largest per-ball drag factor).
     void (*stiffness)(const WorldSettings&, double dragFactor, double& omega2, double& damping) = nullptr;
+    /// On a ball at rest it depends on where the ball is alone (not on time,
+    /// an input or other balls), so a resting ball may sleep while it is on
+    /// (contact_solver.h, point 7).
+    bool steadyAtRest = false;
 };
 
 /// Every force model, in the order their accelerations are added.

@@ -27,7 +27,7 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
     const long stride = std::max(1L, std::lround(o.every / dt));
     if (out)
         *out << "    t s   deepest r    mean r   rms px/s   max px/s   >5 px/s   height px   pile px/s   in flight"
-                "    ms/step   bounced\n";
+                "    ms/step   bounced    asleep\n";
     std::vector<PileStudyRow> rows;
     // Only the steps are timed, not the measures between the rows.
     double stepSeconds = 0.0;
@@ -45,6 +45,7 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
         row.time = static_cast<double>(s) * dt;
         row.msPerStep = 1000.0 * stepSeconds / static_cast<double>(stepsTimed);
         row.bounceSteps = bounceSteps;
+        row.asleep = world.collisionSystem().sleepingCount();
         stepSeconds = 0.0;
         stepsTimed = 0;
         bounceSteps = 0;
@@ -57,11 +58,11 @@ std::vector<PileStudyRow> runPileStudy(const PileStudyOptions& o, std::ostream* 
         }
         rows.push_back(row);
         if (out) {
-            char line[200];
-            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f %11.2f %11d %10.2f %9d\n",
+            char line[220];
+            std::snprintf(line, sizeof line, "%7.2f %11.3f %9.4f %10.2f %10.1f %9d %11.1f %11.2f %11d %10.2f %9d %9d\n",
                           row.time, row.measures.deepestOverlap, row.measures.meanOverlap, row.measures.rmsSpeed,
                           row.maxSpeed, row.movingBalls, row.measures.meanHeight, row.measures.pileRmsSpeed,
-                          row.measures.inFlight, row.msPerStep, row.bounceSteps);
+                          row.measures.inFlight, row.msPerStep, row.bounceSteps, row.asleep);
             *out << line << std::flush;
         }
     }

@@ -2,8 +2,9 @@
 // The peer scene's pile followed in time: N equal balls (r = 5 px) fall into a
 // square box and settle, and every `every` seconds the pile's measures are
 // taken (peer_scene.h) together with the fastest ball, how many balls move
-// faster than 5 px/s, the wall-clock time per step and how many steps had a
-// bounce since the row before. The solver's settings and the sub-steps can be changed,
+// faster than 5 px/s, the wall-clock time per step, how many steps had a
+// bounce since the row before and how many balls sleep. The solver's settings
+// and the sub-steps can be changed,
 // so the trade between overlap and jitter can be measured one knob at a time
 // (`forcelab-cli pile`, docs/performance.md).
 
@@ -33,6 +34,7 @@ struct PileStudyRow {
     int movingBalls = 0;   ///< 1, balls faster than 5 px/s
     double msPerStep = 0.0; ///< ms, wall-clock time per step since the row before
     int bounceSteps = 0;   ///< 1, steps since the row before in which a pair or a wall bounced
+    int asleep = 0;        ///< 1, balls asleep now (contact_solver.h, point 7)
 };
 
 /// Runs the study; with `out`, prints each row as it is taken.

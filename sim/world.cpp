@@ -155,6 +155,7 @@ std::optional<Error> World::reset(const Scene& scene)
     m_rng.seed(m_settings.time.seed);
     m_spawnRng.seed(m_spawn.seed ^ 0x5bd1e995u); // its own stream: spawning does not shift the wind
     m_integrator.invalidate();
+    m_collisions.wakeAll();
     m_time = 0.0;
     m_stepCount = 0;
     m_last = StepStats{};
@@ -171,6 +172,7 @@ std::optional<Error> World::setSettings(const WorldSettings& settings)
         return error;
     m_settings = settings;
     m_integrator.invalidate();
+    m_collisions.wakeAll(); // a sleeping pile must feel the new settings
     m_halted = stabilityProblem(m_settings, largestDragFactor());
     return std::nullopt;
 }
@@ -185,6 +187,7 @@ double World::largestDragFactor() const
 BallState& World::mutableBalls()
 {
     m_integrator.invalidate();
+    m_collisions.wakeAll(); // a moved ball may have held up a sleeping one
     return m_balls;
 }
 
@@ -325,6 +328,12 @@ void World::step()
     // ias15 shorten their own sub-steps.
     const bool adaptive = integratorInfo(m_settings.time.integrator).adaptive;
     const bool watchPairs = !adaptive && m_settings.mutualGravity.enabled && m_settings.mutualGravity.G > 0.0;
+    // A ball at rest may sleep only while every force on it at rest stays
+    // what it was when it fell asleep.
+    bool steady = true;
+    for (const ForceModelInfo& model : forceModels())
+        steady = steady && (!model.on(m_settings) || model.steadyAtRest);
+    m_collisions.allowSleep(steady);
     for (int k = 0; k < substeps && !m_gaveUp; ++k)
         subStep(h);
     // A fixed-step integrator does not notice that it skips over a close
@@ -343,6 +352,7 @@ void World::step()
         m_balls.velocity = m_savedVelocity;
         m_books = booksBefore;
         m_integrator.invalidate();
+        m_collisions.wakeAll();
         return;
     }
     spawnOverTime(); // a new ball's energy and momentum are booked with the edits, at the next step

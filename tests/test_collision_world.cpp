@@ -662,6 +662,8 @@ struct Drop {
     double touching = 0.0; // centre height where it meets the top ball, px
     double rebound = 0.0;  // how far it rises above that, px
     std::size_t regionRows = 0;
+    int asleepBefore = 0;   // most balls asleep in a step before the dropped ball turns back
+    int asleepAtImpact = 0; // balls asleep in the step it first turns back
 };
 
 class PileDrop {
@@ -695,8 +697,10 @@ public:
         }
     }
     bool found() const { return m_top >= 0; }
+    int size() const { return m_pile.size(); }
 
-    Drop drop(double h0, int bounceLayers) const
+    // sleepTime 0: no ball sleeps.
+    Drop drop(double h0, int bounceLayers, double sleepTime = ContactSolverSettings{}.sleepTime) const
     {
         Scene drop = m_scene;
         for (int i = 0; i < m_pile.size(); ++i) {
@@ -712,6 +716,7 @@ public:
         World w(drop);
         ContactSolverSettings solver = w.collisionSystem().solverSettings();
         solver.bounceLayers = bounceLayers;
+        solver.sleepTime = sleepTime;
         w.collisionSystem().setSolverSettings(solver);
         const int id = w.balls().size() - 1;
         bool bounced = false;
@@ -720,6 +725,10 @@ public:
             w.step();
             d.regionRows = std::max(d.regionRows, w.collisionSystem().lastBounceRegionRows());
             const double y = w.balls().position(1, id), vy = w.balls().velocity(1, id);
+            if (!bounced && vy < 0.0)
+                d.asleepAtImpact = w.collisionSystem().sleepingCount();
+            if (!bounced && vy >= 0.0)
+                d.asleepBefore = std::max(d.asleepBefore, w.collisionSystem().sleepingCount());
             bounced = bounced || vy < 0.0;
             if (bounced) {
                 apex = std::min(apex, y);
@@ -767,12 +776,130 @@ TEST_CASE("TestCollisionWorld::bounceOnPileNeedsOnlyTheRowsNearIt")
 {
     const PileDrop pile;
     REQUIRE(pile.found());
-    const Drop everyRow = pile.drop(200.0, 0);
-    const Drop nearRows = pile.drop(200.0, ContactSolverSettings{}.bounceLayers);
+    const Drop everyRow = pile.drop(200.0, 0, 0.0);
+    const Drop nearRows = pile.drop(200.0, ContactSolverSettings{}.bounceLayers, 0.0);
     forcelab::test::report("dropped from 200 px: rises %.2f px with every row, %.2f px with the %zu rows near the bounce",
                            everyRow.rebound, nearRows.rebound, nearRows.regionRows);
     VERIFY(everyRow.regionRows == 0);
     VERIFY(nearRows.regionRows > 0); // the rows near it were fewer than half: the region was used
     VERIFY2(std::abs(nearRows.rebound - everyRow.rebound) <= 0.02 * everyRow.rebound,
             Text(Text::number(nearRows.rebound)).c_str());
+}
+
+// A pile asleep is a pile that gives: the pair the falling ball makes with
+// the pile wakes every sleeper within wakeLayers balls of it before the
+// solve (contact_solver.h, point 7), so the ball rises as high as from the
+// same pile awake (to 2%), and the bounce does not wake the whole pile.
+TEST_CASE("TestCollisionWorld::ballBouncesOnSleepingPileAsOnAwakeOne")
+{
+    const PileDrop pile;
+    REQUIRE(pile.found());
+    const Drop awake = pile.drop(200.0, ContactSolverSettings{}.bounceLayers, 0.0);
+    const Drop asleep = pile.drop(200.0, ContactSolverSettings{}.bounceLayers);
+    forcelab::test::report("dropped from 200 px: rises %.2f px from the pile awake, %.2f px from the pile with %d of "
+                           "%d balls asleep (%d still asleep as it bounced)",
+                           awake.rebound, asleep.rebound, asleep.asleepBefore, pile.size(), asleep.asleepAtImpact);
+    VERIFY(awake.asleepBefore == 0);
+    VERIFY(asleep.asleepBefore >= pile.size() * 4 / 5); // the ball came down on a pile asleep
+    VERIFY(asleep.asleepAtImpact > 0 && asleep.asleepAtImpact < asleep.asleepBefore); // it woke a part of it
+    VERIFY2(std::abs(asleep.rebound - awake.rebound) <= 0.02 * awake.rebound, Text(Text::number(asleep.rebound)).c_str());
+}
+
+namespace {
+
+// Two balls of 10 px on the floor of a 600 × 400 box under gravity: `rest`
+// still at x = 300, `mover` at x = 100 with no speed yet.
+Scene twoBallsOnTheFloor()
+{
+    Scene s;
+    s.settings.box = BoxSettings{600.0, 400.0};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = Vec2(0.0, 980.0);
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    Ball ball;
+    ball.radius = 10.0;
+    ball.position = Vec2(300.0, 390.0);
+    s.balls = {ball};
+    ball.position = Vec2(100.0, 390.0);
+    s.balls.push_back(ball);
+    return s;
+}
+
+} // namespace
+
+// A sleeper is a ball of infinite mass only until something pushes on it:
+// a ball rolling into a sleeping ball at 30 px/s (slower than v_rest =
+// 2 g dt = 32.7 px/s, so the pair does not bounce: e = 0) wakes it before
+// the solve, and the two share the momentum, 15 px/s each, along the floor,
+// where no wall acts (x momentum kept to 1e-12 of m·30 px/s).
+TEST_CASE("TestCollisionWorld::aBallPushingASleeperWakesIt")
+{
+    World w(twoBallsOnTheFloor());
+    for (int step = 0; step < 60; ++step)
+        w.step();
+    REQUIRE(w.collisionSystem().sleepingCount() == 2); // both rest on the floor
+    BallState& b = w.mutableBalls(); // an edit wakes both
+    VERIFY(w.collisionSystem().sleepingCount() == 0);
+    b.velocity.col(1) = Vec2(30.0, 0.0);
+    const double p0 = b.mass[1] * 30.0;
+    // The one at rest falls asleep again while the mover rolls on; the
+    // last step in which it slept and the first in which it moved.
+    int sleptUntil = -1, movedAt = -1;
+    for (int step = 0; step < 600 && movedAt < 0; ++step) {
+        if (w.collisionSystem().sleeping() && w.collisionSystem().sleeping()[0])
+            sleptUntil = step;
+        w.step();
+        if (w.balls().velocity(0, 0) > 0.0)
+            movedAt = step;
+    }
+    for (int step = 0; step < 60 && w.balls().velocity(0, 0) < w.balls().velocity(0, 1); ++step)
+        w.step(); // until the two move as one
+    const BallState& after = w.balls();
+    const double p1 = (after.velocity.row(0).transpose().array() * after.mass.array()).sum();
+    forcelab::test::report("ball at 30 px/s meets a sleeper: speeds after %.4f and %.4f px/s, x momentum off by %.3g",
+                           after.velocity(0, 1), after.velocity(0, 0), std::abs(p1 - p0) / p0);
+    VERIFY(sleptUntil > 0 && movedAt >= sleptUntil && movedAt <= sleptUntil + 2); // asleep until it was met
+    VERIFY(std::abs(after.velocity(0, 0) - 15.0) <= 0.01 * 15.0);
+    VERIFY(std::abs(after.velocity(0, 1) - 15.0) <= 0.01 * 15.0);
+    VERIFY2(std::abs(p1 - p0) <= 1e-12 * p0, Text(Text::number(std::abs(p1 - p0) / p0)).c_str());
+}
+
+// A sleeping ball must feel what changes: new settings wake every ball
+// (gravity turned to the side topples the pile), and while a force
+// that changes with time acts (wind), no ball sleeps at all.
+TEST_CASE("TestCollisionWorld::editsAndChangingForcesKeepBallsAwake")
+{
+    Scene s = boxScene(300, 5.0, 5.0, 0.0, 0.9, Detection::Grid, 5);
+    World w(s);
+    for (int step = 0; step < 300; ++step)
+        w.step();
+    const int asleep = w.collisionSystem().sleepingCount();
+    REQUIRE(asleep > 250); // the pile sleeps after 5 s
+    const Matrix2X before = w.balls().position;
+    WorldSettings tilted = w.settings();
+    tilted.gravity.g = Vec2(980.0, 0.0); // the box turned on its side
+    REQUIRE(!w.setSettings(tilted));
+    VERIFY(w.collisionSystem().sleepingCount() == 0);
+    for (int step = 0; step < 60; ++step)
+        w.step();
+    int moved = 0;
+    for (int i = 0; i < w.balls().size(); ++i)
+        moved += (w.balls().position.col(i) - before.col(i)).norm() > 1.0 ? 1 : 0;
+    forcelab::test::report("%d of 300 balls asleep at 5 s; gravity turned sideways: %d balls moved more than 1 px in 1 s",
+                           asleep, moved);
+    VERIFY(moved > 150);
+
+    World windy(s);
+    WorldSettings wind = windy.settings();
+    wind.wind.mode = WindMode::Random;
+    wind.wind.strength = 5.0;
+    REQUIRE(!windy.setSettings(wind));
+    int most = 0;
+    for (int step = 0; step < 300; ++step) {
+        windy.step();
+        most = std::max(most, windy.collisionSystem().sleepingCount());
+    }
+    VERIFY(most == 0);
 }

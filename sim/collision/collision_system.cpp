@@ -73,6 +73,13 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
 
 } // namespace
 
+void CollisionSystem::allowSleep(bool on)
+{
+    if (!on)
+        m_sleep.wakeAll();
+    m_sleepAllowed = on;
+}
+
 SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const BoxSettings& box,
                                         const WallSettings& walls, double h, double restingSpeed,
                                         const Vec2& gravity) const
@@ -171,7 +178,15 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     const double restingSpeed = m_solver.restingFactor * g * dt;
     const bool resting = settings.resting && settings.response == Response::Impulse2D && !continuous &&
                          restingSpeed > 0.0 && std::isfinite(restingSpeed);
+    // Sleeping needs the staged solve with speculative contacts; any other
+    // step wakes every ball.
+    const bool sleeping = resting && m_solver.speculative > 0.0 && m_solver.stages > 1 && m_sleepAllowed &&
+                          m_solver.sleepTime > 0.0;
+    if (!sleeping)
+        m_sleep.wakeAll();
     if (resting && m_solver.speculative > 0.0) {
+        if (sleeping)
+            m_sleep.hold(balls); // the sleepers back where they sleep, before anything reads them
         // Speculative contacts: every ball grown by the distance one sub-step
         // can bring it closer to a neighbour, |v − u|·h + |g|·h² with u the
         // mean velocity around it, at most `speculative` of its radius
@@ -182,11 +197,21 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         m_input.loadStatic(balls, m_grow.data());
         clock.lap(m_profile.load);
         findContacts(settings.detection, false, m_speculative, stats, clock);
+        const double stillSpeed = m_solver.stillShare * restingSpeed;
+        if (sleeping) {
+            m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, stillSpeed, m_solver.wakeShare * restingSpeed,
+                             m_solver.wakeLayers);
+            clock.lap(m_profile.build);
+        }
         // The solver puts the pairs that overlap now back into m_contacts
         // (what contacts(), the flags and the counters report) as it builds
         // its rows.
         m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_speculative, &m_contacts, clock,
-                        m_profile);
+                        m_profile, sleeping ? m_sleep.asleep() : nullptr);
+        if (sleeping) {
+            m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
+            clock.lap(m_profile.position);
+        }
         m_lastPasses = m_resting.lastPasses();
         m_lastBounceRows = m_resting.lastBounceRows();
         m_lastBounced = m_resting.lastBounced();

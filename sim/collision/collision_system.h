@@ -17,6 +17,7 @@
 #include "contact_solver.h"
 #include "contact_sort.h"
 #include "resting_solver.h"
+#include "sleep.h"
 #include "speculative_margin.h"
 #include "sub_step_context.h"
 #include "sweep_and_prune.h"
@@ -60,6 +61,18 @@ public:
     /// Whether the last step()'s staged solve had a pair or a wall bounce.
     bool lastStepBounced() const { return m_lastBounced; }
 
+    /// Whether balls at rest may sleep (contact_solver.h, point 7): the
+    /// world allows it while every force on a ball at rest depends on where
+    /// it is alone. Off by default; switching it off wakes every ball.
+    void allowSleep(bool on);
+    /// Wakes every sleeping ball (an edit between steps).
+    void wakeAll() { m_sleep.wakeAll(); }
+    /// Balls asleep now, and per ball whether it sleeps (nullptr: none).
+    int sleepingCount() const { return m_sleep.count(); }
+    const unsigned char* sleeping() const { return m_sleep.asleep(); }
+    /// Balls that a pair approaching woke in the last step().
+    int lastWoken() const { return m_sleep.lastWoken(); }
+
     /// Detection alone: every touching pair (distance < r_a + r_b), sorted by
     /// (a, b) and identical for every method.
     CollisionStats detect(const BallState& balls, Detection method, std::vector<Contact>& out);
@@ -90,6 +103,8 @@ private:
                            double h, double restingSpeed, const Vec2& gravity) const;
 
     RestingSolver m_resting;
+    SleepingBalls m_sleep;
+    bool m_sleepAllowed = false;
     SpeculativeMargin m_margin;
     std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts
     std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)

@@ -75,6 +75,21 @@
 //    1/36 of a whole step's. A body no contact pushed keeps the
 //    integrator's result, so a lone ball (a restitution-1 ball bouncing for
 //    ever) moves exactly as without the solver.
+// 7. Sleeping (staged solve; Box2D puts resting islands to sleep). A pile
+//    at rest still costs every pass of point 6 in every step. A ball that
+//    contacts have held for `sleepTime`, slower than stillShare · v_rest all
+//    that time, with every ball near it as still, goes to sleep: it stays
+//    where it is at speed 0, and to the balls still awake it is a ball of
+//    infinite mass. Rows between two sleepers are not solved at all (their
+//    impulses are kept for when they wake). A pair that approaches faster
+//    than stillShare · v_rest wakes every sleeper within `wakeLayers` balls
+//    of it before the solve, so a ball dropped on a sleeping pile meets a
+//    pile that gives as an awake one does. Any edit between steps wakes
+//    every ball, and balls sleep only while every force on a ball at rest
+//    depends on where it is alone (gravity, drag, point force, spring,
+//    homing, magnetic field; not wind, the pointer, random kicks, mutual
+//    gravity or a custom force), so a sleeper would feel the same force as
+//    when it fell asleep.
 
 namespace forcelab::sim {
 
@@ -95,6 +110,11 @@ struct ContactSolverSettings {
     double contactStiffness = 0.5; ///< 1, a soft contact's spring frequency as a share of the stage rate 1/hs
     double dampingRatio = 1.0;    ///< 1, the soft contact's damping as a share of critical damping
     double pushSpeed = 300.0;     ///< px/s, fastest speed at which an overlap is pushed apart
+    // Sleeping (point 7), staged solve only.
+    double sleepTime = 0.5;       ///< s, how long a held ball stays still before it sleeps (0: no sleeping)
+    double stillShare = 0.1;      ///< 1, a ball is still while slower than stillShare × v_rest
+    double wakeShare = 0.5;       ///< 1, a pair approaching faster than wakeShare × v_rest wakes the sleepers near it
+    int wakeLayers = 12;          ///< 1, a pair that approaches wakes the sleepers this many balls from it
 };
 
 } // namespace forcelab::sim

@@ -10,9 +10,11 @@
 namespace forcelab::sim {
 
 void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
-                          std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile)
+                          std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile,
+                          const unsigned char* asleep)
 {
     const bool profiling = clock.on();
+    m_asleep = asleep;
     prepare(balls.size());
     takeBackWallBounces(balls, c);
     buildPairRows(balls, c, pairs, touching);
@@ -96,6 +98,8 @@ void RestingSolver::prepare(int n)
     if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
         m_rowCount = 0;
         m_wallRows.clear();
+        m_dormantBalls.clear();
+        m_dormantImpulse.clear();
         m_warmCount = n;
     }
     if (m_bodyOf.size() != size)
@@ -121,15 +125,17 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
     const double* v = balls.velocity.data();
     const double* x = balls.position.data();
     const auto kk = static_cast<std::size_t>(k);
-    m_bodies[kk] = {{v[2 * i], v[2 * i + 1]}, balls.inverseMass[static_cast<Eigen::Index>(i)], -1};
+    // A sleeper is at rest and cannot be moved: inverse mass 0.
+    const bool sleeps = m_asleep && m_asleep[i];
+    const double w = sleeps ? 0.0 : balls.inverseMass[static_cast<Eigen::Index>(i)];
+    m_bodies[kk] = {{v[2 * i], v[2 * i + 1]}, w, -1};
     // A ball whose wall bounce stage 0 took back ended the integrator's step
     // on the wall: along that axis the position stage moves it by its new
     // velocity alone, from the wall.
     const unsigned char* tookBack = &m_tookBack[2 * i];
     m_bodyVelocity0[2 * kk] = tookBack[0] ? 0.0 : v[2 * i];
     m_bodyVelocity0[2 * kk + 1] = tookBack[1] ? 0.0 : v[2 * i + 1];
-    m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)],
-                           balls.inverseMass[static_cast<Eigen::Index>(i)]};
+    m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)], w};
     return k;
 }
 
@@ -197,10 +203,14 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
     for (auto* values : {&m_spareImpulse, &m_vn0})
         if (values->size() < m)
             values->resize(m);
-    std::size_t old = 0, count = 0, overlapping = 0;
+    std::size_t old = 0, count = 0, overlapping = 0, dormant = 0;
     const std::size_t oldCount = m_rowCount;
     const Contact* oldBalls = m_rowBalls.data();
     const double* oldImpulse = m_impulse.data();
+    const std::size_t dormantCount = m_dormantBalls.size();
+    m_spareDormantBalls.clear();
+    m_spareDormantImpulse.clear();
+    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     if (touching && touching->size() < m)
         touching->resize(m);
     unsigned char* colliding = balls.colliding.data();
@@ -216,9 +226,28 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
             colliding[a] |= static_cast<unsigned char>(overlap);
             colliding[b] |= static_cast<unsigned char>(overlap);
         }
-        const double wa = inverseMass[a], wb = inverseMass[b];
+        double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
+        // Last sub-step's impulse of this pair, whether it was a row or a
+        // pair of two sleepers.
+        while (old < oldCount && before(oldBalls[old], ct))
+            ++old;
+        while (dormant < dormantCount && before(m_dormantBalls[dormant], ct))
+            ++dormant;
+        double warm = (old < oldCount && oldBalls[old] == ct) ? oldImpulse[old] : 0.0;
+        if (dormant < dormantCount && m_dormantBalls[dormant] == ct)
+            warm = m_dormantImpulse[dormant];
+        if (m_asleep) {
+            const bool sa = m_asleep[a], sb = m_asleep[b];
+            if (sa && sb) { // two sleepers: no row, the impulse kept
+                m_spareDormantBalls.push_back(ct);
+                m_spareDormantImpulse.push_back(warm);
+                continue;
+            }
+            wa = sa ? 0.0 : wa;
+            wb = sb ? 0.0 : wb;
+        }
         // The line of impact and the gap at the start of the sub-step: the
         // integrator moved each ball by v·h before this stage, so the centres
         // were d − (v_b − v_a)·h apart. A fast ball may already sit deep in
@@ -236,10 +265,6 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
         // A gap may close within the sub-step and no more: its normal speed
         // may not drop below −gap/h (0 for a pair that overlapped already).
         const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
-        while (old < oldCount && (oldBalls[old].a < ct.a || (oldBalls[old].a == ct.a && oldBalls[old].b < ct.b)))
-            ++old;
-        const double warm =
-            (old < oldCount && oldBalls[old].a == ct.a && oldBalls[old].b == ct.b) ? oldImpulse[old] : 0.0;
         const int ba = bodyFor(a, balls), bb = bodyFor(b, balls);
         m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
         m_spareBalls[count] = ct;
@@ -255,6 +280,8 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
     m_rowBalls.swap(m_spareBalls);
     m_impulse.swap(m_spareImpulse);
     m_rowCount = count;
+    m_dormantBalls.swap(m_spareDormantBalls);
+    m_dormantImpulse.swap(m_spareDormantImpulse);
 }
 
 // Stage 2. One row for a ball on an enabled wall, or nearer to it than the
@@ -309,8 +336,8 @@ void RestingSolver::buildWallRows(const BallState& balls, const SubStepContext& 
             const double far = c.solver.slop * r + reach + (std::abs(vx) + std::abs(vy)) * h;
             if (px - r >= far && size[0] - r - px >= far && py - r >= far && size[1] - r - py >= far)
                 continue;
-            if (!(w > 0.0) || !std::isfinite(w))
-                continue;
+            if (!(w > 0.0) || !std::isfinite(w) || (m_asleep && m_asleep[i]))
+                continue; // a sleeper needs no wall: nothing moves it
             for (int k = 0; k < 2; ++k) {
                 if (!(2.0 * r <= size[k]))
                     continue; // wider than the box: the wall stage keeps it in the middle
@@ -540,11 +567,13 @@ void RestingSolver::writeBack(BallState& balls, const SubStepContext& c)
 {
     double* x = balls.position.data();
     double* v = balls.velocity.data();
+    m_held.assign(static_cast<std::size_t>(balls.size()), 0);
     for (int i = 0; i < balls.size(); ++i) {
         const auto ii = static_cast<std::size_t>(i);
         const int k = m_bodyOf[ii];
         if (k >= 0) {
             const auto kk = static_cast<std::size_t>(k);
+            m_held[ii] = m_bodies[kk].changed >= 0;
             v[2 * i] = m_bodies[kk].v[0];
             v[2 * i + 1] = m_bodies[kk].v[1];
             x[2 * i] = m_bodyPositions[kk].x;

@@ -51,9 +51,15 @@ public:
     /// order) for one sub-step. When `touching` is given, the pairs of
     /// `pairs` that overlap now are written to it and flagged in
     /// balls.colliding (otherwise `pairs` are the touching ones, already
-    /// flagged).
+    /// flagged). `asleep` (per ball, or nullptr: none) marks the sleeping
+    /// balls (sleep.h): bodies of infinite mass at rest, with no rows between
+    /// two of them and no wall rows.
     void solve(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
-               std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile);
+               std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile,
+               const unsigned char* asleep = nullptr);
+    /// Per ball, whether an impulse (a pair's or a wall's) touched it in the
+    /// last solve.
+    const std::vector<unsigned char>& held() const { return m_held; }
 
     /// Forgets the impulses kept for the next warm start (another kind of
     /// step ran, so they no longer belong to these contacts).
@@ -175,6 +181,13 @@ private:
     std::vector<Body> m_bodies;
     std::vector<BodyPosition> m_bodyPositions;
     std::vector<int> m_bodyOf; // per ball: its body in this solve (−1: none; all −1 between solves)
+    std::vector<unsigned char> m_held; // per ball: an impulse touched it in the last solve
+    const unsigned char* m_asleep = nullptr; // per ball, this solve: it sleeps (nullptr: none does)
+    // The pairs of two sleepers, not solved, in (a, b) order, with the
+    // impulse they had when their second ball fell asleep: their warm start
+    // when they wake.
+    std::vector<Contact> m_dormantBalls, m_spareDormantBalls;
+    std::vector<double> m_dormantImpulse, m_spareDormantImpulse;
     std::vector<double> m_bodyVelocity0;
     std::vector<unsigned char> m_tookBack;   // per ball and axis: 1 when stage 0 took its bounce back
     RowStrips m_strips;                      // the rows cut into strips for the passes (row_strips.h)

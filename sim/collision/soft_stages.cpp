@@ -65,8 +65,10 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
         }
         m_bodyStart[2 * k] = p.x;
         m_bodyStart[2 * k + 1] = p.y;
-        m_bodies[k].v[0] -= c.gravityX * c.h;
-        m_bodies[k].v[1] -= c.gravityY * c.h;
+        if (m_bodies[k].w > 0.0) { // a sleeper (w = 0) was given nothing and gets nothing
+            m_bodies[k].v[0] -= c.gravityX * c.h;
+            m_bodies[k].v[1] -= c.gravityY * c.h;
+        }
         m_bodies[k].changed = -1; // −1: no impulse has touched it yet
     }
     // Each row's line of impact and gap from its bodies' start positions (the
@@ -98,8 +100,9 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
         // 1. Gravity's share: dv = g·hs. The speeds then are the ones a
         //    new contact of this stage hits with.
         for (std::size_t k = 0; k < bodies; ++k) {
-            m_bodies[k].v[0] += gx;
-            m_bodies[k].v[1] += gy;
+            const double share = m_bodies[k].w > 0.0 ? 1.0 : 0.0; // a sleeper stays at rest
+            m_bodies[k].v[0] += share * gx;
+            m_bodies[k].v[1] += share * gy;
             m_stageVelocity[2 * k] = m_bodies[k].v[0];
             m_stageVelocity[2 * k + 1] = m_bodies[k].v[1];
         }
