@@ -81,10 +81,14 @@
 //    that time, with every ball near it as still, goes to sleep: it stays
 //    where it is at speed 0, and to the balls still awake it is a ball of
 //    infinite mass. Rows between two sleepers are not solved at all (their
-//    impulses are kept for when they wake). A pair that approaches faster
-//    than stillShare · v_rest wakes every sleeper within `wakeLayers` balls
-//    of it before the solve, so a ball dropped on a sleeping pile meets a
-//    pile that gives as an awake one does. Any edit between steps wakes
+//    impulses are kept for when they wake). Before the solve, a pair that
+//    approaches faster than stillShare · v_rest with one ball asleep (a
+//    push on a sleeper), or faster than wakeShare · v_rest with both awake
+//    (a ball landing on the pile's surface), wakes every sleeper within
+//    `wakeLayers` balls of it, so a ball dropped on a sleeping pile meets a
+//    pile that gives as an awake one does. Awake balls jittering on a
+//    sleeping pile approach each other at a few px/s, below wakeShare, so
+//    they do not keep waking it. Any edit between steps wakes
 //    every ball, and balls sleep only while every force on a ball at rest
 //    depends on where it is alone (gravity, drag, point force, spring,
 //    homing, magnetic field; not wind, the pointer, random kicks, mutual
