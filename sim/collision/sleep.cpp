@@ -7,6 +7,9 @@ namespace forcelab::sim {
 
 void SleepingBalls::wakeAll()
 {
+    if (m_awake)
+        return; // nothing to clear: a scene that never sleeps pays nothing
+    m_awake = true;
     std::fill(m_asleep.begin(), m_asleep.end(), 0);
     std::fill(m_still.begin(), m_still.end(), 0.0);
     m_count = 0;
@@ -18,6 +21,7 @@ void SleepingBalls::hold(BallState& balls)
     const auto n = static_cast<std::size_t>(balls.size());
     m_lastWoken = 0;
     m_first.clear(); // the neighbour lists are this step's, built when first needed
+    m_awake = false;
     if (m_asleep.size() != n) {
         m_asleep.assign(n, 0);
         m_still.assign(n, 0.0);

@@ -70,6 +70,7 @@ private:
     std::vector<int> m_queue;
     int m_count = 0;
     int m_lastWoken = 0;
+    bool m_awake = true; // every ball awake and no stillness counted since wakeAll
 };
 
 } // namespace forcelab::sim
