@@ -36,6 +36,7 @@
 #include "../ball_state.h"
 #include "collision_profile.h"
 #include "contact.h"
+#include "pair_graph.h"
 #include "row_strips.h"
 #include "sub_step_context.h"
 
@@ -138,7 +139,7 @@ private:
                    const std::vector<int>* onlyRows = nullptr);
     // The rows near a bounce, for the passes a bounce adds (soft_stages.cpp).
     bool markBounceRegion(int layers);
-    static constexpr unsigned char kFarFromBounce = 255;
+    static constexpr unsigned char kFarFromBounce = PairGraph::kFar;
     void stagedWriteBack(BallState& balls, const SubStepContext& c);
 
     // The passes' two innermost operations, here so that every pass (in
@@ -176,6 +177,8 @@ private:
     std::vector<double> m_bodyMoved;       // per body, staged solve: x, y now less x, y at the start
     std::vector<unsigned char> m_bodyLayer; // per body, staged solve: rows between it and a bounce (kFarFromBounce: more)
     std::vector<int> m_bounceRows;         // staged solve: the rows near a bounce, in row order
+    std::vector<int> m_bounceRegion;       // staged solve: the bodies near a bounce, in the order reached
+    PairGraph m_rowGraph;                  // staged solve: the rows as a graph of bodies, for the region
     std::size_t m_rowCount = 0;
     std::vector<WallRow> m_wallRows, m_spareWalls;
     std::vector<Body> m_bodies;

@@ -20,7 +20,7 @@ void SleepingBalls::hold(BallState& balls)
 {
     const auto n = static_cast<std::size_t>(balls.size());
     m_lastWoken = 0;
-    m_first.clear(); // the neighbour lists are this step's, built when first needed
+    m_graph.clear(); // the neighbour lists are this step's, built when first needed
     m_awake = false;
     if (m_asleep.size() != n) {
         m_asleep.assign(n, 0);
@@ -45,20 +45,7 @@ void SleepingBalls::hold(BallState& balls)
 
 void SleepingBalls::buildNeighbours(int n, const std::vector<Contact>& pairs)
 {
-    const auto balls = static_cast<std::size_t>(n);
-    m_first.assign(balls + 1, 0);
-    for (const Contact& c : pairs) {
-        ++m_first[static_cast<std::size_t>(c.a) + 1];
-        ++m_first[static_cast<std::size_t>(c.b) + 1];
-    }
-    for (std::size_t i = 0; i < balls; ++i)
-        m_first[i + 1] += m_first[i];
-    m_neighbour.resize(2 * pairs.size());
-    m_fill.assign(m_first.begin(), m_first.end() - 1);
-    for (const Contact& c : pairs) {
-        m_neighbour[static_cast<std::size_t>(m_fill[static_cast<std::size_t>(c.a)]++)] = c.b;
-        m_neighbour[static_cast<std::size_t>(m_fill[static_cast<std::size_t>(c.b)]++)] = c.a;
-    }
+    m_graph.build(n, pairs.size(), [&](std::size_t k) { return pairs[k].a; }, [&](std::size_t k) { return pairs[k].b; });
 }
 
 void SleepingBalls::wakeNear(BallState& balls, const std::vector<Contact>& pairs, const Vec2& gh, double h,
@@ -73,9 +60,7 @@ void SleepingBalls::wakeNear(BallState& balls, const std::vector<Contact>& pairs
     // is 0; an awake ball's is the one it ended the last step with (the
     // integrator has since given it gravity's g·h, which every ball shares
     // and which a resting contact takes out again).
-    constexpr unsigned char kFar = 255;
-    layers = std::min(layers, static_cast<int>(kFar) - 1);
-    m_layer.assign(static_cast<std::size_t>(n), kFar);
+    m_layer.assign(static_cast<std::size_t>(n), PairGraph::kFar);
     m_queue.clear();
     for (const Contact& c : pairs) {
         const auto a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
@@ -98,22 +83,9 @@ void SleepingBalls::wakeNear(BallState& balls, const std::vector<Contact>& pairs
     }
     if (m_queue.empty())
         return;
-    // Then breadth-first over the pairs: layer k + 1 is every ball next to
-    // one of layer k not reached before.
+    // Then breadth-first over the pairs, as far as `layers`.
     buildNeighbours(n, pairs);
-    for (std::size_t next = 0; next < m_queue.size(); ++next) {
-        const auto i = static_cast<std::size_t>(m_queue[next]);
-        const unsigned char layer = m_layer[i];
-        if (layer + 1 >= layers)
-            continue;
-        for (int k = m_first[i]; k < m_first[i + 1]; ++k) {
-            const auto j = static_cast<std::size_t>(m_neighbour[static_cast<std::size_t>(k)]);
-            if (m_layer[j] == kFar) {
-                m_layer[j] = static_cast<unsigned char>(layer + 1);
-                m_queue.push_back(static_cast<int>(j));
-            }
-        }
-    }
+    m_graph.spread(m_queue, m_layer, layers, static_cast<std::size_t>(n) + 1);
     // The queue holds the region in breadth-first order, which depends on
     // the pairs alone: the same balls wake on any thread count.
     double* xw = balls.position.data();
@@ -158,7 +130,7 @@ void SleepingBalls::settle(BallState& balls, const std::vector<Contact>& pairs, 
         }
     }
     if (any) {
-        if (m_first.empty())
+        if (!m_graph.built())
             buildNeighbours(n, pairs);
         // A ball sleeps when all its neighbours sleep or are as still: a
         // ball resting on one that still sinks, or next to one still rolling,
@@ -167,10 +139,8 @@ void SleepingBalls::settle(BallState& balls, const std::vector<Contact>& pairs, 
             if (m_asleep[i] || m_still[i] < enough)
                 continue;
             bool calm = true;
-            for (int k = m_first[i]; k < m_first[i + 1] && calm; ++k) {
-                const auto j = static_cast<std::size_t>(m_neighbour[static_cast<std::size_t>(k)]);
-                calm = m_asleep[j] || m_still[j] >= enough;
-            }
+            for (const int* j = m_graph.neighbourBegin(i); j != m_graph.neighbourEnd(i) && calm; ++j)
+                calm = m_asleep[static_cast<std::size_t>(*j)] || m_still[static_cast<std::size_t>(*j)] >= enough;
             if (!calm)
                 continue;
             m_asleep[i] = 1;

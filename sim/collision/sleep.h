@@ -18,6 +18,7 @@
 
 #include "../ball_state.h"
 #include "contact.h"
+#include "pair_graph.h"
 
 #include <cstddef>
 #include <vector>
@@ -64,8 +65,7 @@ private:
     std::vector<double> m_still;         // per ball, s: how long it has been held and still
     std::vector<double> m_frozen;        // per ball, x and y where it fell asleep
     std::vector<double> m_lastVelocity;  // per ball, vx and vy at the end of the last step
-    // The pairs as lists of neighbours: ball i's are m_neighbour[m_first[i] .. m_first[i + 1]).
-    std::vector<int> m_first, m_neighbour, m_fill;
+    PairGraph m_graph; // this step's pairs as lists of neighbours, built when first needed
     std::vector<unsigned char> m_layer; // per ball, wakeNear: balls between it and an approaching pair
     std::vector<int> m_queue;
     int m_count = 0;

@@ -193,51 +193,40 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     m_lastPasses += finalPasses;
 }
 
-// The bodies within `layers` rows of a bounce, by breadth-first layers over
-// the rows (layer 0: the bodies of a bouncing pair or of a ball bouncing
-// off a wall), and the rows that touch a body of a layer below `layers`,
-// in row order. One sweep over the rows per layer, on one thread, so the
-// region is the same whatever the thread count. False (and the region
-// unused) when it would hold half the bodies or half the rows or more: then
-// every row gets every pass, as without a region.
+// The bodies within `layers` rows of a bounce, breadth-first over the rows
+// (pair_graph.h; layer 0: the bodies of a bouncing pair or of a ball
+// bouncing off a wall), and the rows that touch a body of a layer below
+// `layers`, in row order. On one thread, so the region is the same whatever
+// the thread count. False (and the region unused) when it would hold half
+// the bodies or half the rows or more: then every row gets every pass, as
+// without a region.
 bool RestingSolver::markBounceRegion(int layers)
 {
     layers = std::min(layers, static_cast<int>(kFarFromBounce) - 1);
     const auto bodies = static_cast<std::size_t>(m_bodyCount);
     m_bodyLayer.assign(bodies, kFarFromBounce);
-    // A region of half the bodies or more has about half the rows or more:
-    // stop looking (in the landing of a pile, where bounces are everywhere).
-    std::size_t marked = 0;
-    auto mark = [&](int body, unsigned char layer) {
+    m_bounceRegion.clear();
+    auto seed = [&](int body) {
         unsigned char& l = m_bodyLayer[static_cast<std::size_t>(body)];
-        if (l == kFarFromBounce)
-            ++marked;
-        l = std::min(l, layer);
+        if (l != 0) {
+            l = 0;
+            m_bounceRegion.push_back(body);
+        }
     };
     for (std::size_t k = 0; k < m_rowCount; ++k)
         if (m_pushed[k] == 2) {
-            mark(m_pairRows[k].a, 0);
-            mark(m_pairRows[k].b, 0);
+            seed(m_pairRows[k].a);
+            seed(m_pairRows[k].b);
         }
     for (const WallRow& row : m_wallRows)
         if (row.allowed >= 0.0)
-            mark(row.body, 0);
-    for (int layer = 0; layer + 1 < layers && 2 * marked < bodies; ++layer) {
-        const auto from = static_cast<unsigned char>(layer), to = static_cast<unsigned char>(layer + 1);
-        const std::size_t before = marked;
-        for (std::size_t k = 0; k < m_rowCount; ++k) {
-            const PairRow& row = m_pairRows[k];
-            const unsigned char la = m_bodyLayer[static_cast<std::size_t>(row.a)];
-            const unsigned char lb = m_bodyLayer[static_cast<std::size_t>(row.b)];
-            if (la == from && lb > to)
-                mark(row.b, to);
-            else if (lb == from && la > to)
-                mark(row.a, to);
-        }
-        if (marked == before)
-            break;
-    }
-    if (2 * marked >= bodies)
+            seed(row.body);
+    // A region of half the bodies or more has about half the rows or more:
+    // the search stops there (in the landing of a pile, where bounces are
+    // everywhere).
+    m_rowGraph.build(m_bodyCount, m_rowCount, [this](std::size_t k) { return m_pairRows[k].a; },
+                     [this](std::size_t k) { return m_pairRows[k].b; });
+    if (!m_rowGraph.spread(m_bounceRegion, m_bodyLayer, layers, (bodies + 1) / 2))
         return false;
     m_bounceRows.clear();
     for (std::size_t k = 0; k < m_rowCount; ++k) {
