@@ -216,7 +216,8 @@ void runProfile(const CollisionBenchOptions& o, std::ostream& out)
                             {"solver: velocity passes", &CollisionProfile::velocity},
                             {"solver: restitution", &CollisionProfile::restitution},
                             {"solver: position update", &CollisionProfile::position},
-                            {"positional correction", &CollisionProfile::correction}};
+                            {"positional correction", &CollisionProfile::correction},
+                            {"sleeping", &CollisionProfile::sleep}};
     std::vector<CollisionProfile> profiles;
     std::vector<double> stepMs;
     const Detection dets[] = {Detection::Sweep, Detection::Grid};

@@ -20,6 +20,7 @@ struct CollisionProfile {
     double restitution = 0.0; ///< s, solver: the bounce pass and the last wall pass
     double position = 0.0;    ///< s, solver: moving the balls as if the impulses acted at the start
     double correction = 0.0;  ///< s, positional correction (and the one-pass response without gravity)
+    double sleep = 0.0;       ///< s, sleeping: holding the sleepers, waking them near a pair, putting still balls to sleep
     std::int64_t calls = 0;   ///< step() calls
     std::int64_t passes = 0;  ///< velocity passes made, summed
     std::int64_t rows = 0;    ///< ball–ball rows of the solver (touching and speculative), summed
@@ -28,7 +29,7 @@ struct CollisionProfile {
     double total() const
     {
         return load + broadSort + pairs + contactSort + build + wallScan + velocity + restitution + position +
-               correction;
+               correction + sleep;
     }
 };
 

@@ -185,8 +185,10 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     if (!sleeping)
         m_sleep.wakeAll();
     if (resting && m_solver.speculative > 0.0) {
-        if (sleeping)
+        if (sleeping) {
             m_sleep.hold(balls); // the sleepers back where they sleep, before anything reads them
+            clock.lap(m_profile.sleep);
+        }
         // Speculative contacts: every ball grown by the distance one sub-step
         // can bring it closer to a neighbour, |v − u|·h + |g|·h² with u the
         // mean velocity around it, at most `speculative` of its radius
@@ -201,7 +203,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         if (sleeping) {
             m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, stillSpeed, m_solver.wakeShare * restingSpeed,
                              m_solver.wakeLayers);
-            clock.lap(m_profile.build);
+            clock.lap(m_profile.sleep);
         }
         // The solver puts the pairs that overlap now back into m_contacts
         // (what contacts(), the flags and the counters report) as it builds
@@ -210,7 +212,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
                         m_profile, sleeping ? m_sleep.asleep() : nullptr);
         if (sleeping) {
             m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
-            clock.lap(m_profile.position);
+            clock.lap(m_profile.sleep);
         }
         m_lastPasses = m_resting.lastPasses();
         m_lastBounceRows = m_resting.lastBounceRows();
