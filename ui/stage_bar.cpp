@@ -171,6 +171,19 @@ QSize textSize(const QFont& font, const QStringList& lines)
     return QSize(w, static_cast<int>(lines.size()) * fm.lineSpacing());
 }
 
+// Whether `lines` in `font` fit `room`, both ways.
+bool fitsIn(const QFont& font, const QStringList& lines, QSize room)
+{
+    const QSize need = textSize(font, lines);
+    return need.width() <= room.width() && need.height() <= room.height();
+}
+
+// The height `text` takes in `font`, wrapped at word breaks to `width`.
+int wrappedHeight(const QFont& font, int width, const QString& text)
+{
+    return QFontMetrics(font).boundingRect(QRect(0, 0, width, 1 << 20), Qt::TextWordWrap, text).height();
+}
+
 // The text columns (1 to `mostColumns`) and font that set `lines` at the
 // largest size that fits `room`: the readout's own font, shrunk in steps of
 // half a point to 7 pt at least (then it may not fit).
@@ -181,10 +194,6 @@ struct ReadoutFit {
 };
 ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int mostColumns)
 {
-    auto fits = [&](const QFont& f, const QStringList& text) {
-        const QSize need = textSize(f, text);
-        return need.width() <= room.width() && need.height() <= room.height();
-    };
     // A setting that fits beats one that does not; then the larger font
     // wins, and of equal ones the fewer columns.
     ReadoutFit best{own, lines};
@@ -194,9 +203,9 @@ ReadoutFit bestFit(const QFont& own, const QStringList& lines, QSize room, int m
         if (flowed.isEmpty())
             continue;
         QFont f = own;
-        while (f.pointSizeF() - 0.5 >= 7.0 && !fits(f, flowed))
+        while (f.pointSizeF() - 0.5 >= 7.0 && !fitsIn(f, flowed, room))
             f.setPointSizeF(f.pointSizeF() - 0.5);
-        const bool ok = fits(f, flowed);
+        const bool ok = fitsIn(f, flowed, room);
         if (columns == 1 || (ok && (!bestFits || f.pointSizeF() > best.font.pointSizeF()))) {
             best = {f, flowed, columns};
             bestFits = ok;
@@ -227,10 +236,7 @@ bool StageBar::readoutFits(const QString& text) const
     const QStringList lines = text.split(QLatin1Char('\n'));
     for (int columns = 1; columns <= (m_vertical ? 1 : kMostReadoutColumns); ++columns) {
         const QStringList flowed = flowLines(lines, columns);
-        if (flowed.isEmpty())
-            continue;
-        const QSize need = textSize(readable, flowed);
-        if (need.width() <= m_readoutRoom.width() && need.height() <= m_readoutRoom.height())
+        if (!flowed.isEmpty() && fitsIn(readable, flowed, m_readoutRoom))
             return true;
     }
     return false;
@@ -318,11 +324,10 @@ void StageBar::sizeReadoutColumn(const QStringList& lines)
         const int least = textSize(tight.font, tight.lines).width() + 1;
         QFont plain = m_challengeFont;
         plain.setPointSizeF(font().pointSizeF());
-        const QFontMetrics fm(plain);
         auto challengeFits = [&](int readout) {
             const int caption = free - readout;
             const int room = tall - m_title->heightForWidth(caption) - m_grid->verticalSpacing();
-            return fm.boundingRect(QRect(0, 0, caption, 1 << 20), Qt::TextWordWrap, m_challengeText).height() <= room;
+            return wrappedHeight(plain, caption, m_challengeText) <= room;
         };
         while (want - 8 >= least && !challengeFits(want))
             want -= 8;
@@ -351,9 +356,7 @@ void StageBar::fitChallenge()
     const QRect room = m_challenge->contentsRect();
     if (room.width() <= 0 || room.height() <= 0)
         return;
-    auto height = [&](const QFont& f, const QString& s) {
-        return QFontMetrics(f).boundingRect(QRect(0, 0, room.width(), 1 << 20), Qt::TextWordWrap, s).height();
-    };
+    auto height = [&](const QFont& f, const QString& s) { return wrappedHeight(f, room.width(), s); };
     QFont f = m_challengeFont;
     const qreal smallest = font().pointSizeF();
     while (f.pointSizeF() - 0.5 >= smallest && height(f, m_challengeText) > room.height())
