@@ -13,13 +13,16 @@
 #include "ui/world_painter.h"
 
 #include "lessons/lesson_loader.h"
+#include "sim/parameters.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QFontMetrics>
 #include <QLabel>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QSettings>
@@ -43,6 +46,7 @@ private slots:
     void autoArrowsAreReadable_data();
     void autoArrowsAreReadable();
     void stageSlidersEditTheWorld();
+    void stageSwitchesAndChoicesEditTheWorld();
     void normalLayoutGivesTheBoxHalfTheWindow_data();
     void normalLayoutGivesTheBoxHalfTheWindow();
     void stageTextIsNeverCut_data();
@@ -248,10 +252,74 @@ void GuiStageTest::stageSlidersEditTheWorld()
     undo->trigger();
     QCOMPARE(window.controller()->world().settings().walls.restitution, 0.8);
     QCOMPARE(e->value(), 0.8);
-    // A lesson without number controls shows none.
+    // A lesson whose one number has no slider range (the ball count) shows
+    // its switch alone.
     QVERIFY(window.openLesson(QStringLiteral("a-wall")));
-    QCOMPARE(sliders->count(), 0); // a tick box and the ball count: no sliders
+    QCOMPARE(sliders->count(), 1);
+    QVERIFY(!sliders->slider(QStringLiteral("ball_count")));
+    QVERIFY(sliders->toggle(QStringLiteral("centre_only")));
+    // A lesson without controls shows none, and no area for them.
+    QVERIFY(window.openLesson(QStringLiteral("balls-on-a-canvas")));
+    QCOMPARE(sliders->count(), 0);
     QVERIFY(!window.findChild<QWidget*>(QStringLiteral("stageSlidersScroll"))->isVisibleTo(&window));
+}
+
+// A lesson's switches and choices are on the stage too. Lesson 35's
+// challenge says "switch resting contacts off": on a 4:3 projector the
+// class sees a big button for it, a click flips the world's setting and the
+// label above says so, and one undo puts it back. Lesson 09's wall model is
+// a list: a key press picks the next model, and the world runs it.
+void GuiStageTest::stageSwitchesAndChoicesEditTheWorld()
+{
+    MainWindow window(QStringLiteral("stacks-that-stand"));
+    QVERIFY(presentAt(window, QSize(1024, 768)));
+    auto* controls = window.findChild<StageSliders*>(QStringLiteral("stageSliders"));
+    QVERIFY(controls);
+    auto* more = window.findChild<QAction*>(QStringLiteral("stageSlidersAction"));
+    QVERIFY(more);
+    if (more->isVisible())
+        more->setChecked(true); // the controls wait for the Sliders button when they do not fit
+    QPushButton* resting = controls->toggle(QStringLiteral("resting"));
+    QVERIFY(resting);
+    QVERIFY(resting->isVisibleTo(&window));
+    auto* scroll = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
+    QVERIFY(scroll);
+    scroll->ensureWidgetVisible(resting);
+    QVERIFY(window.controller()->world().settings().collisions.resting);
+    QVERIFY(resting->isChecked());
+    QCOMPARE(resting->text(), QStringLiteral("Switch off"));
+    QTest::mouseClick(resting, Qt::LeftButton);
+    QVERIFY(!window.controller()->world().settings().collisions.resting);
+    QVERIFY(!resting->isChecked());
+    QCOMPARE(resting->text(), QStringLiteral("Switch on"));
+    auto* label = window.findChild<QLabel*>(QStringLiteral("stage_restingLabel"));
+    QVERIFY(label);
+    QVERIFY2(label->text().contains(QStringLiteral("<b>off</b>")), qPrintable(label->text()));
+    auto* undo = window.findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo && undo->isEnabled());
+    undo->trigger();
+    QVERIFY(window.controller()->world().settings().collisions.resting);
+    QVERIFY(resting->isChecked());
+    QVERIFY2(label->text().contains(QStringLiteral("<b>on</b>")), qPrintable(label->text()));
+
+    QVERIFY(window.openLesson(QStringLiteral("bounce-at-the-right-moment")));
+    QComboBox* model = controls->choice(QStringLiteral("wall_model"));
+    QVERIFY(model);
+    const sim::Parameter* row = sim::findControl("wall_model");
+    QVERIFY(row);
+    QCOMPARE(model->count(), static_cast<int>(row->choices().size()));
+    const int before = static_cast<int>(row->get(window.controller()->world().settings()));
+    QCOMPARE(model->currentIndex(), before);
+    const int next = before + 1 < model->count() ? before + 1 : before - 1;
+    QTest::keyClick(model, next > before ? Qt::Key_Down : Qt::Key_Up);
+    QCOMPARE(static_cast<int>(row->get(window.controller()->world().settings())), next);
+    auto* modelLabel = window.findChild<QLabel*>(QStringLiteral("stage_wall_modelLabel"));
+    QVERIFY(modelLabel);
+    QVERIFY2(modelLabel->text().contains(QStringLiteral("<b>%1</b>").arg(model->itemText(next))),
+             qPrintable(modelLabel->text()));
+    undo->trigger();
+    QCOMPARE(static_cast<int>(row->get(window.controller()->world().settings())), before);
+    QCOMPARE(model->currentIndex(), before);
 }
 
 void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow_data()

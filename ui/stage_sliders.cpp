@@ -7,8 +7,11 @@
 #include "lessons/lesson_controls.h"
 #include "sim/parameters.h"
 
+#include <QComboBox>
 #include <QGridLayout>
 #include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -45,47 +48,89 @@ StageSliders::StageSliders(SimulationController* controller, QUndoStack* undoSta
 void StageSliders::setLessonControls(const QStringList& controls)
 {
     for (const Slider& s : m_sliders) {
-        delete s.control;
+        delete s.widget;
         delete s.label;
     }
     m_sliders.clear();
     QFont big = font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
-    QStringList seen; // a row named by two controls gets one slider
+    QStringList seen; // a row named by two controls gets one control
     for (const QString& control : controls) {
         for (const QString& row : lessons::controlRows().value(control)) {
             if (seen.contains(row))
                 continue;
             seen << row;
             const sim::Parameter* p = sim::findControl(row.toStdString());
-            if (!p || (p->type != sim::ParameterType::Number && p->type != sim::ParameterType::Integer) ||
-                !(p->sliderHi > p->sliderLo))
+            if (!p)
                 continue;
-            NumberControl::Spec spec;
-            spec.min = p->lo;
-            spec.max = p->hi;
-            spec.sliderMin = p->sliderLo;
-            spec.sliderMax = p->sliderHi;
-            spec.scale = p->scale == sim::SliderScale::Log ? NumberControl::Scale::Log : NumberControl::Scale::Linear;
-            spec.decimals = p->type == sim::ParameterType::Integer ? 0 : 3;
-            spec.significant = p->type == sim::ParameterType::Integer ? 0 : 3;
-            Slider s{p, row, new NumberControl(QStringLiteral("stage_%1").arg(row), spec, this), new QLabel(this)};
-            s.control->spinBox()->hide(); // the label above shows the value, large
-            s.control->slider()->setMinimumHeight(36);
-            s.control->setToolTip(qs(p->help));
-            s.control->slider()->setAccessibleName(qs(p->label));
+            const int mergeId = kMergeIdBase + static_cast<int>(p - sim::parameters().data());
+            Slider s{p, row};
+            switch (p->type) {
+            case sim::ParameterType::Number:
+            case sim::ParameterType::Integer:
+                if (!(p->sliderHi > p->sliderLo))
+                    continue; // no slider range: the Parameters panel's box only
+                s.slider = makeSlider(p, row);
+                s.widget = s.slider;
+                connect(s.slider, &NumberControl::valueEdited, this,
+                        [this, p, mergeId](double value, bool dragging) { apply(p, value, dragging ? mergeId : -1); });
+                break;
+            case sim::ParameterType::Boolean:
+                // A button as tall as a slider's handle row, easier to hit
+                // from the front of a room than a tick box.
+                s.toggle = new QPushButton(this);
+                s.toggle->setObjectName(QStringLiteral("stage_%1Toggle").arg(row));
+                s.toggle->setCheckable(true);
+                s.toggle->setFont(big);
+                s.toggle->setMinimumHeight(36);
+                s.widget = s.toggle;
+                connect(s.toggle, &QPushButton::clicked, this, [this, p](bool on) { apply(p, on ? 1.0 : 0.0, -1); });
+                break;
+            case sim::ParameterType::Choice:
+                s.list = new QComboBox(this);
+                s.list->setObjectName(QStringLiteral("stage_%1Choice").arg(row));
+                s.list->setFont(big);
+                s.list->setMinimumHeight(36);
+                for (std::string_view name : p->choices())
+                    s.list->addItem(qs(name));
+                // As narrow as the column: a long name ("semi-implicit-euler")
+                // is cut in the box, and shown whole in the label above it
+                // and in the open list.
+                s.list->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+                s.list->setMinimumContentsLength(6);
+                s.widget = s.list;
+                connect(s.list, &QComboBox::activated, this, [this, p](int index) { apply(p, index, -1); });
+                break;
+            }
+            s.widget->setToolTip(qs(p->help));
+            s.widget->setAccessibleName(qs(p->label));
+            s.label = new QLabel(this);
             s.label->setObjectName(QStringLiteral("stage_%1Label").arg(row));
             s.label->setFont(big);
             s.label->setWordWrap(true);
-            const int mergeId = kMergeIdBase + static_cast<int>(p - sim::parameters().data());
-            connect(s.control, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
-            connect(s.control, &NumberControl::valueEdited, this,
-                    [this, p, mergeId](double value, bool dragging) { apply(p, value, dragging ? mergeId : -1); });
             m_sliders.append(s);
         }
     }
     arrange();
     refresh();
+}
+
+NumberControl* StageSliders::makeSlider(const sim::Parameter* p, const QString& row)
+{
+    NumberControl::Spec spec;
+    spec.min = p->lo;
+    spec.max = p->hi;
+    spec.sliderMin = p->sliderLo;
+    spec.sliderMax = p->sliderHi;
+    spec.scale = p->scale == sim::SliderScale::Log ? NumberControl::Scale::Log : NumberControl::Scale::Linear;
+    spec.decimals = p->type == sim::ParameterType::Integer ? 0 : 3;
+    spec.significant = p->type == sim::ParameterType::Integer ? 0 : 3;
+    auto* slider = new NumberControl(QStringLiteral("stage_%1").arg(row), spec, this);
+    slider->spinBox()->hide(); // the label above shows the value, large
+    slider->slider()->setMinimumHeight(36);
+    slider->slider()->setAccessibleName(qs(p->label));
+    connect(slider, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
+    return slider;
 }
 
 void StageSliders::setColumns(int columns)
@@ -100,15 +145,28 @@ void StageSliders::arrange()
         delete m_grid->takeAt(0); // the layout item only; the widgets stay
     for (int k = 0; k < m_grid->rowCount(); ++k)
         m_grid->setRowStretch(k, 0);
-    for (qsizetype i = 0; i < m_sliders.size(); ++i) {
-        const int row = static_cast<int>(i / m_columns) * 2, column = static_cast<int>(i % m_columns);
-        m_grid->addWidget(m_sliders[i].label, row, column);
-        m_grid->addWidget(m_sliders[i].control, row + 1, column);
+    // Sliders go side by side; in a bar of one or two columns a button or a
+    // list takes a row of its own, so its words are not squeezed into half
+    // a narrow column.
+    int row = 0, column = 0;
+    for (const Slider& s : m_sliders) {
+        const bool wide = !s.slider && m_columns <= 2;
+        if (wide && column > 0) {
+            row += 2;
+            column = 0;
+        }
+        const int span = wide ? m_columns : 1;
+        m_grid->addWidget(s.label, row, column, 1, span);
+        m_grid->addWidget(s.widget, row + 1, column, 1, span);
+        column += span;
+        if (column >= m_columns) {
+            row += 2;
+            column = 0;
+        }
     }
-    // Room to spare goes under the last slider, so the sliders stay together
-    // at the top of a tall area.
-    const int rows = static_cast<int>((m_sliders.size() + m_columns - 1) / m_columns) * 2;
-    m_grid->setRowStretch(rows, 1);
+    // Room to spare goes under the last control, so the controls stay
+    // together at the top of a tall area.
+    m_grid->setRowStretch(column > 0 ? row + 2 : row, 1);
 }
 
 void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)
@@ -128,13 +186,25 @@ void StageSliders::refresh()
     const sim::WorldSettings& settings = m_controller->world().settings();
     for (const Slider& s : m_sliders) {
         const double value = s.parameter->get(settings);
-        if (!s.control->isSliderDown())
-            s.control->setValue(value);
-        const QString unit = s.parameter->unit.empty() ? QString() : QStringLiteral(" ") + qs(s.parameter->unit);
+        QString shown, unit;
+        if (s.slider) {
+            if (!s.slider->isSliderDown())
+                s.slider->setValue(value);
+            unit = s.parameter->unit.empty() ? QString() : QStringLiteral(" ") + qs(s.parameter->unit);
+            shown = QString::number(value, 'g', 4);
+        } else if (s.toggle) {
+            const QSignalBlocker block(s.toggle);
+            s.toggle->setChecked(value != 0.0);
+            shown = value != 0.0 ? tr("on") : tr("off");
+            // The button says what a click does.
+            s.toggle->setText(value != 0.0 ? tr("Switch off") : tr("Switch on"));
+        } else if (s.list) {
+            const QSignalBlocker block(s.list);
+            s.list->setCurrentIndex(static_cast<int>(value));
+            shown = s.list->currentText();
+        }
         s.label->setText(QStringLiteral("%1: <b>%2</b>%3")
-                             .arg(qs(s.parameter->label).toHtmlEscaped())
-                             .arg(QString::number(value, 'g', 4))
-                             .arg(unit.toHtmlEscaped()));
+                             .arg(qs(s.parameter->label).toHtmlEscaped(), shown.toHtmlEscaped(), unit.toHtmlEscaped()));
     }
 }
 
@@ -142,7 +212,23 @@ NumberControl* StageSliders::slider(const QString& row) const
 {
     for (const Slider& s : m_sliders)
         if (s.row == row)
-            return s.control;
+            return s.slider;
+    return nullptr;
+}
+
+QPushButton* StageSliders::toggle(const QString& row) const
+{
+    for (const Slider& s : m_sliders)
+        if (s.row == row)
+            return s.toggle;
+    return nullptr;
+}
+
+QComboBox* StageSliders::choice(const QString& row) const
+{
+    for (const Slider& s : m_sliders)
+        if (s.row == row)
+            return s.list;
     return nullptr;
 }
 

@@ -1,17 +1,22 @@
 #pragma once
-// The lesson's own controls on the stage view: one big slider per number of
-// the lesson's `controls`, its label and value above it in large text, so a
-// teacher can change gravity or restitution in front of the class without
-// leaving the stage. Switches and choices stay in the Parameters panel. An
-// edit goes through the same path as the panel's: a copy of the settings,
-// one row changed, pushed whole to the controller, and one undo step per drag.
+// The lesson's own controls on the stage view, so a teacher can change
+// gravity or restitution, or flip a lesson's switch, in front of the class
+// without leaving the stage: one big slider per number of the lesson's
+// `controls`, one big On/Off button per switch (a challenge such as "switch
+// resting contacts off" is done right there), and one list per choice (the
+// wall model, the integrator), each with its label and value above it in
+// large text. An edit goes through the same path as the panel's: a copy of
+// the settings, one row changed, pushed whole to the controller, and one
+// undo step per drag or click.
 
 #include <QList>
 #include <QStringList>
 #include <QWidget>
 
+class QComboBox;
 class QGridLayout;
 class QLabel;
+class QPushButton;
 class QUndoStack;
 
 namespace forcelab {
@@ -26,26 +31,37 @@ public:
     /// `controller` and `undoStack` are not owned and must outlive the sliders.
     StageSliders(SimulationController* controller, QUndoStack* undoStack, QWidget* parent = nullptr);
 
-    /// One slider per number row of the lesson's `controls` (in their order).
+    /// One control per row of the lesson's `controls` (in their order): a
+    /// slider for a number, a button for a switch, a list for a choice.
     void setLessonControls(const QStringList& controls);
-    /// Sliders side by side (2 in a column bar, all of them in a row bar).
+    /// Controls side by side (2 in a column bar, all of them in a row bar).
     void setColumns(int columns);
-    /// Sliders shown (the stage bar hides their area when there are none).
+    /// Controls shown (the stage bar hides their area when there are none).
     int count() const { return static_cast<int>(m_sliders.size()); }
-    /// The slider of a parameter row ("gravity_y"), or null.
+    /// The slider of a number row ("gravity_y"), or null.
     NumberControl* slider(const QString& row) const;
+    /// The On/Off button of a switch row ("resting"), or null.
+    QPushButton* toggle(const QString& row) const;
+    /// The list of a choice row ("wall_model"), or null.
+    QComboBox* choice(const QString& row) const;
 
 public slots:
     /// Shows the world's values (after an edit, an undo, a reset).
     void refresh();
 
 private:
+    // One control: exactly one of slider, toggle and list is set, by the
+    // row's type; `widget` is that one.
     struct Slider {
         const sim::Parameter* parameter = nullptr;
         QString row;
-        NumberControl* control = nullptr;
+        QWidget* widget = nullptr;
         QLabel* label = nullptr;
+        NumberControl* slider = nullptr;
+        QPushButton* toggle = nullptr;
+        QComboBox* list = nullptr;
     };
+    NumberControl* makeSlider(const sim::Parameter* p, const QString& row);
 
     void apply(const sim::Parameter* parameter, double value, int mergeId);
 
