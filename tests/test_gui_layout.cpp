@@ -1,6 +1,7 @@
 // Layout that holds: at 1280x720 and 1024x768, with every parameter shown,
 // no label of the Parameters panel, the Inspector or the stage bar is cut,
-// and every number field shows its whole text with its unit. ctest runs this
+// every number field shows its whole text with its unit, and every tab of
+// the docks shows its whole name. ctest runs this
 // twice: as is, and with QT_SCALE_FACTOR=2 (test_gui_layout_scale2), where
 // the same window sizes are logical pixels of a screen twice as dense.
 #include "ui/main_window.h"
@@ -12,7 +13,9 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSettings>
+#include <QStyle>
 #include <QStandardPaths>
+#include <QTabBar>
 #include <QTest>
 
 using namespace forcelab;
@@ -51,6 +54,26 @@ QStringList cutTexts(QWidget* root)
         if (need > edit->contentsRect().width())
             cut << QStringLiteral("field %1 \"%2\": %3 px in %4").arg(spin->objectName(), edit->text()).arg(need)
                        .arg(edit->contentsRect().width());
+    }
+    return cut;
+}
+
+// The dock tabs under `root` whose name does not fit its tab ("Plots" and
+// "Predict" both squeezed to "P…" tell a student nothing).
+QStringList cutTabs(QWidget* root)
+{
+    QStringList cut;
+    for (QTabBar* bar : root->findChildren<QTabBar*>()) {
+        if (!bar->isVisibleTo(root))
+            continue;
+        for (int i = 0; i < bar->count(); ++i) {
+            // The name and the style's padding around it (below that the
+            // style elides the name).
+            const int need = bar->fontMetrics().horizontalAdvance(bar->tabText(i)) +
+                             bar->style()->pixelMetric(QStyle::PM_TabBarTabHSpace, nullptr, bar);
+            if (need > bar->tabRect(i).width())
+                cut << QStringLiteral("tab \"%1\": %2 px in %3").arg(bar->tabText(i)).arg(need).arg(bar->tabRect(i).width());
+        }
     }
     return cut;
 }
@@ -101,6 +124,8 @@ void GuiLayoutTest::nothingIsCut()
         const QStringList cut = cutTexts(dock);
         QVERIFY2(cut.isEmpty(), qPrintable(dock->objectName() + QStringLiteral(": ") + cut.join(QStringLiteral("; "))));
     }
+    const QStringList tabs = cutTabs(&window);
+    QVERIFY2(tabs.isEmpty(), qPrintable(tabs.join(QStringLiteral("; "))));
 }
 
 QTEST_MAIN(GuiLayoutTest)

@@ -47,6 +47,7 @@
 #include <QStatusBar>
 #include <QVBoxLayout>
 #include <QStyle>
+#include <QTabBar>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
@@ -62,6 +63,29 @@ const QString kStateKey = QStringLiteral("mainWindow/layout2"); // the docks sin
 const QString kLastLessonKey = QStringLiteral("lesson/last");
 const QString kDirectoryKey = QStringLiteral("lesson/directory");
 const QString kThemeKey = QStringLiteral("view/projectorTheme");
+
+// The tabs of docks stacked in one place keep their whole names and scroll
+// when the column is too narrow for all of them. Qt's own tab bars for docks
+// shorten every name instead: at 1024x768 the right column's six tabs read
+// "Ins…", "P…", "P…", "Stop…", "Force …", "C…", and nobody can tell Plots
+// from Predict. The main window makes those bars itself, when docks are
+// stacked (at start, on a saved layout, when the user drags one), so each
+// is set up here when it is first polished.
+class ReadableDockTabs : public QObject {
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::ChildPolished)
+            if (auto* bar = qobject_cast<QTabBar*>(static_cast<QChildEvent*>(event)->child())) {
+                bar->setElideMode(Qt::ElideNone);
+                bar->setUsesScrollButtons(true);
+            }
+        return QObject::eventFilter(watched, event);
+    }
+};
 
 // A red dot: the usual sign for recording.
 QIcon recordIcon()
@@ -117,6 +141,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
     createMenus();
     createToolBars();
+    installEventFilter(new ReadableDockTabs(this));
     createDocks();
     // The lesson's sliders on the stage share the Parameters panel's undo stack.
     m_stageSliders = new StageSliders(m_controller, m_parameters->undoStack(), m_stageBar);
