@@ -1,6 +1,7 @@
 // forcelab: the workbench. `forcelab [LESSON]` opens a lesson file or a
 // built-in lesson id; without one it opens the last lesson or the showcase.
 
+#include "lessons/lesson_loader.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/render_bench.h"
@@ -87,6 +88,17 @@ int main(int argc, char* argv[])
     }
 
     const QStringList lessons = parser.positionalArguments();
+    // A picture is taken with nobody at the screen: a lesson that does not
+    // load is a line on stderr and exit code 2, not a dialog that waits for
+    // a click for ever.
+    if (parser.isSet(screenshot) && !lessons.isEmpty()) {
+        const forcelab::LoadResult check = forcelab::LessonLoader::load(lessons.first());
+        if (!check.ok()) {
+            for (const QString& error : check.errors())
+                std::fprintf(stderr, "forcelab: %s\n", qPrintable(error));
+            return 2;
+        }
+    }
     forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
     std::optional<QSize> requested; // --size
     if (parser.isSet(screenshot)) {

@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QFile>
 #include <QProcessEnvironment>
+#include <QRegularExpression>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -265,6 +266,14 @@ void TestCli::workbenchHelpNeedsNoDisplay()
     QVERIFY(png.open(QIODevice::ReadOnly));
     const QByteArray bytes = png.readAll();
     QVERIFY(bytes.startsWith("\x89PNG") && bytes.size() > 10000); // a real picture of the window
+    // A lesson that does not load: one line naming it and exit code 2, not a
+    // dialog waiting for a click (the run used to hang here).
+    const QString missing = m_dir.filePath("no-such-lesson.json");
+    const CliResult bad = run({"--screenshot", m_dir.filePath("bad.png"), "--after", "0.2", missing});
+    QCOMPARE(bad.exitCode, 2);
+    const QStringList said = bad.err.split(QLatin1Char('\n')).filter(QRegularExpression(QStringLiteral("^forcelab: ")));
+    QVERIFY2(said.size() == 1 && said.first().contains(QStringLiteral("no-such-lesson.json")), qPrintable(bad.err));
+    QVERIFY(!QFile::exists(m_dir.filePath("bad.png")));
 }
 
 void TestCli::stepsZeroPrintsInitialState()
