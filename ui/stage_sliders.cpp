@@ -47,11 +47,11 @@ StageSliders::StageSliders(SimulationController* controller, QUndoStack* undoSta
 
 void StageSliders::setLessonControls(const QStringList& controls)
 {
-    for (const Slider& s : m_sliders) {
+    for (const Control& s : m_controls) {
         delete s.widget;
         delete s.label;
     }
-    m_sliders.clear();
+    m_controls.clear();
     QFont big = font();
     big.setPointSizeF(big.pointSizeF() * 1.3);
     QStringList seen; // a row named by two controls gets one control
@@ -64,7 +64,7 @@ void StageSliders::setLessonControls(const QStringList& controls)
             if (!p)
                 continue;
             const int mergeId = kMergeIdBase + static_cast<int>(p - sim::parameters().data());
-            Slider s{p, row};
+            Control s{p, row};
             switch (p->type) {
             case sim::ParameterType::Number:
             case sim::ParameterType::Integer:
@@ -102,13 +102,18 @@ void StageSliders::setLessonControls(const QStringList& controls)
                 connect(s.list, &QComboBox::activated, this, [this, p](int index) { apply(p, index, -1); });
                 break;
             }
+            // A button or a list is as wide as its column gives, whatever its
+            // text asks: in a narrow column beside the box the controls never
+            // push the column wider than the screen has room for.
+            if (!s.slider)
+                s.widget->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
             s.widget->setToolTip(qs(p->help));
             s.widget->setAccessibleName(qs(p->label));
             s.label = new QLabel(this);
             s.label->setObjectName(QStringLiteral("stage_%1Label").arg(row));
             s.label->setFont(big);
             s.label->setWordWrap(true);
-            m_sliders.append(s);
+            m_controls.append(s);
         }
     }
     arrange();
@@ -149,7 +154,7 @@ void StageSliders::arrange()
     // list takes a row of its own, so its words are not squeezed into half
     // a narrow column.
     int row = 0, column = 0;
-    for (const Slider& s : m_sliders) {
+    for (const Control& s : m_controls) {
         const bool wide = !s.slider && m_columns <= 2;
         if (wide && column > 0) {
             row += 2;
@@ -184,7 +189,7 @@ void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)
 void StageSliders::refresh()
 {
     const sim::WorldSettings& settings = m_controller->world().settings();
-    for (const Slider& s : m_sliders) {
+    for (const Control& s : m_controls) {
         const double value = s.parameter->get(settings);
         QString shown, unit;
         if (s.slider) {
@@ -208,28 +213,30 @@ void StageSliders::refresh()
     }
 }
 
+const StageSliders::Control* StageSliders::find(const QString& row) const
+{
+    for (const Control& s : m_controls)
+        if (s.row == row)
+            return &s;
+    return nullptr;
+}
+
 NumberControl* StageSliders::slider(const QString& row) const
 {
-    for (const Slider& s : m_sliders)
-        if (s.row == row)
-            return s.slider;
-    return nullptr;
+    const Control* s = find(row);
+    return s ? s->slider : nullptr;
 }
 
 QPushButton* StageSliders::toggle(const QString& row) const
 {
-    for (const Slider& s : m_sliders)
-        if (s.row == row)
-            return s.toggle;
-    return nullptr;
+    const Control* s = find(row);
+    return s ? s->toggle : nullptr;
 }
 
 QComboBox* StageSliders::choice(const QString& row) const
 {
-    for (const Slider& s : m_sliders)
-        if (s.row == row)
-            return s.list;
-    return nullptr;
+    const Control* s = find(row);
+    return s ? s->list : nullptr;
 }
 
 } // namespace forcelab

@@ -37,7 +37,7 @@ public:
     /// Controls side by side (2 in a column bar, all of them in a row bar).
     void setColumns(int columns);
     /// Controls shown (the stage bar hides their area when there are none).
-    int count() const { return static_cast<int>(m_sliders.size()); }
+    int count() const { return static_cast<int>(m_controls.size()); }
     /// The slider of a number row ("gravity_y"), or null.
     NumberControl* slider(const QString& row) const;
     /// The On/Off button of a switch row ("resting"), or null.
@@ -52,7 +52,7 @@ public slots:
 private:
     // One control: exactly one of slider, toggle and list is set, by the
     // row's type; `widget` is that one.
-    struct Slider {
+    struct Control {
         const sim::Parameter* parameter = nullptr;
         QString row;
         QWidget* widget = nullptr;
@@ -62,13 +62,14 @@ private:
         QComboBox* list = nullptr;
     };
     NumberControl* makeSlider(const sim::Parameter* p, const QString& row);
+    const Control* find(const QString& row) const; // the control of a row, or null
 
     void apply(const sim::Parameter* parameter, double value, int mergeId);
 
     SimulationController* m_controller; // not owned
     QUndoStack* m_undoStack;             // not owned
     QGridLayout* m_grid = nullptr;
-    QList<Slider> m_sliders;
+    QList<Control> m_controls;
     int m_dragSession = 0;
     int m_columns = 2;
     void arrange();
