@@ -48,7 +48,7 @@ StageSliders::StageSliders(SimulationController* controller, QUndoStack* undoSta
 void StageSliders::setLessonControls(const QStringList& controls)
 {
     for (const Control& s : m_controls) {
-        delete s.widget;
+        delete s.widget();
         delete s.label;
     }
     m_controls.clear();
@@ -71,7 +71,6 @@ void StageSliders::setLessonControls(const QStringList& controls)
                 if (!(p->sliderHi > p->sliderLo))
                     continue; // no slider range: the Parameters panel's box only
                 s.slider = makeSlider(p, row);
-                s.widget = s.slider;
                 connect(s.slider, &NumberControl::valueEdited, this,
                         [this, p, mergeId](double value, bool dragging) { apply(p, value, dragging ? mergeId : -1); });
                 break;
@@ -83,7 +82,6 @@ void StageSliders::setLessonControls(const QStringList& controls)
                 s.toggle->setCheckable(true);
                 s.toggle->setFont(big);
                 s.toggle->setMinimumHeight(36);
-                s.widget = s.toggle;
                 connect(s.toggle, &QPushButton::clicked, this, [this, p](bool on) { apply(p, on ? 1.0 : 0.0, -1); });
                 break;
             case sim::ParameterType::Choice:
@@ -98,7 +96,6 @@ void StageSliders::setLessonControls(const QStringList& controls)
                 // and in the open list.
                 s.list->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
                 s.list->setMinimumContentsLength(6);
-                s.widget = s.list;
                 connect(s.list, &QComboBox::activated, this, [this, p](int index) { apply(p, index, -1); });
                 break;
             }
@@ -106,9 +103,9 @@ void StageSliders::setLessonControls(const QStringList& controls)
             // text asks: in a narrow column beside the box the controls never
             // push the column wider than the screen has room for.
             if (!s.slider)
-                s.widget->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-            s.widget->setToolTip(qs(p->help));
-            s.widget->setAccessibleName(qs(p->label));
+                s.widget()->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            s.widget()->setToolTip(qs(p->help));
+            s.widget()->setAccessibleName(qs(p->label));
             s.label = new QLabel(this);
             s.label->setObjectName(QStringLiteral("stage_%1Label").arg(row));
             s.label->setFont(big);
@@ -118,6 +115,15 @@ void StageSliders::setLessonControls(const QStringList& controls)
     }
     arrange();
     refresh();
+}
+
+QWidget* StageSliders::Control::widget() const
+{
+    if (slider)
+        return slider;
+    if (toggle)
+        return toggle;
+    return list;
 }
 
 NumberControl* StageSliders::makeSlider(const sim::Parameter* p, const QString& row)
@@ -162,7 +168,7 @@ void StageSliders::arrange()
         }
         const int span = wide ? m_columns : 1;
         m_grid->addWidget(s.label, row, column, 1, span);
-        m_grid->addWidget(s.widget, row + 1, column, 1, span);
+        m_grid->addWidget(s.widget(), row + 1, column, 1, span);
         column += span;
         if (column >= m_columns) {
             row += 2;

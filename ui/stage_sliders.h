@@ -51,15 +51,15 @@ public slots:
 
 private:
     // One control: exactly one of slider, toggle and list is set, by the
-    // row's type; `widget` is that one.
+    // row's type; widget() is that one.
     struct Control {
         const sim::Parameter* parameter = nullptr;
         QString row;
-        QWidget* widget = nullptr;
         QLabel* label = nullptr;
         NumberControl* slider = nullptr;
         QPushButton* toggle = nullptr;
         QComboBox* list = nullptr;
+        QWidget* widget() const;
     };
     NumberControl* makeSlider(const sim::Parameter* p, const QString& row);
     const Control* find(const QString& row) const; // the control of a row, or null
