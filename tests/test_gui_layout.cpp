@@ -4,6 +4,7 @@
 // the docks shows its whole name. ctest runs this
 // twice: as is, and with QT_SCALE_FACTOR=2 (test_gui_layout_scale2), where
 // the same window sizes are logical pixels of a screen twice as dense.
+#include "gui_settle.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 
@@ -120,7 +121,7 @@ void GuiLayoutTest::nothingIsCut()
             continue; // closed at first
         dock->show();
         dock->raise();
-        QTest::qWait(10);
+        QVERIFY2(test::waitForSettledLayout(&window), qPrintable(dock->objectName()));
         const QStringList cut = cutTexts(dock);
         QVERIFY2(cut.isEmpty(), qPrintable(dock->objectName() + QStringLiteral(": ") + cut.join(QStringLiteral("; "))));
     }

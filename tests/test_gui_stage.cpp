@@ -4,6 +4,7 @@
 // Escape leaves it and gives back the docks. In the normal layout the
 // readouts never cover the box, and opening a dock does not shrink it.
 
+#include "gui_settle.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
 #include "ui/number_control.h"
@@ -95,7 +96,7 @@ void GuiStageTest::stageFillsTheScreen()
     MainWindow window(QStringLiteral("gravity"));
     QVERIFY(presentAt(window, size));
     QAction* stage = window.findChild<QAction*>(QStringLiteral("presentationAction"));
-    QTest::qWait(50);
+    QVERIFY(test::waitForSettledLayout(&window));
 
     const double windowArea = double(size.width()) * size.height();
     Canvas* canvas = window.canvas();
@@ -342,7 +343,7 @@ void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow()
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QTRY_COMPARE(window.size(), QSize(1280, 720));
-    QTest::qWait(50);
+    QVERIFY(test::waitForSettledLayout(&window));
     const QRectF box = window.canvas()->viewTransform().boxRect();
     const double share = box.width() * box.height() / (1280.0 * 720.0);
     qInfo("%s: the box takes %.1f%% of 1280x720 (%.0f x %.0f px)", qPrintable(lesson), 100 * share, box.width(),
@@ -382,7 +383,9 @@ void GuiStageTest::stageTextIsNeverCut()
     } smallestInRow, smallestInColumn;
     for (const QString& file : LessonLoader::builtInFiles()) {
         QVERIFY2(window.openLesson(file), qPrintable(file));
-        QTest::qWait(30); // the bar lays out and fits its text after the lesson's first frame
+        // The bar lays out and fits its text in answer to the events the new
+        // lesson posts: read it once they are all served.
+        QVERIFY2(test::waitForSettledLayout(&window), qPrintable(file));
         const QString name = QFileInfo(file).baseName();
         if (challenge->isVisible()) {
             const QRect room = challenge->contentsRect();
@@ -499,7 +502,7 @@ void GuiStageTest::rowReadoutUsesTextColumns()
     auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
     QVERIFY(readout);
     QTRY_VERIFY(readout->isVisible() && readout->text().contains(QStringLiteral("momentum")));
-    QTest::qWait(50); // the bar fits its text once the grid has laid out
+    QVERIFY(test::waitForSettledLayout(&window)); // the bar fits its text once the grid has laid out
     auto* bar = window.findChild<StageBar*>(QStringLiteral("stageBar"));
     QVERIFY(bar && !bar->isVertical());
     const QStringList shown = readout->text().split(QLatin1Char('\n'));
@@ -544,7 +547,7 @@ void GuiStageTest::slidersButtonShowsARowBarsSliders()
     QVERIFY(button);
     QTRY_VERIFY(button->isVisible());
     QVERIFY(!area->isVisible());
-    QTest::qWait(50); // the stage's layout settles
+    QVERIFY(test::waitForSettledLayout(&window));
     const double windowArea = 1024.0 * 768.0;
     auto boxShare = [&] {
         const QRectF box = window.canvas()->viewTransform().boxRect();
@@ -554,7 +557,7 @@ void GuiStageTest::slidersButtonShowsARowBarsSliders()
 
     QTest::mouseClick(button, Qt::LeftButton);
     QTRY_VERIFY(area->isVisible());
-    QTest::qWait(50);
+    QVERIFY(test::waitForSettledLayout(&window));
     QVERIFY(action->isChecked());
     QVERIFY2(area->widget()->height() <= area->viewport()->height(),
              qPrintable(QStringLiteral("%1 of %2").arg(area->widget()->height()).arg(area->viewport()->height())));

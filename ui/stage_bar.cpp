@@ -6,7 +6,6 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QScrollArea>
-#include <QTimer>
 #include <QToolButton>
 
 #include <algorithm>
@@ -30,6 +29,10 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     m_challenge = new QLabel(this);
     m_challenge->setObjectName(QStringLiteral("stageChallenge"));
     m_challenge->setWordWrap(true);
+    // A lesson's words are never rich text here: Qt would load what an <img>
+    // names (lessons/lesson_markup.h keeps that to the lesson pane).
+    m_title->setTextFormat(Qt::PlainText);
+    m_challenge->setTextFormat(Qt::PlainText);
     QFont big = font();
     big.setPointSizeF(big.pointSizeF() * 1.6);
     big.setBold(true);
@@ -79,7 +82,7 @@ void StageBar::setCaption(const QString& title, const QString& challenge)
     m_challenge->setToolTip(QString());
     m_challenge->setFont(m_challengeFont);
     m_challenge->setVisible(!challenge.isEmpty());
-    QTimer::singleShot(0, this, &StageBar::fitChallenge); // once the grid has laid the new text out
+    scheduleFit(); // once the grid has laid the new text out
 }
 
 void StageBar::setReadout(const QString& text)
@@ -380,10 +383,8 @@ void StageBar::fitChallenge()
 bool StageBar::eventFilter(QObject* watched, QEvent* event)
 {
     if (event->type() == QEvent::Resize) {
-        if (watched == m_readout)
-            QTimer::singleShot(0, this, &StageBar::fitReadout);
-        else if (watched == m_challenge)
-            QTimer::singleShot(0, this, &StageBar::fitChallenge);
+        if (watched == m_readout || watched == m_challenge)
+            scheduleFit();
     }
     return QWidget::eventFilter(watched, event);
 }
@@ -394,8 +395,25 @@ void StageBar::resizeEvent(QResizeEvent* event)
     fitReadout();
     // In a row the readout's and the challenge's cells are known once the
     // grid has laid out.
-    QTimer::singleShot(0, this, &StageBar::fitReadout);
-    QTimer::singleShot(0, this, &StageBar::fitChallenge);
+    scheduleFit();
+}
+
+// Every request for a fit made before the queued call runs is served by
+// that one call: the grid's layout requests and the labels' resizes come in
+// bursts, and each fit needs the room they settle on, not the rooms between.
+void StageBar::scheduleFit()
+{
+    if (m_fitQueued)
+        return;
+    m_fitQueued = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_fitQueued = false;
+            fitReadout();
+            fitChallenge();
+        },
+        Qt::QueuedConnection);
 }
 
 void StageBar::setSliders(QWidget* sliders)
@@ -421,7 +439,7 @@ void StageBar::unfitChallenge()
 {
     m_challenge->setFont(m_challengeFont);
     m_challenge->setText(m_challengeText);
-    QTimer::singleShot(0, this, &StageBar::fitChallenge);
+    scheduleFit();
 }
 
 void StageBar::setSlidersShown(bool shown)
@@ -493,8 +511,7 @@ void StageBar::setVertical(bool vertical)
         // text asks (fitChallenge fits the text to that room).
         m_grid->setRowStretch(1, 1);
     }
-    QTimer::singleShot(0, this, &StageBar::fitReadout);
-    QTimer::singleShot(0, this, &StageBar::fitChallenge);
+    scheduleFit();
 }
 
 } // namespace forcelab

@@ -43,6 +43,9 @@ public:
     /// The challenge at its own size again, so that sizeHint() does not
     /// depend on how the last room fitted it; it is fitted again at once.
     void unfitChallenge();
+    /// Whether a fit of the readout or the challenge waits in the event
+    /// queue (the bar has not settled on its last room yet).
+    bool isFitPending() const { return m_fitQueued; }
 
 signals:
     /// The readout's room changed size: its text may want the other form.
@@ -53,6 +56,7 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    void scheduleFit();
     void fitReadout();
     void sizeReadoutColumn(const QStringList& lines);
     void fitChallenge();
@@ -83,6 +87,7 @@ private:
     QList<QToolButton*> m_buttons;
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;
+    bool m_fitQueued = false; // scheduleFit's call waits in the event queue
 };
 
 } // namespace forcelab
