@@ -11,9 +11,21 @@
 
 namespace forcelab::lessons {
 
+// An override's value is echoed with every problem it causes; a long one (a
+// formula of thousands of characters) only by its start and its length. The
+// problem's own message shows the part around the error where it has one.
+constexpr qsizetype kEchoedCharacters = 60;
+
 QString overrideSource(const Override& o)
 {
-    return QStringLiteral("--set ") + o.keyPath + QLatin1Char('=') + o.value;
+    QString value = o.value;
+    if (value.size() > kEchoedCharacters + 20) {
+        qsizetype cut = kEchoedCharacters;
+        if (value.at(cut).isLowSurrogate()) // not between the halves of one character
+            --cut;
+        value = value.left(cut) + QStringLiteral("… (%1 characters)").arg(o.value.size());
+    }
+    return QStringLiteral("--set ") + o.keyPath + QLatin1Char('=') + value;
 }
 
 std::optional<QJsonValue> overrideValue(const Override& o, QString* problem)

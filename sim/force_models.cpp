@@ -199,9 +199,15 @@ const ForceModelInfo kModels[] = {
      .switchOff = [](WorldSettings& s) { s.drag.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "drag depends on velocity"; },
      .velocityDependent = true,
-     .stiffness = [](const WorldSettings& s, double dragFactor, double&, double& damping) {
+     .stiffness = [](const WorldSettings& s, double dragFactor, double dragSpeed, double&, double& damping) {
+         // The ball that drag slows fastest. Quadratic drag a = −c |v| v,
+         // linearised along v, slows at the rate d|a|/d|v| = 2 c |v|: twice
+         // its rate at the speed itself, and the explicit step overshoots (turns
+         // the ball round) exactly when 2 c |v| h > 2.
          if (s.drag.law == DragLaw::Linear)
-             damping += s.drag.k * dragFactor; // the ball that drag slows fastest
+             damping += s.drag.k * dragFactor;
+         else
+             damping += 2.0 * s.drag.k * dragFactor * dragSpeed;
      },
      .steadyAtRest = true}, // nothing on a ball at rest
     {.name = "wind",
@@ -254,7 +260,7 @@ const ForceModelInfo kModels[] = {
      .potential = &springPotential,
      .switchOff = [](WorldSettings& s) { s.spring.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "the spring force depends on position"; },
-     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.spring.k; },
+     .stiffness = [](const WorldSettings& s, double, double, double& omega2, double&) { omega2 += s.spring.k; },
      .steadyAtRest = true},
     {.name = "homing",
      .on = [](const WorldSettings& s) { return s.homing.enabled; },
@@ -264,7 +270,9 @@ const ForceModelInfo kModels[] = {
      .potential = &homingPotential,
      .switchOff = [](WorldSettings& s) { s.homing.enabled = false; },
      .notConstant = [](const WorldSettings&) -> const char* { return "homing depends on position"; },
-     .stiffness = [](const WorldSettings& s, double, double& omega2, double&) { omega2 += s.homing.strength; },
+     .stiffness = [](const WorldSettings& s, double, double, double& omega2, double&) {
+         omega2 += s.homing.strength;
+     },
      .steadyAtRest = true},
     {.name = "between balls",
      .on = [](const WorldSettings& s) { return s.mutualGravity.enabled; },

@@ -50,8 +50,11 @@ struct ForceModelInfo {
     const char* (*notConstant)(const WorldSettings&) = nullptr;
     bool velocityDependent = false; ///< its acceleration depends on the velocity
     /// Adds its part to the stability test motion x'' = −ω² x − c x': ω² in
-    /// 1/s², c in 1/s (`dragFactor`: the largest per-ball drag factor).
-    void (*stiffness)(const WorldSettings&, double dragFactor, double& omega2, double& damping) = nullptr;
+    /// 1/s², c in 1/s. `dragFactor` and `dragSpeed` (px/s) are those of the
+    /// ball drag slows fastest: the largest per-ball factor for linear drag,
+    /// the largest factor × speed for quadratic drag (0 speed: not known).
+    void (*stiffness)(const WorldSettings&, double dragFactor, double dragSpeed, double& omega2,
+                      double& damping) = nullptr;
     /// On a ball at rest it depends on where the ball is alone (not on time,
     /// an input or other balls), so a resting ball may sleep while it is on
     /// (contact_solver.h, point 7).

@@ -8,9 +8,11 @@
 #include "names.h"
 #include "parameters.h"
 
+#include <cctype>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <numbers>
 
 namespace forcelab::sim {
 namespace {
@@ -20,16 +22,22 @@ constexpr double kDoublingSeconds = 10.0;
 
 struct LinearModel {
     double omega2 = 0.0; // 1/s², spring + homing stiffness per unit mass
-    double damping = 0.0; // 1/s, linear drag
+    double damping = 0.0; // 1/s, drag's rate (linear drag, or quadratic drag linearised at a speed)
     bool any() const { return omega2 > 0.0 || damping > 0.0; }
 };
 
-LinearModel linearModel(const WorldSettings& s, double dragFactor)
+// The ball that drag slows fastest.
+struct DragBall {
+    double factor = 1.0; // its drag scale factor (1 with scale none)
+    double speed = 0.0;  // px/s, what quadratic drag depends on; 0 when not known
+};
+
+LinearModel linearModel(const WorldSettings& s, const DragBall& drag)
 {
     LinearModel m;
     for (const ForceModelInfo& model : forceModels())
         if (model.on(s) && model.stiffness)
-            model.stiffness(s, dragFactor, m.omega2, m.damping);
+            model.stiffness(s, drag.factor, drag.speed, m.omega2, m.damping);
     return m;
 }
 
@@ -96,6 +104,10 @@ bool blowsUp(IntegratorKind kind, const LinearModel& model, double h, double tol
         return true;
     if (rho <= 1.0 + 1e-12)
         return false;
+    // Drag alone only ever slows a ball: any growth is the step's, however
+    // slow (k·dt = 2.001 makes a ball 20 times faster in 60 s).
+    if (model.omega2 == 0.0)
+        return true;
     const double stepsPerSecond = 1.0 / h;
     return stepsPerSecond * std::log(rho) * kDoublingSeconds > std::log(2.0);
 }
@@ -132,88 +144,192 @@ std::string formatApart(double v, const std::string& other)
     return format(v);
 }
 
-} // namespace
-
-double linearGrowthPerStep(const WorldSettings& settings, double h, double dragFactor)
+// The largest sub-step at which `grows` is false, by bisection on a log
+// scale below h (where it is true).
+template <class Grows>
+double largestStepWithout(double h, Grows grows)
 {
-    return growth(settings.time.integrator, linearModel(settings, dragFactor), h, settings.time.tolerance).rho;
+    double lo = h * 1e-9, hi = h;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = std::sqrt(lo * hi);
+        (grows(mid) ? hi : lo) = mid;
+    }
+    return lo;
 }
 
-std::optional<std::string> stabilityProblem(const WorldSettings& s, double dragFactor)
+// The numbers that decide for drag, in brackets: k (or the ball's c) times
+// the sub-step h, which is dt only without sub-steps and per-frame steps;
+// for quadratic drag its linearised rate 2 c |v| times h, at the speed.
+std::string dragNumbers(const WorldSettings& s, const DragBall& drag, double damping, double h)
+{
+    const bool wholeStep = s.time.substeps == 1 && !s.time.perFrame;
+    const std::string step = wholeStep ? "dt" : "h";
+    const std::string ofStep = wholeStep ? "" : ", h the sub-step";
+    const bool scaled = std::abs(drag.factor - 1.0) > 1e-12;
+    // The Euler methods' limit is 2: k·dt = 2.001 must not read "2".
+    const std::string product = formatApart(damping * h, "2");
+    // The ball drag slows fastest: the lightest (c = k m₁₀ / m) or, by
+    // radius, the smallest (c = k r₁₀ / r).
+    const bool byRadius = s.drag.scale == ForceScale::Radius;
+    if (s.drag.law == DragLaw::Linear) {
+        if (!scaled)
+            return " (k·" + step + " = " + product + ofStep + ")";
+        return " (c·" + step + " = " + product +
+               (byRadius ? " for the smallest ball, c = k × 10 px / r = " : " for the lightest ball, c = k × m₁₀ / m = ") +
+               format(damping) + "/s" + ofStep + ")";
+    }
+    char speed[40]; // whole px/s from 100 up: "10000 px/s", not "1e+04 px/s"
+    std::snprintf(speed, sizeof speed, drag.speed >= 100.0 && drag.speed < 1e12 ? "%.0f px/s" : "%.3g px/s",
+                  drag.speed);
+    if (!scaled)
+        return " (2·k·|v|·" + step + " = " + product + " for the fastest ball, at " + std::string(speed) + ofStep + ")";
+    return " (2·c·|v|·" + step + " = " + product + " for the ball drag slows most, at " + std::string(speed) +
+           (byRadius ? " with c = k × 10 px / r = " : " with c = k × m₁₀ / m = ") + format(s.drag.k * drag.factor) +
+           "/px" + ofStep + ")";
+}
+
+// The advice for a safe sub-step `lo`, in lower case: a dt, or with per-frame steps (which
+// ignore dt) a number of sub-steps of the frame.
+std::string lowerStep(const WorldSettings& s, double lo)
+{
+    const std::string safe = formatBelow(lo * s.time.substeps); // the dt of that sub-step
+    if (!s.time.perFrame)
+        return "lower dt below " + safe + " s";
+    // frame / n ≤ lo: n sub-steps of the frame do not grow.
+    const double substeps = std::ceil(kFrameSeconds / lo);
+    const Parameter* row = findParameter("time.substeps");
+    if (row && substeps <= row->hi)
+        return "raise substeps to " + std::to_string(static_cast<long long>(substeps)) + " or more";
+    return "switch per-frame steps off and lower dt below " + safe + " s";
+}
+
+// The advice at the start of a sentence.
+std::string capitalised(std::string text)
+{
+    if (!text.empty())
+        text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+    return text;
+}
+
+std::optional<std::string> problem(const WorldSettings& s, const DragBall& drag)
 {
     const IntegratorKind kind = s.time.integrator;
     if (std::isinf(integratorInfo(kind).springLimit)) // adapts its own step, or has no such model
         return std::nullopt;
-    const LinearModel model = linearModel(s, dragFactor);
+    const LinearModel model = linearModel(s, drag);
     if (!model.any())
         return std::nullopt;
     const double h = (s.time.perFrame ? kFrameSeconds : s.time.dt) / s.time.substeps;
     if (!blowsUp(kind, model, h, s.time.tolerance))
         return std::nullopt;
 
-    // The largest sub-step at which the motion does not grow at all (not the
-    // one where it merely grows slowly), by bisection on a log scale: advice
-    // below it is safe however long the run.
-    const auto growsAt = [&](double step) {
-        const Growth g = growth(kind, model, step, s.time.tolerance);
-        return !(g.rho <= 1.0 + 1e-12) || g.linear;
-    };
-    double lo = h * 1e-9, hi = h;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = std::sqrt(lo * hi);
-        (growsAt(mid) ? hi : lo) = mid;
-    }
     const Growth g = growth(kind, model, h, s.time.tolerance);
-    const double perSecond = std::exp(std::log(g.rho) / h);
-    const std::string safe = formatBelow(lo * s.time.substeps); // the dt of that sub-step
-
     std::string what = model.omega2 > 0.0 && model.damping > 0.0 ? "this spring with drag"
                        : model.omega2 > 0.0                      ? "this spring"
                                                                  : "this drag";
     // Per-frame steps ignore dt, so the message names the frame instead, and
     // the fix is more sub-steps per frame: dt would change nothing.
     std::string message = std::string(toString(kind)) + " is unstable for " + what +
-                          (s.time.perFrame ? " with per-frame steps of 1/60 s (dt is ignored)"
-                                           : " at dt = " + formatApart(s.time.dt, safe) + " s");
+                          (s.time.perFrame ? " with per-frame steps of 1/60 s (dt is ignored)" : "");
+    // The dt is written out once the safe advice is known (formatApart).
+    const std::size_t dtAt = message.size();
     if (model.omega2 > 0.0)
         message += " (ω = √k = " + format(std::sqrt(model.omega2)) + " rad/s)";
-    if (model.damping > 0.0) {
-        // The number that decides is k times the sub-step h, which is dt only
-        // without sub-steps and per-frame steps.
-        const bool wholeStep = s.time.substeps == 1 && !s.time.perFrame;
-        const std::string step = wholeStep ? "dt" : "h";
-        const std::string ofStep = wholeStep ? "" : ", h the sub-step";
-        if (std::abs(dragFactor - 1.0) <= 1e-12) {
-            message += " (k·" + step + " = " + format(model.damping * h) + ofStep + ")";
-        } else { // the ball drag slows fastest: the lightest (c = k m₁₀ / m) or, by radius, the smallest (c = k r₁₀ / r)
-            const bool byRadius = s.drag.scale == ForceScale::Radius;
-            message += " (c·" + step + " = " + format(model.damping * h) +
-                       (byRadius ? " for the smallest ball, c = k × 10 px / r = "
-                                 : " for the lightest ball, c = k × m₁₀ / m = ") +
-                       format(model.damping) + "/s" + ofStep + ")";
-        }
+    if (model.damping > 0.0)
+        message += dragNumbers(s, drag, model.damping, h);
+
+    // Explicit Euler on an undamped spring: the step's eigenvalues are
+    // 1 ± iωh, so the swing grows by √(1 + ω²h²) every step at every h. No
+    // dt stops it: say how fast it grows, and where it is slow enough to
+    // watch (doubling in more than kDoublingSeconds), which is what the
+    // check lets run.
+    if (kind == IntegratorKind::Euler && model.omega2 > 0.0 && model.damping == 0.0) {
+        const double lo = largestStepWithout(h, [&](double step) { return blowsUp(kind, model, step, s.time.tolerance); });
+        const double period = 2.0 * std::numbers::pi / std::sqrt(model.omega2); // s
+        const double perPeriod = std::exp(std::log(g.rho) * period / h);
+        const std::string grows = perPeriod > 1e6 ? std::string("more than a million times") : format(perPeriod) + " times";
+        if (!s.time.perFrame)
+            message.insert(dtAt, " at dt = " + format(s.time.dt) + " s");
+        message += ": explicit Euler gains energy on an undamped spring at every dt, and here the swing grows " +
+                   grows + " in every period of " + format(period) + " s. Pick semi-implicit-euler or verlet, "
+                   "which keep the swing's size; a smaller step only slows the growth (" +
+                   lowerStep(s, lo) + " and the swing takes more than " + format(kDoublingSeconds) +
+                   " s to double)";
+        return message;
     }
-    const std::string grows = g.linear && g.rho <= 1.0 + 1e-9
-                                  ? std::string("a little more every step, without end")
-                              : perSecond > 1e6 ? std::string("more than a million times every second")
-                                                : format(perSecond) + " times every second";
-    message += ": the motion grows " + grows + ". ";
-    if (!s.time.perFrame) {
-        message += "Lower dt below " + safe + " s";
-    } else {
-        // frame / n ≤ lo: n sub-steps of the frame do not grow.
-        const double substeps = std::ceil(kFrameSeconds / lo);
-        const Parameter* row = findParameter("time.substeps");
-        if (row && substeps <= row->hi)
-            message += "Raise substeps to " + std::to_string(static_cast<long long>(substeps)) + " or more";
+
+    // The largest sub-step at which the motion does not grow at all (not the
+    // one where it merely grows slowly): advice below it is safe however long
+    // the run.
+    const double lo = largestStepWithout(h, [&](double step) {
+        const Growth at = growth(kind, model, step, s.time.tolerance);
+        return !(at.rho <= 1.0 + 1e-12) || at.linear;
+    });
+    const std::string safe = formatBelow(lo * s.time.substeps);
+    if (!s.time.perFrame)
+        message.insert(dtAt, " at dt = " + formatApart(s.time.dt, safe) + " s");
+    if (model.omega2 == 0.0) {
+        // Drag alone: the step overshoots. Quadratic drag's factor on the
+        // speed is not the linearised one (an Euler step keeps 1 − c|v|h of
+        // it), so only the Euler steps are said to turn the ball round.
+        const bool eulerStep = kind == IntegratorKind::Euler || kind == IntegratorKind::SemiImplicitEuler;
+        if (s.drag.law == DragLaw::Linear)
+            message += ": one step turns the ball round or speeds it up instead of slowing it, which real drag never "
+                       "does. ";
+        else if (eulerStep) // v ← v (1 − c |v| h): turned round exactly when 2 c |v| h > 2
+            message += ": at this speed one step would turn the ball round instead of slowing it, which real drag "
+                       "never does. ";
         else
-            message += "Switch per-frame steps off and lower dt below " + safe + " s";
+            message += ": at this speed the step is too long for the drag, and the motion would grow instead of "
+                       "dying away, which real drag never does. ";
+    } else {
+        const double perSecond = std::exp(std::log(g.rho) / h);
+        const std::string grows = g.linear && g.rho <= 1.0 + 1e-9
+                                      ? std::string("a little more every step, without end")
+                                  : perSecond > 1e6 ? std::string("more than a million times every second")
+                                                    : format(perSecond) + " times every second";
+        message += ": the motion grows " + grows + ". ";
     }
+    message += capitalised(lowerStep(s, lo));
     if (kind == IntegratorKind::Euler && model.omega2 > 0.0)
         message += " or pick verlet";
     else if (model.damping > 0.0)
         message += " or lower the drag";
     return message;
+}
+
+} // namespace
+
+double linearGrowthPerStep(const WorldSettings& settings, double h, double dragFactor)
+{
+    return growth(settings.time.integrator, linearModel(settings, DragBall{dragFactor, 0.0}), h,
+                  settings.time.tolerance)
+        .rho;
+}
+
+std::optional<std::string> stabilityProblem(const WorldSettings& s, double dragFactor)
+{
+    return problem(s, DragBall{dragFactor, 0.0});
+}
+
+std::optional<std::string> stabilityProblem(const WorldSettings& s, const BallState& balls)
+{
+    DragBall drag;
+    if (s.drag.enabled && !balls.empty()) {
+        const VectorX factor = s.drag.scale == ForceScale::None ? VectorX::Ones(balls.size())
+                                                                : scaleFactors(s.drag.scale, balls);
+        if (s.drag.law == DragLaw::Linear) {
+            drag.factor = factor.maxCoeff();
+        } else {
+            // Quadratic drag slows fastest where c |v| is largest.
+            const VectorX rate = factor.cwiseProduct(balls.velocity.colwise().norm().transpose());
+            Eigen::Index i = 0;
+            rate.maxCoeff(&i);
+            drag.factor = factor[i];
+            drag.speed = balls.velocity.col(i).norm();
+        }
+    }
+    return problem(s, drag);
 }
 
 } // namespace forcelab::sim
