@@ -9,9 +9,12 @@
 
 namespace forcelab::sim {
 
-/// The balls at the start of the sub-step: the `exact` model needs both, the
-/// middle wall needs the positions to know each ball's side; otherwise they
-/// are not read.
+/// The balls at the start of the sub-step. Every model reads them to tell a
+/// ball lying still on a wall (it stays there) from one that fell onto it
+/// (it bounces); the `exact` model follows the path from them, the middle
+/// wall needs the positions to know each ball's side. The caller keeps them
+/// whenever a wall is on; matrices of another size than the state are taken
+/// as not kept and the resting check is skipped.
 struct StepStart {
     const Matrix2X& position; ///< px
     const Matrix2X& velocity; ///< px/s

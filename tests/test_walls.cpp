@@ -2,6 +2,7 @@
 
 #include "sim_test_util.h"
 
+#include "sim/integrator_info.h"
 #include "sim/names.h"
 
 #include "sim_check.h"
@@ -516,3 +517,169 @@ TEST_CASE("TestWalls::exactBouncesSettleAtTheClosedFormTime")
     VERIFY(bounces > 22);
 }
 
+
+namespace {
+
+// Every wall model the program offers.
+constexpr WallModel kAllWallModels[] = {WallModel::Clamp, WallModel::Mirror, WallModel::Exact, WallModel::Reverse};
+
+// Every integrator that takes steps of a fixed length (the adaptive ones
+// choose their own), from the integrator table so that a new one is tested too.
+std::vector<IntegratorKind> fixedStepIntegrators()
+{
+    std::vector<IntegratorKind> kinds;
+    for (const IntegratorInfo& info : integrators()) {
+        if (!info.adaptive)
+            kinds.push_back(info.kind);
+    }
+    return kinds;
+}
+
+} // namespace
+
+// Issue #31, item 3. A ball lying still on a wall, pulled against it by
+// gravity (980 px/s²), stays exactly where it is with no speed, for every wall
+// model, every fixed-step integrator, every restitution, on the floor (the
+// issue's case: r = 15 at y = 385 in a 600 × 400 box) and on the left wall
+// (gravity pointing left). Rest is not a bounce: no wall hits either.
+// Before the fix, with e = 1 and the floor: clamp and mirror with verlet or
+// rk4 climbed 78 px in 10 s; euler climbed with clamp; exact walls with the
+// Euler methods hopped for ever; reverse let the ball sink into the floor.
+TEST_CASE("TestWalls::restingBallStaysAtRest")
+{
+    struct Placement {
+        const char* wall;
+        Vec2 gravity; // px/s²
+        Vec2 at;      // px, touching the wall
+    };
+    const Placement placements[] = {{"floor", Vec2(0.0, kG), Vec2(300.0, 385.0)},
+                                    {"left wall", Vec2(-kG, 0.0), Vec2(15.0, 200.0)}};
+    for (const Placement& place : placements) {
+        for (WallModel model : kAllWallModels) {
+            for (IntegratorKind kind : fixedStepIntegrators()) {
+                for (double e : {1.0, 0.8, 0.0}) {
+                    SUBCASE(forcelab::test::format_row("%s %s %s e=%g", place.wall, toString(model).data(),
+                                                       toString(kind).data(), e)
+                                .c_str())
+                    {
+                        Scene s = dropScene(model, e, kind, 1.0 / 60);
+                        s.settings.gravity.g = place.gravity;
+                        s.balls = {ballAt(place.at.x(), place.at.y(), 0.0, 0.0, 15.0)};
+                        World w;
+                        VERIFY(!w.reset(s));
+                        double worstMove = 0, worstSpeed = 0; // px, px/s
+                        for (int k = 0; k < 3600; ++k) {      // 60 s
+                            w.step();
+                            worstMove = std::max(worstMove, (w.balls().position.col(0) - place.at).norm());
+                            worstSpeed = std::max(worstSpeed, w.balls().velocity.col(0).norm());
+                        }
+                        VERIFY2(worstMove == 0.0 && worstSpeed == 0.0,
+                                forcelab::test::format_row("moved up to %.6g px, speed up to %.6g px/s", worstMove,
+                                                           worstSpeed)
+                                    .c_str());
+                        REQUIRE_SAME(w.totals().wallHits, std::int64_t(0));
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Issue #31, item 4. The Euler methods with exact walls, e = 0.8, dropped
+// from H = 290 px: the real ball bounces ever lower and comes to rest at
+// t∞ = t0 (1 + e) / (1 − e) = 6.92 s (t0 = √(2H/g), the first fall). The
+// ball counts as settled from the first step after which it lies on the floor
+// (y = 390 px exactly) with no vertical speed at every later step; checked up
+// to 2 t∞. A first-order method misplaces every bounce by a share of a step
+// (its speed is the mean over the step, not the speed at the impact), and a
+// rebound slower than one step's kick g h already counts as rest, so the
+// settle time differs from t∞ by an amount proportional to h: within 40 h
+// (0.67 s at h = 1/60 s, 0.33 s at 1/120 s), and it must shrink as h does.
+// Not yet at h = 1/240 s: there semi-implicit Euler still hops for ever (the
+// kick of a step with a bounce is applied before the impact and reflected
+// with the fall, which feeds a hop faster than g h; issue #31 item 4 stays
+// open for that).
+// Before the fix semi-implicit Euler never settled: after 60 s it still hopped
+// 0.22 px at up to 1.8 px/s.
+TEST_CASE("TestWalls::eulerMethodsWithExactWallsSettle")
+{
+    for (IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Euler}) {
+        SUBCASE(toString(kind).data())
+        {
+            constexpr double e = 0.8;
+            double previousError = 1e9; // s
+            for (double dt : {1.0 / 60, 1.0 / 120}) {
+                World w;
+                VERIFY(!w.reset(dropScene(WallModel::Exact, e, kind, dt)));
+                const double H = apexHeight(w);
+                const double tRest = std::sqrt(2.0 * H / kG) * (1.0 + e) / (1.0 - e); // s
+                double settledAt = -1;                                                 // s, -1: not (yet) at rest
+                while (w.time() < 2.0 * tRest) {
+                    w.step();
+                    const bool atRest = w.balls().position(1, 0) == kFloor && w.balls().velocity(1, 0) == 0.0;
+                    if (!atRest)
+                        settledAt = -1;
+                    else if (settledAt < 0)
+                        settledAt = w.time();
+                }
+                const double error = std::abs(settledAt - tRest);
+                forcelab::test::report("%s dt = 1/%.0f: settled at %.4f s, closed form %.4f s, %lld bounces",
+                                       toString(kind).data(), 1.0 / dt, settledAt, tRest,
+                                       static_cast<long long>(w.totals().wallHits));
+                VERIFY2(settledAt >= 0, "still moving at 2 t∞");
+                VERIFY2(error <= 40.0 * dt, Text(Text::number(error)).c_str());
+                VERIFY2(error < previousError, Text(Text::number(error)).c_str());
+                previousError = error;
+            }
+        }
+    }
+}
+
+// Issue #32. A middle wall that tests the centre only puts a ball that reaches
+// it exactly on the wall. From there it must go back to its own side, from
+// either side and at any speed: a ball from the right stays at x >= 300, one
+// from the left at x <= 300, for 600 steps, and each leaves with the speed it
+// came with (e = 1). Before the fix a ball put back on the wall from the right
+// was taken to be on the left side and went through (lesson 03: at 103.9 px/s
+// it was at x = 298.3 two steps after the bounce, still going left). Not for
+// the reverse model, which leaves a ball past the wall by design (lesson 04).
+TEST_CASE("TestWalls::centreOnlyMiddleWallKeepsSides")
+{
+    for (WallModel model : {WallModel::Clamp, WallModel::Mirror, WallModel::Exact}) {
+        for (IntegratorKind kind : fixedStepIntegrators()) {
+            // px/s, and how many steps away from the wall each ball starts (3: it
+            // ends a step exactly on the wall, 0.4: it crosses in the first step).
+            const double speedAndSteps[][2] = {{0.5, 2.5}, {103.9, 2.5}, {150.0, 3.0}, {300.0, 2.5}, {1e5, 0.4}};
+            for (const auto& [speed, steps] : speedAndSteps) {
+                SUBCASE(forcelab::test::format_row("%s %s %g px/s", toString(model).data(), toString(kind).data(), speed)
+                            .c_str())
+                {
+                    Scene s = dropScene(model, 1.0, kind, 1.0 / 60);
+                    s.settings.gravity.enabled = false;
+                    s.settings.walls = WallSettings{false, false, false, false, model, 1.0, true, true};
+                    const double away = speed * steps / 60; // px from the wall at the start
+                    s.balls = {ballAt(300 + away, 100, -speed, 0, 30), ballAt(300 - away, 300, speed, 0, 30)};
+                    World w;
+                    VERIFY(!w.reset(s));
+                    int k = 0;
+                    for (; k < 600 && w.totals().wallHits < 2; ++k)
+                        w.step();
+                    for (int more = 0; more < 600; ++more) {
+                        w.step();
+                        const double right = w.balls().position(0, 0), left = w.balls().position(0, 1);
+                        VERIFY2(right >= 300.0 && left <= 300.0,
+                                forcelab::test::format_row("step %d: right ball at x = %.17g, left ball at %.17g",
+                                                           k + more, right, left)
+                                    .c_str());
+                        if (right < 300.0 || left > 300.0)
+                            break;
+                    }
+                    REQUIRE_SAME(w.totals().wallHits, std::int64_t(2));
+                    // Exact walls rebuild the Euler methods' drift from the positions: rounding.
+                    VERIFY(std::abs(w.balls().velocity(0, 0) - speed) <= 1e-9 * speed);
+                    VERIFY(std::abs(w.balls().velocity(0, 1) + speed) <= 1e-9 * speed);
+                }
+            }
+        }
+    }
+}
