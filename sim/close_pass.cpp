@@ -1,6 +1,7 @@
 #include "close_pass.h"
 
 #include "force_model.h"
+#include "integrator_info.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,10 +10,10 @@
 namespace forcelab::sim {
 namespace {
 
-std::string format(double v)
+std::string format(double v, int digits = 2)
 {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2g", v);
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
     return text;
 }
 
@@ -71,9 +72,18 @@ std::string describeClosePass(const ClosePass& pass, const WorldSettings& s, dou
                                              std::to_string(pass.second) + " came within " + format(pass.distance) +
                                              " px of each other"
                                        : "ball " + std::to_string(pass.first) + " came within " +
-                                             format(pass.distance) + " px of the attracting point";
+                                             format(pass.distance) + " px of the attracting point at (" +
+                                             format(s.point.position.x(), 6) + ", " +
+                                             format(s.point.position.y(), 6) + ")";
     std::string fix = pass.second >= 0 ? "add softening (models.mutual_gravity.softening)"
                                        : "set max_accel (the clamp of models.point)";
+    if (integratorInfo(s.time.integrator).adaptive) {
+        // An adaptive integrator already shortened its sub-steps as far as
+        // they go: neither dt nor another integrator helps, only a pull that
+        // stays finite.
+        return who + ", where a free fall takes " + format(pass.fallTime) +
+               " s: the pull there is singular, or nearly, and no sub-step can follow the fall. Fix: " + fix;
+    }
     // A step that follows a free fall of τ in four sub-steps or more.
     const double safeDt = 0.25 * pass.fallTime * s.time.substeps;
     return who + ", where a free fall takes " + format(pass.fallTime) + " s against a sub-step of " +

@@ -44,7 +44,9 @@ enum class Pulls {
 std::optional<ClosePass> shortestFallTime(const WorldSettings& settings, const BallState& balls, Pulls pulls);
 
 /// "balls 0 and 1 came within 0.31 px of each other …" with what to change:
-/// softening (or the clamp), a shorter dt, an adaptive integrator.
+/// softening (or the clamp), a shorter dt, an adaptive integrator. With an
+/// adaptive integrator (which gave up on the pass) only softening or the
+/// clamp: its sub-steps already went as short as they may.
 std::string describeClosePass(const ClosePass& pass, const WorldSettings& settings, double subStep);
 
 } // namespace forcelab::sim

@@ -25,8 +25,13 @@
 // tolerance below the floor cannot be met by any sub-step, however short, so
 // where the estimate is above ε the floor is measured (one extra force
 // evaluation) and, if it is higher, it stands in for ε; the world reports it.
-// A sub-step whose predictor–corrector does not converge (a stiff force, a
-// sub-step too long) is refused like one with a large error. Positions
+// A floor above 1e-4 is no rounding to work to but the sign of a nearly
+// singular force (a ball a few million ulps from an attracting point): it does
+// not stand in. A sub-step whose predictor–corrector does not converge (a
+// stiff force, a sub-step too long) is refused like one with a large error.
+// One that misses the tolerance even at the shortest length allowed
+// (kMinSubStepShare of the step) is not taken at all: ias15 gives up
+// (IntegratorStats::tooShort) and the world stops, naming the cause. Positions
 // and velocities are summed with compensated (Kahan) summation, so rounding
 // does not build up over millions of sub-steps.
 

@@ -195,8 +195,18 @@ void Integrator::dormandPrince(const ForceModel& forces, Matrix2X& x, Matrix2X& 
         if (!std::isfinite(err))
             err = 1e10;
         const double factor = std::clamp(0.9 * std::pow(std::max(err, 1e-10), -0.2), 0.2, 5.0);
-        const double minStep = 1e-12 * std::abs(h);
-        if (err <= 1.0 || step <= minStep) { // below minStep the tolerance cannot be met: take it anyway
+        const double minStep = kMinSubStepShare * std::abs(h);
+        if (err > 1.0 && step <= minStep) {
+            // Even the shortest sub-step misses the tolerance (err is as large
+            // as 1e10 for a state that is not finite): taking it would hand
+            // back a state as wrong as err says. Stop instead.
+            stats.gaveUp = true;
+            stats.tooShort = true;
+            stats.shortestSubStep = step;
+            m_rk45h = 0.0;
+            return;
+        }
+        if (err <= 1.0) {
             ++stats.accepted;
             x = m_xs;
             v = m_vs;

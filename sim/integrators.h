@@ -30,10 +30,22 @@ namespace forcelab::sim {
 /// instead of freezing the program, and the world stops with an explanation.
 inline constexpr std::int64_t kMaxAdaptiveSubSteps = 100'000;
 
+/// The shortest sub-step an adaptive integrator may take, as a share of the
+/// step. A sub-step that still misses the tolerance at this length is not
+/// taken (its result would be as wrong as the error estimate says): the
+/// integrator gives up and the world stops with the cause.
+inline constexpr double kMinSubStepShare = 1e-12;
+
 struct IntegratorStats {
     std::int64_t accepted = 0; ///< rk45 / ias15 sub-steps accepted
     std::int64_t rejected = 0; ///< rk45 / ias15 sub-steps rejected (error above tolerance)
-    bool gaveUp = false;       ///< the sub-step budget ran out before the end of the step
+    bool gaveUp = false;       ///< stopped before the end of the step (why: below)
+    /// The error could not be brought within the tolerance even by the
+    /// shortest sub-step allowed, kMinSubStepShare of the step: the motion
+    /// changes faster than any sub-step can follow (a singular approach).
+    /// False when gaveUp means the sub-step budget ran out.
+    bool tooShort = false;
+    double shortestSubStep = 0.0; ///< s, the sub-step it could not go below (when tooShort)
     /// ias15: the rounding floor it held the error to where the tolerance asked
     /// for less than rounding allows (1, like the tolerance; 0: the tolerance held)
     double toleranceFloor = 0.0;

@@ -72,6 +72,9 @@ public:
     /// settings (setSettings) or a reset clear it if the cause is gone.
     const std::optional<std::string>& halted() const { return m_halted; }
 
+    /// s, the time the state is at: the sum of the steps taken, rounded once
+    /// (not once a step), so after millions of steps it is still the time
+    /// the integrator moved the balls to.
     double time() const { return m_time; }
     std::int64_t stepCount() const { return m_stepCount; }
     const StepStats& lastStep() const { return m_last; }
@@ -118,11 +121,12 @@ public:
 
 private:
     void subStep(double h);
+    void advanceTime(double dt);
     void drawStepRandomness();
     void spawnOverTime();
     bool blewUp() const;
-    double largestDragFactor() const; // for the stability check: the ball drag slows fastest
     std::string explainBlowUp(double subStep, const std::optional<ClosePass>& unresolved) const;
+    std::string explainSingularApproach(double subStep) const;
 
     WorldSettings m_settings;
     BallState m_balls;
@@ -133,8 +137,10 @@ private:
     std::mt19937_64 m_rng;      // wind-independent draws: random acceleration
     std::mt19937_64 m_spawnRng; // spawning over time
     double m_time = 0.0;    // s, at the start of the current step
+    double m_timeCarry = 0.0; // s, what the rounding of m_time's sum lost (compensated summation)
     double m_subTime = 0.0; // s, time into the current step covered by its sub-steps
-    bool m_gaveUp = false;  // an adaptive integrator ran out of sub-steps in this step
+    bool m_gaveUp = false;  // an adaptive integrator gave up in this step
+    double m_stuckSubStep = 0.0; // s, > 0 when it gave up because even a sub-step this short missed the tolerance
     std::int64_t m_stepCount = 0;
     StepStats m_last;
     StepStats m_totals;

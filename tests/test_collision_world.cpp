@@ -157,6 +157,113 @@ TEST_CASE("TestCollisionWorld::continuousWithExactWalls")
             1e-9 * w.energy().kinetic);
 }
 
+// Issue #31, item 5: two impacts inside one step, in time order. Right wall
+// at 600 px (exact model, e = 1), ball A (r = 10 px) at x = 586 moving right
+// at 600 px/s, ball B of the same mass at rest at x = 565.5, dt = 1/60 s.
+// A reaches the wall after 4/600 s, comes back at 600 px/s, meets B after
+// another 4.5/600 s and stops there (x = 585.5); B leaves at 600 px/s for
+// the 1.5/600 s left and ends at x = 564.0. (The one-event pass ended B at
+// 558: it bounced the pair from A's straight path 586 -> 584 instead.)
+TEST_CASE("TestCollisionWorld::continuousWallThenBallInOneStep")
+{
+    Scene s;
+    s.settings.box = BoxSettings{600.0, 400.0};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Exact, 1.0};
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 1.0;
+    s.settings.collisions.continuous = true;
+    Ball a, b;
+    a.radius = b.radius = 10.0;
+    a.position = Vec2(586.0, 200.0);
+    a.velocity = Vec2(600.0, 0.0);
+    b.position = Vec2(565.5, 200.0);
+    s.balls = {a, b};
+    for (Detection d : {Detection::Brute, Detection::Halved, Detection::Sweep, Detection::Grid}) {
+        s.settings.collisions.detection = d;
+        World w(s);
+        w.step();
+        const BallState& x = w.balls();
+        forcelab::test::report("wall then ball in one step: A ends at %.9f px (%.6f px/s), B at %.9f px (%.6f px/s)",
+                               x.position(0, 0), x.velocity(0, 0), x.position(0, 1), x.velocity(0, 1));
+        VERIFY2(std::abs(x.position(0, 1) - 564.0) <= 1e-9, Text(Text::number(x.position(0, 1), 'g', 17)).c_str());
+        VERIFY(std::abs(x.position(0, 0) - 585.5) <= 1e-9);
+        VERIFY(std::abs(x.velocity(0, 0)) <= 1e-9);
+        VERIFY(std::abs(x.velocity(0, 1) + 600.0) <= 1e-9);
+        VERIFY(w.lastStep().wallHits == 1);
+    }
+}
+
+namespace {
+
+// Pairs that overlap at the end of a step (deeper than 1e-9 of the smaller
+// radius: two balls that met exactly at the end may sit a rounding error
+// inside each other), and the deepest of them as a share of the smaller
+// diameter.
+struct StepEndOverlaps {
+    std::int64_t pairs = 0;
+    double deepest = 0.0;
+};
+
+void countOverlaps(const World& w, StepEndOverlaps& o)
+{
+    CollisionSystem sys;
+    std::vector<Contact> pairs;
+    sys.detect(w.balls(), Detection::Sweep, pairs);
+    const BallState& b = w.balls();
+    for (const Contact& c : pairs) {
+        const double small = std::min(b.radius[c.a], b.radius[c.b]);
+        const double depth = b.radius[c.a] + b.radius[c.b] - (b.position.col(c.b) - b.position.col(c.a)).norm();
+        if (depth > 1e-9 * small) {
+            ++o.pairs;
+            o.deepest = std::max(o.deepest, depth / (2.0 * small));
+        }
+    }
+}
+
+} // namespace
+
+// Issue #31, item 5: a gas of 200 balls (r 3-6 px, 50-300 px/s, e = 1) in a
+// 300 x 200 px box with exact walls, 600 steps at 60 Hz, counted after the
+// first 30 steps (the spawn leaves balls overlapping). Discrete detection leaves
+// pairs overlapping at step ends (a ball moves up to 5 px a step; measured
+// 6,816 pairs over 570 step ends, the deepest 86% of the smaller diameter);
+// continuous detection makes every impact at its moment, so none is left.
+// Kinetic energy is kept to 1e-9 with continuous detection (measured 2.5e-15):
+// every impact is elastic.
+TEST_CASE("TestCollisionWorld::continuousGasLeavesNoOverlaps")
+{
+    StepEndOverlaps found[2];
+    double energyChange = 0.0;
+    std::int64_t impacts = 0;
+    for (bool continuous : {false, true}) {
+        Scene s = boxOfBalls(200, 300.0, 200.0, Detection::Sweep, 1.0);
+        s.settings.walls.model = WallModel::Exact;
+        s.settings.collisions.continuous = continuous;
+        World w(s);
+        const double ke0 = w.energy().kinetic;
+        StepEndOverlaps& o = found[continuous ? 1 : 0];
+        for (int step = 0; step < 600; ++step) {
+            w.step();
+            if (step >= 30) // the spawn leaves balls overlapping; the end-of-step pass parts them within a few steps
+                countOverlaps(w, o);
+            if (continuous)
+                impacts += w.lastStep().contacts;
+        }
+        if (continuous)
+            energyChange = std::abs(w.energy().kinetic - ke0) / ke0;
+    }
+    forcelab::test::report("200-ball gas, 600 steps: pairs overlapping at step ends %lld discrete (deepest %.3f of "
+                           "the smaller diameter), %lld continuous (deepest %.3g); continuous: %lld contacts, "
+                           "kinetic energy changed by %.3g",
+                           static_cast<long long>(found[0].pairs), found[0].deepest,
+                           static_cast<long long>(found[1].pairs), found[1].deepest, static_cast<long long>(impacts),
+                           energyChange);
+    VERIFY(found[0].pairs > 100); // the scene does make discrete detection fail
+    VERIFY2(found[1].pairs == 0, Text(Text::number(static_cast<double>(found[1].pairs))).c_str());
+    VERIFY(impacts > 1000);
+    VERIFY2(energyChange <= 1e-9, Text(Text::number(energyChange)).c_str());
+}
+
 namespace {
 
 // Deepest overlap of any touching pair, as a share of the smaller radius.
@@ -902,4 +1009,108 @@ TEST_CASE("TestCollisionWorld::editsAndChangingForcesKeepBallsAwake")
         most = std::max(most, windy.collisionSystem().sleepingCount());
     }
     VERIFY(most == 0);
+}
+
+
+namespace {
+
+// A pile of 30 balls of r = 10 px in four close-packed rows (8, 7, 8, 7)
+// wedged between the walls of a box 160 px wide, under g = 980 px/s², with
+// ball and wall restitution e and the given integrator at 60 Hz and one
+// sub-step. The pile settles for 2 s (it falls asleep), then a ball is
+// dropped from rest, centred over the middle ball of the top row, with its
+// bottom h0 above that ball's top.
+struct PileBounce {
+    double rebound = 0.0;   // px, apex of the rise above the point where the balls touch
+    double topMoved = 0.0;  // px, how far the top ball had moved when the dropped one turned back
+};
+
+PileBounce bounceOnSmallPile(double e, IntegratorKind integrator, double h0)
+{
+    const double r = 10.0, g = 980.0;
+    const int across = 8;
+    Scene s;
+    s.settings.box = BoxSettings{2.0 * r * across, 800.0};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, e};
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = Vec2(0.0, g);
+    s.settings.time.integrator = integrator;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = e;
+    Ball ball;
+    ball.radius = r;
+    for (int row = 0; row < 4; ++row) {
+        const bool odd = row % 2 == 1;
+        for (int i = 0; i < (odd ? across - 1 : across); ++i) {
+            ball.position = Vec2((odd ? 2.0 * r : r) + 2.0 * r * i, s.settings.box.height - r - row * std::sqrt(3.0) * r);
+            s.balls.push_back(ball);
+        }
+    }
+    World settle(s);
+    for (int step = 0; step < 120; ++step)
+        settle.step();
+    const BallState& pile = settle.balls();
+    const double middle = 0.5 * s.settings.box.width;
+    int top = 0;
+    for (int i = 0; i < pile.size(); ++i)
+        if (std::abs(pile.position(0, i) - middle) < r && pile.position(1, i) < pile.position(1, top))
+            top = i;
+    for (int i = 0; i < pile.size(); ++i) {
+        s.balls[static_cast<std::size_t>(i)].position = pile.position.col(i);
+        s.balls[static_cast<std::size_t>(i)].velocity = pile.velocity.col(i);
+    }
+    const double top0 = pile.position(1, top);
+    ball.position = Vec2(pile.position(0, top), top0 - 2.0 * r - h0);
+    ball.velocity = Vec2(0.0, 0.0);
+    s.balls.push_back(ball);
+    World w(s);
+    const int id = w.balls().size() - 1;
+    PileBounce b;
+    for (int step = 0; step < 120; ++step) {
+        w.step();
+        const double y = w.balls().position(1, id), vy = w.balls().velocity(1, id);
+        if (vy < 0.0) { // turned back: from here it flies free
+            const double topY = w.balls().position(1, top);
+            b.topMoved = std::abs(topY - top0);
+            b.rebound = (topY - 2.0 * r) - (y - vy * vy / (2.0 * g));
+            break;
+        }
+    }
+    return b;
+}
+
+} // namespace
+
+// Issue #31, item 6: a ball dropped on a resting pile bounces as from a
+// floor, rising e²·h0 (within 5%) at e = 1, 0.8 and 0.5 with every
+// fixed-step integrator at one sub-step. h0 is the fall of the ball's
+// bottom onto the top ball's top (200 px); the rise is measured from the
+// point where the two touch, taken from where the top ball is in the step
+// the dropped ball turns back (it has moved less than 1 px), to the apex
+// of the free flight that ball starts on then, y − v²/2g: the integrators'
+// own errors on the way up (semi-implicit Euler falls short by v·h/2, about
+// 5 px; explicit Euler overshoots by as much) are not the bounce's. Before
+// the work on it the ball rose 89-90% of e²·h0 with semi-implicit Euler,
+// 41-46% with verlet, rk4 and yoshida4, 2-25% with Euler (whose piles did
+// not come to rest). Skipped until it passes (issue #31, item 6 is
+// open): run with --no-skip to see where it stands.
+TEST_CASE("TestCollisionWorld::ballBouncesOnRestingPileWithEveryIntegrator" * doctest::skip())
+{
+    const std::pair<const char*, IntegratorKind> integrators[] = {
+        {"euler", IntegratorKind::Euler},   {"semi-implicit-euler", IntegratorKind::SemiImplicitEuler},
+        {"verlet", IntegratorKind::Verlet}, {"rk4", IntegratorKind::Rk4},
+        {"yoshida4", IntegratorKind::Yoshida4}};
+    const double h0 = 200.0;
+    double worst = 0.0, mostMoved = 0.0;
+    for (const auto& [name, kind] : integrators)
+        for (const double e : {1.0, 0.8, 0.5}) {
+            const PileBounce b = bounceOnSmallPile(e, kind, h0);
+            const double expected = e * e * h0;
+            forcelab::test::report("%s, e = %.1f: rises %.1f px, e^2 h0 = %.1f px (%.3f), top ball moved %.2f px", name, e,
+                                   b.rebound, expected, b.rebound / expected, b.topMoved);
+            worst = std::max(worst, std::abs(b.rebound - expected) / expected);
+            mostMoved = std::max(mostMoved, b.topMoved);
+        }
+    VERIFY2(worst <= 0.05, Text(Text::number(worst)).c_str());
+    VERIFY2(mostMoved < 1.0, Text(Text::number(mostMoved)).c_str());
 }

@@ -323,6 +323,42 @@ TEST_CASE("TestCollisions::continuousCatchesFastBalls")
     }
 }
 
+// Continuous detection with the exact wall model bounces a ball off the
+// walls in time order (issue #31, item 5): r = 10 px in a 100 px box, so the
+// centre runs between 10 and 90 px. At 10⁵ px/s for 1/60 s it travels
+// 1666.67 px: 21 bounces, and it ends where the unfolded path says (to 1e-9
+// px). At 10⁷ px/s it would need 2083 bounces, more than the limit of 256
+// impacts a step: the step says so, and the ball ends inside the box no
+// faster than it came.
+TEST_CASE("TestCollisions::continuousBouncesOffWallsInTimeOrder")
+{
+    const BoxSettings box{100.0, 100.0};
+    const WallSettings walls{true, true, true, true, WallModel::Exact, 1.0};
+    for (const double speed : {1e5, 1e7}) {
+        BallState b = makeBalls({ballAt(50.0, 50.0, speed, 0.0, 10.0), ballAt(50.0, 80.0, 0.0, 0.0, 5.0)});
+        CollisionSystem sys;
+        const CollisionStats st = drift(sys, b, settingsFor(Response::Impulse2D, 1.0, Detection::Sweep, true), kDt,
+                                        box, walls);
+        const double travel = speed * kDt, unfolded = std::fmod(40.0 + travel, 160.0);
+        const double x = unfolded <= 80.0 ? 10.0 + unfolded : 170.0 - unfolded;
+        forcelab::test::report("ball at %.0f px/s between walls: ends at %.9f px (expected %.9f), %lld wall hits, "
+                               "limit reached: %d",
+                               speed, b.position(0, 0), x, static_cast<long long>(st.wallHits),
+                               int(sys.lastImpactLimitReached()));
+        VERIFY(b.position(0, 0) >= 10.0 && b.position(0, 0) <= 90.0);
+        VERIFY(std::abs(b.velocity(0, 0)) <= speed);
+        if (speed < 1e6) {
+            VERIFY(!sys.lastImpactLimitReached());
+            VERIFY(std::abs(b.position(0, 0) - x) <= 1e-9);
+            VERIFY(std::abs(b.velocity(0, 0) - (unfolded <= 80.0 ? speed : -speed)) <= 1e-9 * speed);
+            VERIFY(st.wallHits == static_cast<std::int64_t>((40.0 + travel) / 80.0));
+        } else {
+            VERIFY(sys.lastImpactLimitReached());
+            VERIFY(st.limitReached == 1);
+        }
+    }
+}
+
 TEST_CASE("TestCollisions::flagOnlyMarks")
 {
     std::mt19937_64 rng(11);

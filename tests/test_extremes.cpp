@@ -10,6 +10,7 @@
 #include "sim_test_util.h"
 
 #include "sim/names.h"
+#include "sim/step_plan.h"
 
 #include "sim_check.h"
 
@@ -396,3 +397,36 @@ TEST_CASE("TestExtremes::everyBallHasAMass")
     }
 }
 
+
+// Issue #31 item 10: the time a world reports is the time its state is at.
+// Added plainly, dt = 0.001 s rounds the sum by up to half an ulp a step and
+// the roundings do not cancel: 6283.185307179586 s (2000π) was reported as
+// 6283.185308000889 s after its 6,283,185 steps and a shorter last one, while
+// the state matched 2000π. Here, 628.3185307179586 s (200π) in 628,318 steps
+// and a last one of 0.0005307 s, in an empty world (the time is all there is
+// to check): plain sums were 7.9e-9 s short; now within 4 ulps of 200π
+// (measured: 0), and after the whole steps alone equal to the correctly
+// rounded product 628,318 × dt.
+TEST_CASE("TestExtremes::timeAfterHundredsOfThousandsOfSteps")
+{
+    constexpr double kDuration = 200.0 * 3.141592653589793;
+    Scene s = openScene({});
+    s.settings.time.dt = 0.001;
+    World world;
+    REQUIRE(!world.reset(s));
+    std::string why;
+    const auto plan = planSteps(kDuration, s.settings.time.dt, 1'000'000'000, &why);
+    REQUIRE(plan);
+    REQUIRE_SAME(plan->whole, std::int64_t(628318));
+    for (std::int64_t k = 0; k < plan->whole; ++k)
+        world.step();
+    const double wholeSteps = static_cast<double>(plan->whole) * s.settings.time.dt; // one rounding
+    forcelab::test::report("after %lld steps: time %.17g s, whole steps × dt %.17g s", static_cast<long long>(plan->whole),
+                           world.time(), wholeSteps);
+    CHECK(std::abs(world.time() - wholeSteps) <= std::nextafter(wholeSteps, 1e300) - wholeSteps);
+    runPlan(world, StepPlan{0, plan->last});
+    const double ulp = std::nextafter(kDuration, 1e300) - kDuration;
+    forcelab::test::report("after the last step of %.17g s: time %.17g s, asked %.17g s, off by %.3g s", plan->last,
+                           world.time(), kDuration, world.time() - kDuration);
+    CHECK(std::abs(world.time() - kDuration) <= 4.0 * ulp);
+}

@@ -244,8 +244,10 @@ void PlotsDock::onStepped()
     s.p = p.norm();
     s.stepMicros = world.lastStep().seconds * 1e6;
     m_samples.push_back(s);
-    while (!m_samples.empty() &&
-           (m_samples.size() > kMaxSamples || m_samples.front().t < s.t - kWindowSeconds))
+    // A sample exactly the window's length old stays, whatever the last bit
+    // of the two times (each is the sum of its steps, rounded once).
+    const double oldest = s.t - kWindowSeconds - 1e-12 * std::max(1.0, std::abs(s.t));
+    while (!m_samples.empty() && (m_samples.size() > kMaxSamples || m_samples.front().t < oldest))
         m_samples.pop_front();
     scheduleRefresh();
 }

@@ -78,9 +78,12 @@ void BroadPhaseInput::loadStatic(const BallState& balls, const double* grow)
     meanSize = kept == 0 ? 0.0 : sumSize / static_cast<double>(kept) + 2.0 * pad;
 }
 
-void BroadPhaseInput::loadSwept(const BallState& balls, const Matrix2X& start)
+void BroadPhaseInput::loadSwept(const BallState& balls, const Matrix2X& start, const double* grow)
 {
     copyBalls(balls);
+    if (grow)
+        for (std::size_t i = 0; i < r.size(); ++i)
+            r[i] += grow[i];
     const std::size_t n = x.size();
     x0.resize(n);
     y0.resize(n);

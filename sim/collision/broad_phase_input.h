@@ -33,7 +33,10 @@ struct BroadPhaseInput {
     /// pairs found are then every pair within grow[a] + grow[b] of touching.
     void loadStatic(const BallState& balls, const double* grow = nullptr);
     /// Boxes around the path of each circle from `start` to its current position.
-    void loadSwept(const BallState& balls, const Matrix2X& start);
+    /// With `grow` (one value >= 0 per ball), ball i takes part with radius
+    /// r_i + grow[i]: a ball whose path bends away from the straight line by
+    /// up to grow[i] is still found (continuous detection, impact_events.h).
+    void loadSwept(const BallState& balls, const Matrix2X& start, const double* grow = nullptr);
 
 private:
     void copyBalls(const BallState& balls);

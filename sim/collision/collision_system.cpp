@@ -5,10 +5,9 @@
 #include "narrow_phase.h"
 #include "positional_correction.h"
 #include "response.h"
-#include "time_of_impact.h"
-
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace forcelab::sim {
 namespace {
@@ -158,9 +157,11 @@ CollisionStats CollisionSystem::detectMoving(const BallState& balls, const Matri
 
 CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPositions,
                                      const CollisionSettings& settings, const BoxSettings& box,
-                                     const WallSettings& walls, double dt, const Vec2& gravity)
+                                     const WallSettings& walls, double dt, const Vec2& gravity,
+                                     const StepMotion& motion)
 {
     CollisionStats stats;
+    m_lastLimitReached = false;
     m_lastPasses = 0;
     m_lastBounceRows = 0;
     m_lastBounced = false;
@@ -174,6 +175,10 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         return stats;
     }
     const bool continuous = settings.continuous && startPositions.cols() == n;
+    if (continuous && settings.response != Response::Flag) {
+        m_sleep.wakeAll();
+        return stepInTimeOrder(balls, startPositions, settings, box, walls, dt, motion, clock);
+    }
     const double g = gravity.norm();
     const double restingSpeed = m_solver.restingFactor * g * dt;
     const bool resting = settings.resting && settings.response == Response::Impulse2D && !continuous &&
@@ -251,13 +256,13 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     }
     m_resting.forget(); // no resting solve: nothing to warm-start from next time
     if (!m_contacts.empty())
-        resolve(balls, continuous ? &startPositions : nullptr, settings, box, walls, dt);
+        resolve(balls, settings, box, walls);
     clock.lap(m_profile.correction);
     return stats;
 }
 
-void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings,
-                              const BoxSettings& box, const WallSettings& walls, double dt)
+void CollisionSystem::resolve(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                              const WallSettings& walls)
 {
     // Normals come from the positions at detection, not from positions already
     // moved by earlier pairs of this pass: the line of impact of a pair does not
@@ -265,76 +270,80 @@ void CollisionSystem::resolve(BallState& balls, const Matrix2X* start, const Col
     // fallback directions of lineOfImpact for every pair.
     m_detected = balls.position;
     const double e = settings.restitution;
-    const Response model = settings.response;
-    if (!start) {
-        switch (model) {
-        case Response::None:
-        case Response::Flag:
-            return;
-        case Response::Reverse1D:
-            return resolveContacts<Response::Reverse1D>(m_contacts, m_detected, balls, e, box, walls);
-        case Response::Elastic1D:
-            return resolveContacts<Response::Elastic1D>(m_contacts, m_detected, balls, e, box, walls);
-        case Response::Axis2D:
-            return resolveContacts<Response::Axis2D>(m_contacts, m_detected, balls, e, box, walls);
-        case Response::Impulse2D:
-            return resolveContacts<Response::Impulse2D>(m_contacts, m_detected, balls, e, box, walls);
-        }
+    switch (settings.response) {
+    case Response::None:
+    case Response::Flag:
         return;
+    case Response::Reverse1D:
+        return resolveContacts<Response::Reverse1D>(m_contacts, m_detected, balls, e, box, walls);
+    case Response::Elastic1D:
+        return resolveContacts<Response::Elastic1D>(m_contacts, m_detected, balls, e, box, walls);
+    case Response::Axis2D:
+        return resolveContacts<Response::Axis2D>(m_contacts, m_detected, balls, e, box, walls);
+    case Response::Impulse2D:
+        return resolveContacts<Response::Impulse2D>(m_contacts, m_detected, balls, e, box, walls);
     }
-    m_impact.assign(static_cast<std::size_t>(balls.size()), 0);
-    auto& x = balls.position;
-    auto& v = balls.velocity;
+}
 
+bool CollisionSystem::wallsInTimeOrder(const CollisionSettings& settings, const WallSettings& walls)
+{
+    return settings.continuous && settings.response != Response::None && settings.response != Response::Flag &&
+           walls.model == WallModel::Exact;
+}
+
+CollisionStats CollisionSystem::stepInTimeOrder(BallState& balls, const Matrix2X& startPositions,
+                                                const CollisionSettings& settings, const BoxSettings& box,
+                                                const WallSettings& walls, double dt, const StepMotion& motion,
+                                                StageClock& clock)
+{
+    CollisionStats stats;
+    const Vec2 momentumBefore = balls.velocity * balls.mass;
+    // Every pair whose paths may meet: the swept test on the straight lines
+    // between each ball's ends, each ball grown by how far its path bends
+    // away from that line.
+    // Without the walls in the loop the world's wall stage has already changed
+    // the end velocity of a ball that hit one, so the path cannot be read from
+    // it: straight paths from start to end then.
+    const bool wallsHere = wallsInTimeOrder(settings, walls);
+    const std::vector<double>& bend =
+        m_events.preparePaths(balls, startPositions, wallsHere ? motion : StepMotion{}, dt);
+    m_input.loadSwept(balls, startPositions, bend.data());
+    clock.lap(m_profile.load);
+    findContacts(settings.detection, true, m_candidates, stats, clock);
+    const ImpactCounts counts = m_events.run(balls, m_candidates, settings, box, walls, wallsHere, m_met);
+    m_lastLimitReached = counts.limitReached;
+    clock.lap(m_profile.velocity);
+    // What still overlaps at the end began the step overlapping (spawned so,
+    // or pushed by a wall) or is left from the impact limit: the discrete
+    // pass, with positional correction.
+    m_input.loadStatic(balls);
+    clock.lap(m_profile.load);
+    findContacts(settings.detection, false, m_contacts, stats, clock);
+    if (!m_contacts.empty())
+        resolve(balls, settings, box, walls);
+    clock.lap(m_profile.correction);
+    // Reported contacts: the pairs that met during the step and those that overlap at its end.
+    if (!m_met.empty()) {
+        m_candidates.clear();
+        std::set_union(m_met.begin(), m_met.end(), m_contacts.begin(), m_contacts.end(),
+                       std::back_inserter(m_candidates),
+                       [](const Contact& l, const Contact& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
+        m_contacts.swap(m_candidates);
+    }
     for (const Contact& c : m_contacts) {
-        const int a = c.a, b = c.b;
-        const double ra = balls.radius[a], rb = balls.radius[b];
-        const double wa = balls.inverseMass[a], wb = balls.inverseMass[b];
-        Vec2 va = v.col(a), vb = v.col(b);
-
-        if (start && !m_impact[static_cast<std::size_t>(a)] && !m_impact[static_cast<std::size_t>(b)]) {
-            // Continuous: did they meet inside the step? Rewind to that moment.
-            const Vec2 sa = start->col(a), sb = start->col(b);
-            const Vec2 ea = m_detected.col(a), eb = m_detected.col(b);
-            const Vec2 d0 = sb - sa;
-            const Vec2 dd = (eb - sb) - (ea - sa);
-            const double t = timeOfImpact(d0.x(), d0.y(), dd.x(), dd.y(), ra + rb);
-            if (t > 0.0) {
-                const Vec2 pa = sa + t * (ea - sa), pb = sb + t * (eb - sb);
-                const Vec2 d = pb - pa;
-                const Vec2 n = lineOfImpact(d, ra + rb, a, b);
-                if (respond(model, e, d, n, wa, wb, va, vb)) {
-                    // Finish the step from the point of impact on the new velocities.
-                    Vec2 qa = pa + ((1.0 - t) * dt) * va, qb = pb + ((1.0 - t) * dt) * vb;
-                    keepInsideWalls(pa, qa, ra, box, walls);
-                    keepInsideWalls(pb, qb, rb, box, walls);
-                    x.col(a) = qa;
-                    x.col(b) = qb;
-                    v.col(a) = va;
-                    v.col(b) = vb;
-                    m_impact[static_cast<std::size_t>(a)] = 1;
-                    m_impact[static_cast<std::size_t>(b)] = 1;
-                    Vec2 pa2 = x.col(a), pb2 = x.col(b);
-                    separate(pa2, pb2, {ra, rb, n, wa, wb}, box, walls);
-                    x.col(a) = pa2;
-                    x.col(b) = pb2;
-                    continue;
-                }
-            }
-        }
-
-        const Vec2 d = m_detected.col(b) - m_detected.col(a);
-        const Vec2 n = lineOfImpact(d, ra + rb, a, b);
-        if (respond(model, e, d, n, wa, wb, va, vb)) {
-            v.col(a) = va;
-            v.col(b) = vb;
-        }
-        Vec2 pa = x.col(a), pb = x.col(b);
-        if (separate(pa, pb, {ra, rb, n, wa, wb}, box, walls) > 0.0) {
-            x.col(a) = pa;
-            x.col(b) = pb;
-        }
+        balls.colliding[static_cast<std::size_t>(c.a)] = 1;
+        balls.colliding[static_cast<std::size_t>(c.b)] = 1;
     }
+    m_resting.forget(); // no resting solve: nothing to warm-start from next time
+    stats.contacts = static_cast<std::int64_t>(m_contacts.size());
+    stats.pairsTested += counts.pairsTested;
+    stats.impacts = counts.ballImpacts;
+    stats.limitReached = counts.limitReached ? 1 : 0;
+    if (wallsHere) {
+        stats.wallHits = counts.wallHits;
+        stats.wallImpulse = balls.velocity * balls.mass - momentumBefore;
+    }
+    return stats;
 }
 
 } // namespace forcelab::sim

@@ -16,6 +16,7 @@
 #include "contact.h"
 #include "contact_solver.h"
 #include "contact_sort.h"
+#include "impact_events.h"
 #include "resting_solver.h"
 #include "sleep.h"
 #include "speculative_margin.h"
@@ -37,10 +38,15 @@ public:
     /// Per contact, in (a, b) order: the response model changes the velocities
     /// along the line of centres at detection time (pairs already moving apart
     /// are skipped), then positional correction pushes the pair apart if it
-    /// still overlaps. `flag` only marks. In continuous mode a pair that met
-    /// during the step is first moved back to the moment of impact, bounced
-    /// there, and sent on for the rest of the step (one such event per ball
-    /// per sub-step; later contacts of the same ball use the end positions).
+    /// still overlaps. `flag` only marks.
+    ///
+    /// Continuous mode (any response but flag) makes every impact inside the
+    /// step at its moment, in time order (impact_events.h): each ball follows
+    /// the path `motion` describes, and with the exact wall model the walls
+    /// are impacts too (the caller must not have applied them: see
+    /// wallsInTimeOrder). Pairs that still overlap at the end (they began the
+    /// step overlapping, or the impact limit was reached) get the discrete
+    /// pass above.
     ///
     /// `gravity` (px/s², zero when gravity is off) switches on resting contact
     /// for 2d-impulse (see contact_solver.h): a restitution threshold, several
@@ -48,7 +54,15 @@ public:
     /// with slop. Without gravity the step is the one pass described above.
     CollisionStats step(BallState& balls, const Matrix2X& startPositions, const CollisionSettings& settings,
                         const BoxSettings& box, const WallSettings& walls, double dt,
-                        const Vec2& gravity = Vec2::Zero());
+                        const Vec2& gravity = Vec2::Zero(), const StepMotion& motion = StepMotion{});
+
+    /// Whether step() bounces the balls off the walls itself, in time order
+    /// with the ball–ball impacts (continuous detection with a response and the
+    /// exact wall model): the world's wall stage must then leave them alone.
+    static bool wallsInTimeOrder(const CollisionSettings& settings, const WallSettings& walls);
+    /// Whether the last step() reached the impact limit of continuous detection
+    /// (ImpactEvents::eventLimit) and resolved the rest of its step discretely.
+    bool lastImpactLimitReached() const { return m_lastLimitReached; }
 
     /// Tuning of the resting-contact solver (tests, bench).
     void setSolverSettings(const ContactSolverSettings& s) { m_solver = s; }
@@ -97,8 +111,11 @@ public:
 private:
     void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats,
                       StageClock& clock);
-    void resolve(BallState& balls, const Matrix2X* start, const CollisionSettings& settings, const BoxSettings& box,
-                 const WallSettings& walls, double dt);
+    void resolve(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                 const WallSettings& walls);
+    CollisionStats stepInTimeOrder(BallState& balls, const Matrix2X& startPositions,
+                                   const CollisionSettings& settings, const BoxSettings& box,
+                                   const WallSettings& walls, double dt, const StepMotion& motion, StageClock& clock);
     SubStepContext subStep(const CollisionSettings& settings, const BoxSettings& box, const WallSettings& walls,
                            double h, double restingSpeed, const Vec2& gravity) const;
 
@@ -123,7 +140,10 @@ private:
     UniformGrid m_grid;
     ContactSorter m_sorter;
     Matrix2X m_detected;                 // positions at detection time
-    std::vector<unsigned char> m_impact; // continuous: ball already had its time-of-impact event
+    ImpactEvents m_events;               // continuous: every impact of the step in time order
+    std::vector<Contact> m_met;          // continuous: pairs that met during the step
+    std::vector<Contact> m_candidates;   // continuous: pairs whose paths may meet
+    bool m_lastLimitReached = false;
 };
 
 } // namespace forcelab::sim

@@ -2,6 +2,8 @@
 // What detection produces: the touching pairs of one step and the counters a
 // student watches to see why one broad phase beats another.
 
+#include "../types.h"
+
 #include <cstdint>
 
 namespace forcelab::sim {
@@ -16,10 +18,21 @@ struct Contact {
 struct CollisionStats {
     std::int64_t pairsTested = 0; ///< candidate pairs that reached the narrow phase (distance test)
     std::int64_t contacts = 0;    ///< touching pairs found
+    /// Continuous detection with the exact wall model, where the walls are
+    /// impacts in time order with the others (ImpactEvents): the bounces off
+    /// walls, and the momentum they changed (mass·px/s), for the world's books.
+    std::int64_t wallHits = 0;
+    Vec2 wallImpulse = Vec2::Zero();
+    std::int64_t impacts = 0;      ///< continuous: ball–ball impacts made at their moment
+    std::int64_t limitReached = 0; ///< continuous: steps that reached the impact limit (the rest was discrete)
     CollisionStats& operator+=(const CollisionStats& o)
     {
         pairsTested += o.pairsTested;
         contacts += o.contacts;
+        wallHits += o.wallHits;
+        wallImpulse += o.wallImpulse;
+        impacts += o.impacts;
+        limitReached += o.limitReached;
         return *this;
     }
 };
