@@ -3,12 +3,14 @@
 
 #include "cli_commands.h"
 
+#include "lessons/atomic_file.h"
 #include "sim/collision_bench.h"
 #include "sim/threads.h"
 
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -127,17 +129,25 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     }
     out << "Threads for the solver's passes: " << sim::availableThreads()
         << " (step ms is wall-clock time; cpu columns are the calling thread's CPU time)\n";
-    std::unique_ptr<std::ofstream> csv;
+    // The CSV is written all or nothing, and whether it can be written at
+    // all is found out before the bench runs.
+    std::optional<lessons::AtomicFile> csvOut;
+    std::ostringstream csv;
     if (!csvFile.empty()) {
-        csv = std::make_unique<std::ofstream>(csvFile);
-        if (!*csv) {
-            err << "forcelab-cli bench: --csv: cannot write '" << csvFile << "'\n";
+        csvOut.emplace(QString::fromStdString(csvFile));
+        if (!csvOut->open()) {
+            err << "forcelab-cli bench: --csv: " << csvOut->error().toStdString() << "\n";
             return 2;
         }
     }
-    sim::runCollisionBench(o, out, csv.get());
-    if (csv)
+    sim::runCollisionBench(o, out, csvOut ? &csv : nullptr);
+    if (csvOut) {
+        if (!csvOut->write(QByteArray::fromStdString(csv.str())) || !csvOut->commit()) {
+            err << "forcelab-cli bench: --csv: " << csvOut->error().toStdString() << "\n";
+            return 2;
+        }
         out << "\nCSV written to " << csvFile << "\n";
+    }
     return 0;
 }
 

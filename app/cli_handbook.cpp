@@ -3,6 +3,7 @@
 
 #include "cli_commands.h"
 
+#include "lessons/atomic_file.h"
 #include "ui/handbook.h"
 
 #include <QFile>
@@ -21,9 +22,9 @@ int handbookCommand(const QCommandLineParser& parser, std::ostream& out, std::os
         err << "forcelab-cli handbook: give --out FILE.html and nothing else\n";
         return 2;
     }
-    QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::WriteOnly) || file.write(builtInHandbookHtml().toUtf8()) < 0) {
-        err << path << ": cannot write: " << file.errorString().toStdString() << "\n";
+    QString why;
+    if (!lessons::writeFileAtomically(QString::fromStdString(path), builtInHandbookHtml().toUtf8(), &why)) {
+        err << "forcelab-cli handbook: " << why.toStdString() << " (an old file there is unchanged)\n";
         return 2;
     }
     out << "wrote " << path << "\n";

@@ -8,6 +8,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "sim/step_plan.h"
+#include "ui/png_file.h"
 #include "ui/world_painter.h"
 
 #include <QImage>
@@ -112,8 +113,9 @@ int renderCommand(const QCommandLineParser& parser, std::ostream& out, std::ostr
         WorldPainter painterOfWorld;
         painterOfWorld.paint(painter, QRectF(0, 0, options->width, options->height), world, paint, 1.0);
     }
-    if (!image.save(options->out, "PNG")) {
-        err << "forcelab-cli render: --out: cannot write '" << options->out.toStdString() << "'\n";
+    QString unwritten;
+    if (!writePngAtomically(options->out, image, &unwritten)) {
+        err << "forcelab-cli render: --out: " << unwritten.toStdString() << " (an old file there is unchanged)\n";
         return 2;
     }
     out << lesson.id.toStdString() << " at t = " << world.time() << " s (" << world.stepCount() << " steps) drawn to "

@@ -12,6 +12,7 @@
 #include "sim/reference_study.h"
 #include "sim/work_precision.h"
 #include "sim/world.h"
+#include "lessons/atomic_file.h"
 #include "ui/sweep_chart.h"
 
 #include <QString>
@@ -94,6 +95,24 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
             return 2;
         }
         problems = picked;
+    }
+
+    // Both files are written all or nothing, and whether they can be written
+    // at all is found out now, not after the whole sweep.
+    std::optional<lessons::AtomicFile> csvFile;
+    if (o.csv) {
+        csvFile.emplace(QString::fromStdString(*o.csv));
+        if (!csvFile->open()) {
+            err << "forcelab-cli sweep: --csv: " << csvFile->error().toStdString() << "\n";
+            return 2;
+        }
+    }
+    if (o.png) {
+        lessons::AtomicFile probe(QString::fromStdString(*o.png)); // dropped unwritten: the old file stays
+        if (!probe.open()) {
+            err << "forcelab-cli sweep: --png: " << probe.error().toStdString() << "\n";
+            return 2;
+        }
     }
 
     // The sweep: the plan of sim/reference_study.h, each run timed `repeats` times.
@@ -198,12 +217,8 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         }
     }
 
-    if (o.csv) {
-        std::ofstream f(*o.csv);
-        if (!f) {
-            err << "forcelab-cli sweep: --csv: cannot write '" << *o.csv << "'\n";
-            return 2;
-        }
+    if (csvFile) {
+        std::ostringstream f;
         f << "problem,integrator,dt,tolerance,steps,force_evaluations,position_error,energy_error,wall_ms,"
              "ns_per_step_per_ball,blew_up\n";
         f << std::setprecision(6);
@@ -214,11 +229,16 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
                 f << r.energyError;
             f << "," << r.wallMs << "," << r.nsPerStepBall << "," << (r.blewUp ? 1 : 0) << "\n";
         }
+        if (!csvFile->write(QByteArray::fromStdString(f.str())) || !csvFile->commit()) {
+            err << "forcelab-cli sweep: --csv: " << csvFile->error().toStdString() << "\n";
+            return 2;
+        }
         out << "\nCSV written to " << *o.csv << "\n";
     }
     if (o.png) {
-        if (!writeSweepChart(QString::fromStdString(*o.png), problems, rows)) {
-            err << "forcelab-cli sweep: --png: cannot write '" << *o.png << "'\n";
+        QString why;
+        if (!writeSweepChart(QString::fromStdString(*o.png), problems, rows, &why)) {
+            err << "forcelab-cli sweep: --png: " << why.toStdString() << "\n";
             return 2;
         }
         out << "chart written to " << *o.png << "\n";

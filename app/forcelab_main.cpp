@@ -4,6 +4,7 @@
 #include "lessons/lesson_loader.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
+#include "ui/png_file.h"
 #include "ui/render_bench.h"
 #include "ui/simulation_controller.h"
 
@@ -163,8 +164,9 @@ int main(int argc, char* argv[])
             window.controller()->play(); // a lesson opens paused; --after shows it running
         }
         QTimer::singleShot(wait, &window, [&window, file] {
-            if (!window.grab().save(file)) {
-                std::fprintf(stderr, "forcelab: --screenshot: cannot write %s\n", qPrintable(file));
+            QString why;
+            if (!forcelab::writePngAtomically(file, window.grab().toImage(), &why)) {
+                std::fprintf(stderr, "forcelab: --screenshot: %s\n", qPrintable(why));
                 QApplication::exit(2);
                 return;
             }

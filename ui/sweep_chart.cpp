@@ -1,4 +1,5 @@
 #include "sweep_chart.h"
+#include "png_file.h"
 
 #include "sim/integrator_info.h"
 #include "sim/names.h"
@@ -136,7 +137,8 @@ constexpr int kPanelHeight = 480;
 
 } // namespace
 
-bool writeSweepChart(const QString& file, const std::vector<ReferenceProblem>& problems, const std::vector<SweepRun>& rows)
+bool writeSweepChart(const QString& file, const std::vector<sim::ReferenceProblem>& problems,
+                     const std::vector<sim::SweepRun>& rows, QString* error)
 {
     const int n = int(problems.size());
     const int columns = std::min(n, 2), lines = (n + columns - 1) / columns;
@@ -147,7 +149,7 @@ bool writeSweepChart(const QString& file, const std::vector<ReferenceProblem>& p
         drawPanel(painter, QRectF((i % columns) * kPanelWidth, (i / columns) * kPanelHeight, kPanelWidth, kPanelHeight),
                   problems[i], rows);
     painter.end();
-    return image.save(file, "PNG");
+    return writePngAtomically(file, image, error);
 }
 
 

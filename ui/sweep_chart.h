@@ -11,8 +11,9 @@
 
 namespace forcelab {
 
-/// Draws the panels (two per row) into a PNG; false when the file cannot be written.
+/// Draws the panels (two per row) into a PNG, written all or nothing;
+/// false when the file cannot be written, with `error` saying why.
 bool writeSweepChart(const QString& file, const std::vector<sim::ReferenceProblem>& problems,
-                     const std::vector<sim::SweepRun>& runs);
+                     const std::vector<sim::SweepRun>& runs, QString* error);
 
 } // namespace forcelab
