@@ -11,8 +11,14 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QRegularExpression>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
 
 namespace forcelab {
 
@@ -94,16 +100,130 @@ const Override* overrideFor(const QString& keyPath, const QList<Override>& overr
     return nullptr;
 }
 
+/// The longest start of `keyPath` ("balls.4.y" → "balls.4", "balls") that
+/// the file itself writes, or empty when not even its first key is written.
+QString longestWrittenPrefix(const QJsonObject& root, const QString& keyPath)
+{
+    QJsonValue at = root;
+    QString written;
+    for (const QString& part : keyPath.split(QLatin1Char('.'))) {
+        bool isIndex = false;
+        const int index = part.toInt(&isIndex);
+        if (at.isObject() && at.toObject().contains(part))
+            at = at.toObject().value(part);
+        else if (at.isArray() && isIndex && index >= 0 && index < at.toArray().size())
+            at = at.toArray().at(index);
+        else
+            break;
+        written += (written.isEmpty() ? QString() : QStringLiteral(".")) + part;
+    }
+    return written;
+}
+
 /// A problem found at a key path of the lesson: it belongs to the override
-/// that set the path, or else to the file, where it is located in the text.
+/// that set the path, or that made the part of it the file does not write
+/// (`--set balls.4.x=1` on a file with four balls makes ball 4, so its
+/// missing y is the override's); else to the file, where it is located in
+/// the text.
 sim::Error problemAtKey(const QString& keyPath, const QString& message, const QString& source, const QByteArray& json,
                         const QList<Override>& overrides)
 {
     if (const Override* o = overrideFor(keyPath, overrides))
         return problem(overrideSource(*o), message, keyPath);
+    if (!overrides.isEmpty()) {
+        const QJsonObject root = QJsonDocument::fromJson(json).object();
+        const QString written = longestWrittenPrefix(root, keyPath);
+        if (written != keyPath) {
+            const QString made = written.isEmpty() ? keyPath.section(QLatin1Char('.'), 0, 0)
+                                                   : keyPath.section(QLatin1Char('.'), 0, written.count(QLatin1Char('.')) + 1);
+            for (qsizetype i = overrides.size() - 1; i >= 0; --i)
+                if (overrides[i].keyPath == made || overrides[i].keyPath.startsWith(made + QLatin1Char('.')))
+                    return problem(overrideSource(overrides[i]), message, keyPath);
+        }
+    }
     if (const auto p = positionOfKeyPath(json, keyPath, kMaxDepth))
         return problemAt(source, *p, keyPath, message);
     return problem(source, message, keyPath);
+}
+
+/// A number as a reader writes it: "600", "0.5", "18.1".
+QString plain(double v)
+{
+    return QString::number(v, 'g', 6);
+}
+
+/// Whether the balls fit their box, before any work is done: a ball whose
+/// centre lies beyond a wall that is on, a ball wider than the walls it sits
+/// between, and more colliding balls than the box can hold (their discs'
+/// area against the densest packing of equal discs, π/√3 / 2 ≈ 90.7%). The
+/// simulation would otherwise move such a ball without a word, or spend
+/// minutes and gigabytes on a pile that cannot exist.
+std::optional<KeyProblem> sceneProblem(const sim::Scene& scene)
+{
+    const sim::WorldSettings& s = scene.settings;
+    const double w = s.box.width, h = s.box.height;
+    const QString box = QStringLiteral("%1 × %2 px").arg(plain(w), plain(h));
+    for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+        const sim::Ball& b = scene.balls[i];
+        const QString at = QStringLiteral("balls.%1").arg(i);
+        const double x = b.position.x(), y = b.position.y();
+        auto outside = [&](const char* key, double v, const char* wall, double lo, double hi) {
+            return KeyProblem{at + QLatin1Char('.') + QLatin1String(key),
+                              QStringLiteral("%1 = %2 px puts the ball's centre outside the %3 box (%1 from %4 to %5 "
+                                             "px) while the %6 wall is on; put the ball inside, or switch that wall off")
+                                  .arg(QLatin1String(key), plain(v), box, plain(lo), plain(hi), QLatin1String(wall))};
+        };
+        if (s.walls.left && x < 0.0)
+            return outside("x", x, "left", 0.0, w);
+        if (s.walls.right && x > w)
+            return outside("x", x, "right", 0.0, w);
+        if (s.walls.top && y < 0.0)
+            return outside("y", y, "top", 0.0, h);
+        if (s.walls.bottom && y > h)
+            return outside("y", y, "bottom", 0.0, h);
+        const bool across = s.walls.left && s.walls.right && 2.0 * b.radius > w;
+        const bool upDown = s.walls.top && s.walls.bottom && 2.0 * b.radius > h;
+        if (across || upDown)
+            return KeyProblem{at + QStringLiteral(".r"),
+                              QStringLiteral("a ball of radius %1 px does not fit between the walls of the %2 box (a "
+                                             "radius of %3 px at most)")
+                                  .arg(plain(b.radius), box, plain(0.5 * std::min(across ? w : h, upDown ? h : w)))};
+    }
+    const sim::SpawnSettings& sp = scene.spawn;
+    const int spawned = std::max(sp.count, sp.perStep > 0.0 ? sp.maxCount : 0);
+    if (spawned > 0 && ((s.walls.left && s.walls.right && 2.0 * sp.minRadius > w) ||
+                        (s.walls.top && s.walls.bottom && 2.0 * sp.minRadius > h)))
+        return KeyProblem{QStringLiteral("spawn.radius"),
+                          QStringLiteral("balls of radius %1 px or more do not fit between the walls of the %2 box")
+                              .arg(plain(sp.minRadius), box)};
+    if (s.collisions.response == sim::Response::None || w <= 0.0 || h <= 0.0)
+        return std::nullopt;
+    constexpr double kDensestFill = 0.9069; // π / (2√3): equal discs in a hexagonal packing
+    double listedArea = 0.0;
+    for (const sim::Ball& b : scene.balls)
+        listedArea += std::numbers::pi * b.radius * b.radius;
+    // The mean disc of a radius uniform in [a, b]: π (a² + ab + b²) / 3.
+    const double a = sp.minRadius, bMax = sp.maxRadius;
+    const double meanDisc = std::numbers::pi * (a * a + a * bMax + bMax * bMax) / 3.0;
+    const double fill = (listedArea + spawned * meanDisc) / (w * h);
+    if (fill <= kDensestFill)
+        return std::nullopt;
+    const QString cover = fill >= 1.0 ? QStringLiteral("%1 times the area of").arg(fill, 0, 'f', 1)
+                                      : QStringLiteral("%1% of").arg(100.0 * fill, 0, 'f', 0);
+    if (spawned > 0) {
+        const double room = std::max(0.0, kDensestFill * w * h - listedArea);
+        return KeyProblem{sp.count >= spawned ? QStringLiteral("spawn.count") : QStringLiteral("spawn.max_count"),
+                          QStringLiteral("%1 colliding balls of radius %2 to %3 px would cover %4 the %5 box; "
+                                         "colliding balls fill at most 91% of a box, so %6 of them fit at most (or make "
+                                         "the box larger or the balls smaller)")
+                              .arg(spawned)
+                              .arg(plain(a), plain(bMax), cover, box)
+                              .arg(static_cast<long long>(room / meanDisc))};
+    }
+    return KeyProblem{QStringLiteral("balls"),
+                      QStringLiteral("the colliding balls would cover %1 the %2 box; colliding balls fill at most "
+                                     "91% of a box")
+                          .arg(cover, box)};
 }
 
 /// The JSON of a built-in lesson, for matching its id without a full load.
@@ -241,6 +361,9 @@ LoadResult LessonLoader::loadBytes(const QByteArray& json, const QString& source
     if (const std::optional<sim::Error> e = sim::validateScene(parsed.lesson.scene))
         return failure({problemAtKey(QString::fromStdString(e->keyPath), QString::fromStdString(e->message), source,
                                      json, overrides)});
+
+    if (const auto p = sceneProblem(parsed.lesson.scene))
+        return failure({problemAtKey(p->keyPath, p->problem, source, json, overrides)});
 
     parsed.lesson.source = source;
     LoadResult result;

@@ -1,5 +1,7 @@
 #include "lesson_parser.h"
 
+#include "lesson_markup.h"
+
 #include "lesson_controls.h"
 #include "lesson_limits.h"
 #include "nearest_key.h"
@@ -9,6 +11,7 @@
 #include <QJsonArray>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -855,6 +858,72 @@ const QStringList& overlayNames()
     return names;
 }
 
+/// Every text a reader sees is in the markup subset and within its length
+/// (lesson_markup.h): a problem names the field and the character.
+void checkProse(Reader& r, const Lesson& lesson)
+{
+    auto check = [&r](const QString& path, const QString& text, qsizetype maxChars) {
+        if (const auto problem = checkMarkup(text, maxChars))
+            r.fail(path, QStringLiteral("character %1: %2").arg(problem->at + 1).arg(problem->message));
+    };
+    auto checkList = [&](const QString& path, const QStringList& texts) {
+        for (qsizetype i = 0; i < texts.size(); ++i)
+            check(join(path, i), texts[i], kMaxProseChars);
+    };
+    check(QStringLiteral("title"), lesson.title, kMaxProseChars);
+    check(QStringLiteral("text"), lesson.text, kMaxTextChars);
+    checkList(QStringLiteral("challenges"), lesson.challenges);
+    check(QStringLiteral("teacher.goal"), lesson.teacher.goal, kMaxProseChars);
+    checkList(QStringLiteral("teacher.misconceptions"), lesson.teacher.misconceptions);
+    checkList(QStringLiteral("teacher.answers"), lesson.teacher.answers);
+    for (std::size_t k = 0; k < lesson.predict.size(); ++k) {
+        const QString path = join(QStringLiteral("predict"), static_cast<qsizetype>(k));
+        check(join(path, "ask"), lesson.predict[k].ask, kMaxProseChars);
+        for (qsizetype c = 0; c < lesson.predict[k].choices.size(); ++c)
+            check(join(join(join(path, "choices"), c), "label"), lesson.predict[k].choices[c], kMaxProseChars);
+    }
+    for (std::size_t k = 0; k < lesson.compare.size(); ++k)
+        check(join(join(QStringLiteral("compare"), static_cast<qsizetype>(k)), "label"), lesson.compare[k].label,
+              kMaxProseChars);
+    for (std::size_t k = 0; k < lesson.claims.size(); ++k)
+        check(join(join(QStringLiteral("claims"), static_cast<qsizetype>(k)), "says"),
+              QString::fromStdString(lesson.claims[k].text), kMaxProseChars);
+}
+
+/// A whole number with its thousands grouped: "360,000,000,000".
+QString groupedDigits(double v)
+{
+    QString digits = QString::number(v, 'f', 0);
+    for (qsizetype at = digits.size() - 3; at > 0; at -= 3)
+        digits.insert(at, QLatin1Char(','));
+    return digits;
+}
+
+/// Each claim runs its scene to `at`: refused when that takes more sub-steps
+/// than kMaxClaimSteps, with the claim's own dt and sub-steps where it sets them.
+void checkClaimWork(Reader& r, const Lesson& lesson)
+{
+    const sim::TimeSettings& time = lesson.scene.settings.time;
+    for (std::size_t k = 0; k < lesson.claims.size(); ++k) {
+        const sim::Claim& c = lesson.claims[k];
+        double dt = time.dt, substeps = time.substeps;
+        for (const auto& [key, value] : c.set) {
+            if (key == "time.dt")
+                dt = value;
+            else if (key == "time.substeps")
+                substeps = value;
+        }
+        if (!(dt > 0.0))
+            continue; // a bad dt is reported where it is set
+        const double steps = std::ceil(c.at / dt) * std::max(1.0, substeps);
+        if (steps > kMaxClaimSteps)
+            r.fail(join(join(QStringLiteral("claims"), static_cast<qsizetype>(k)), "at"),
+                   QStringLiteral("%1 s at dt = %2 s is %3 sub-steps, more than the %4 a claim may run; claim an "
+                                  "earlier time or use a larger dt")
+                       .arg(numberText(c.at), numberText(dt), groupedDigits(steps), groupedDigits(kMaxClaimSteps)));
+    }
+}
+
 ParseResult parseLesson(const QJsonObject& root)
 {
     ParseResult result;
@@ -908,6 +977,8 @@ ParseResult parseLesson(const QJsonObject& root)
         parseCompare(r, *a, lesson.compare);
     if (const auto a = r.array(root, top, "predict", QStringLiteral("an array of questions")))
         parsePredict(r, *a, static_cast<int>(lesson.claims.size()), lesson.predict);
+    checkProse(r, lesson);
+    checkClaimWork(r, lesson);
     return result;
 }
 

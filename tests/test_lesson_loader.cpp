@@ -5,6 +5,7 @@
 #include "sim_test_util.h"
 
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_markup.h"
 #include "sim/names.h"
 #include "sim/world.h"
 
@@ -181,6 +182,11 @@ private slots:
     void presentModelWithEnabledFalseIsOff();
     void badInput_data();
     void badInput();
+    void lessonTextIsASafeSubset_data();
+    void lessonTextIsASafeSubset();
+    void markupKeepsOnlyTheSubset();
+    void scenesThatCannotBeAreRefused_data();
+    void scenesThatCannotBeAreRefused();
     void everyProblemIsReported();
     void tooLargeFile();
     void tooManyBalls();
@@ -690,6 +696,135 @@ void TestLessonLoader::badInput()
         QVERIFY2(!e.contains('\n'), qPrintable(e)); // one line each
 }
 
+// A lesson's words are input from a stranger: only the markup subset of
+// lessons/lesson_markup.h loads, and a refusal names the field and the
+// character. Before, <img src="/dev/zero"> validated and hung the window,
+// and <a href="/etc/passwd"> showed that file in the lesson pane.
+void TestLessonLoader::lessonTextIsASafeSubset_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error"); // empty: loads
+
+    auto text = [](const QByteArray& t) { return minimal("\"text\": \"" + t + "\""); };
+    QTest::newRow("a picture by absolute path") << text(R"(<img src=\"/dev/zero\">)")
+        << "t.json:1:26: text: character 1: <img src=\"/dev/zero\">: a picture comes only from the lesson's own folder, "
+           "by a name such as \"pictures/orbit.png\" (no path, no URL)";
+    QTest::newRow("a picture by file URL") << text(R"(ok <img src=\"file:///etc/x.png\">)")
+        << "t.json:1:26: text: character 4: <img src=\"file:///etc/x.png\">: a picture comes only from the lesson's own "
+           "folder, by a name such as \"pictures/orbit.png\" (no path, no URL)";
+    QTest::newRow("a picture above the folder") << text(R"(<img src=\"../secret.png\">)")
+        << "t.json:1:26: text: character 1: <img src=\"../secret.png\">: a picture comes only from the lesson's own "
+           "folder, by a name such as \"pictures/orbit.png\" (no path, no URL)";
+    QTest::newRow("a link to a local file") << text(R"(<a href=\"/etc/passwd\">Answers</a>)")
+        << "t.json:1:26: text: character 1: <a href=\"/etc/passwd\">: a link may only go to a web page (https://…)";
+    QTest::newRow("a style that loads a picture") << text(R"(<p style=\"background-image:url(/x.png)\">x</p>)")
+        << "t.json:1:26: text: character 4: <p> takes no attributes (style=…)";
+    QTest::newRow("a tag outside the subset") << text(R"(<p>one</p><table><tr><td>x</td></tr></table>)")
+        << "t.json:1:26: text: character 11: <table> is not allowed in lesson text (allowed: <p> <br> <b> <i> <em> "
+           "<strong> <u> <sub> <sup> <code> <ul> <ol> <li> <img src> <a href>)";
+    QTest::newRow("a tag that never closes") << text(R"(<p>one <b)")
+        << "t.json:1:26: text: character 8: <b has no closing >";
+    QTest::newRow("a NUL character") << text(R"(a\u0000b)")
+        << "t.json:1:26: text: character 2: a NUL character (U+0000), which is not text";
+    QTest::newRow("half a surrogate pair") << text(R"(a\ud800b)")
+        << "t.json:1:26: text: character 2: half of a surrogate pair (U+D800), which is no character";
+    QTest::newRow("a text over the limit") << text(QByteArray(20001, 'x'))
+        << "t.json:1:26: text: character 20001: 20001 characters is more than the limit of 20000";
+    QTest::newRow("a picture in a challenge") << minimal(R"("challenges": ["fine", "<img src=\"/dev/zero\">"])")
+        << "t.json:1:49: challenges.1: character 1: <img src=\"/dev/zero\">: a picture comes only from the lesson's own "
+           "folder, by a name such as \"pictures/orbit.png\" (no path, no URL)";
+    QTest::newRow("a NUL in the title") << minimal(R"("title": "a\u0000b")")
+        << "t.json:1:26: title: character 2: a NUL character (U+0000), which is not text";
+    // What the subset allows loads.
+    QTest::newRow("a comparison is text") << text(R"(keep k·dt < 2 and x<0, then A & B)") << QString();
+    QTest::newRow("the subset") << text(R"(<p><b>b</b> <i>i</i> v<sub>x</sub> r<sup>2</sup> &lt;&amp;&gt; &#8776;</p><ul><li>a</li></ul>)")
+                                << QString();
+    QTest::newRow("a picture of the folder and a web link")
+        << text(R"(<img src=\"pictures/orbit.png\" alt=\"orbit\"> <a href=\"https://example.org/a?b=1\">more</a>)")
+        << QString();
+}
+
+void TestLessonLoader::lessonTextIsASafeSubset()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    const LoadResult r = loadText(json);
+    if (error.isEmpty()) {
+        QVERIFY2(r.ok(), qPrintable(r.errors().join(QLatin1Char('\n'))));
+        return;
+    }
+    QVERIFY(!r.ok());
+    QCOMPARE(firstError(r), error);
+}
+
+// What the lesson pane shows keeps only the subset: anything else is shown
+// as the characters it was written with, so nothing in it loads a file.
+void TestLessonLoader::markupKeepsOnlyTheSubset()
+{
+    using lessons::markupToHtml;
+    QCOMPARE(markupToHtml(QStringLiteral("<p>a <b>b</b> &lt; c</p>")).html, QStringLiteral("<p>a <b>b</b> &lt; c</p>"));
+    QCOMPARE(markupToHtml(QStringLiteral("<p>x <span style=\"a\">y</span></p>")).html,
+             QStringLiteral("<p>x &lt;span style=&quot;a&quot;&gt;y&lt;/span&gt;</p>"));
+    // A picture by path and a link to a file keep their words, not their targets.
+    const lessons::MarkupHtml html =
+        markupToHtml(QStringLiteral("<p><img src=\"/dev/zero\" alt=\"z\"><a href=\"/etc/passwd\">answers</a></p>"));
+    QCOMPARE(html.html, QStringLiteral("<p>[z]answers</p>"));
+    QVERIFY(html.images.isEmpty());
+    // A picture of the folder and a web link stay; pictures off gives the alt text.
+    const QString good = QStringLiteral("<p><img src=\"a.png\" alt=\"A\"> <a href=\"https://example.org/\">w</a></p>");
+    QCOMPARE(markupToHtml(good).images, QStringList{QStringLiteral("a.png")});
+    QCOMPARE(markupToHtml(good).html, QStringLiteral("<p><img src=\"a.png\" alt=\"A\"> <a href=\"https://example.org/\">w</a></p>"));
+    QCOMPARE(markupToHtml(good, false, false).html, QStringLiteral("<p>[A] w</p>"));
+    // Plain text becomes paragraphs; a "<" in it is a character.
+    QCOMPARE(markupToHtml(QStringLiteral("a < b\n\nc")).html, QStringLiteral("<p>a &lt; b</p><p>c</p>"));
+    QCOMPARE(lessons::markupToPlainText(QStringLiteral("<b>Gravity</b> &amp; drag")), QStringLiteral("Gravity & drag"));
+}
+
+// Refused before any work, with the number that would be needed: before,
+// a 97-byte lesson spawning 20,000 colliding balls in the 600 x 400 box took
+// 49 s and 2.9 GB for four steps, a ball at (5000, 5000) was moved to
+// (590, 390) without a word, and a claim at 3600 s with dt = 1e-8 s kept
+// `check` busy for minutes.
+void TestLessonLoader::scenesThatCannotBeAreRefused_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error"); // empty: loads
+
+    const QByteArray collide = R"("models": {"collisions": {}, "gravity": {}})";
+    QTest::newRow("more colliding balls than the box holds")
+        << minimal(R"("spawn": {"count": 20000}, )" + collide)
+        << "t.json:1:36: spawn.count: 20000 colliding balls of radius 4 to 12 px would cover 18.2 times the area of the "
+           "600 × 400 px box; colliding balls fill at most 91% of a box, so 999 of them fit at most (or make the box "
+           "larger or the balls smaller)";
+    QTest::newRow("as many balls that pass through each other") << minimal(R"("spawn": {"count": 20000})") << QString();
+    QTest::newRow("the densest box that still loads") << minimal(R"("spawn": {"count": 999}, )" + collide) << QString();
+    QTest::newRow("a ball beyond the right wall") << minimal(R"("balls": [{"x": 300, "y": 200}, {"x": 5000, "y": 50}])")
+        << "t.json:1:59: balls.1.x: x = 5000 px puts the ball's centre outside the 600 × 400 px box (x from 0 to 600 "
+           "px) while the right wall is on; put the ball inside, or switch that wall off";
+    QTest::newRow("the same ball without walls")
+        << minimal(R"("world": {"walls": []}, "balls": [{"x": 300, "y": 200}, {"x": 5000, "y": 50}])") << QString();
+    QTest::newRow("a ball larger than the box") << minimal(R"("balls": [{"x": 300, "y": 200, "r": 10000}])")
+        << "t.json:1:57: balls.0.r: a ball of radius 10000 px does not fit between the walls of the 600 × 400 px box "
+           "(a radius of 200 px at most)";
+    QTest::newRow("a claim that would run for hours")
+        << minimal(R"("time": {"dt": 1e-8}, "balls": [{"x": 300, "y": 200}], "claims": [{"says": "x", "measure": "speed", "ball": 0, "at": 3600, "near": 0, "within": 1}])")
+        << "t.json:1:137: claims.0.at: 3600 s at dt = 1e-08 s is 360,000,000,000 sub-steps, more than the 1,000,000 a "
+           "claim may run; claim an earlier time or use a larger dt";
+}
+
+void TestLessonLoader::scenesThatCannotBeAreRefused()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    const LoadResult r = loadText(json);
+    if (error.isEmpty()) {
+        QVERIFY2(r.ok(), qPrintable(r.errors().join(QLatin1Char('\n'))));
+        return;
+    }
+    QVERIFY(!r.ok());
+    QCOMPARE(firstError(r), error);
+}
+
 void TestLessonLoader::everyProblemIsReported()
 {
     const LoadResult r = loadText(minimal(
@@ -824,6 +959,10 @@ void TestLessonLoader::badOverrides_data()
                               << R"(--set models.wind.mode=gust: models.wind.mode: "gust" is not one of off, random, smoothed, noise, pointer)";
     QTest::newRow("index past the end") << "balls.9.x" << "1"
                                         << "--set balls.9.x=1: balls.9: index 9 is past the end (the array has 4 entries)";
+    // The override made ball 4, so its missing y is the override's, not the
+    // file's (before: ":/lessons/07-gravity.json:18:3: balls.4.y: missing").
+    QTest::newRow("a ball the override made") << "balls.4.x" << "1"
+                                              << "--set balls.4.x=1: balls.4.y: missing; give the ball's centre y in px";
     QTest::newRow("key into a number") << "models.gravity.y.z" << "1"
                                        << "--set models.gravity.y.z=1: models.gravity.y: is a number, so it has no key \"z\"";
     QTest::newRow("word into an array") << "balls.first" << "1"
@@ -887,17 +1026,17 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     s.speedLimit = {true, 1e9};
     s.collisions = {sim::Detection::Brute, sim::Response::Axis2D, 0.3, true};
     sim::Ball a;
-    a.position = {0.1 + 0.2, 1e7};
+    a.position = {0.1 + 0.2, -1e7}; // above the box, where no wall is (below it the bottom wall refuses it)
     a.velocity = {-1e7, 1.0 / 7.0};
     a.radius = 1e-3;
     a.mass = 1e15;
     a.charge = -1.0 / 3.0;
     a.color = 0x0a0b0c;
     sim::Ball b;
-    b.radius = 1e4; // mass 0: the sphere mass, written without "mass"
+    b.radius = 1e-4; // mass 0: the sphere mass, written without "mass"; colliding, so it must fit the tiny box
     l.scene.balls = {a, b};
     l.scene.spawn = {17,   0.5,   0.5 + 1e-12, 0.0, 1e7, ~std::uint64_t{0}, {0xffffff, 0x000000, 0x123456},
-                     true, false, 0.1 + 0.2,   123};
+                     true, false, 0.1 + 0.2,   101}; // 101 colliding balls of 0.5 px fit the tiny box
 
     const QByteArray saved = saveLesson(l);
     const LoadResult r = loadText(saved);

@@ -1,6 +1,7 @@
 #include "handbook.h"
 
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_markup.h"
 
 #include <QObject>
 #include <QTextDocument>
@@ -9,22 +10,25 @@ namespace forcelab {
 
 namespace {
 
+// A lesson's words as HTML that loads nothing: the markup subset, with
+// pictures as their names and without links (the handbook is a file a
+// browser opens, far from the lesson's folder).
+QString prose(const QString& text)
+{
+    return lessons::markupToPlainText(text).toHtmlEscaped();
+}
+
 QString list(const QStringList& items, const char* tag)
 {
     QString html = QStringLiteral("<%1>").arg(QLatin1String(tag));
     for (const QString& item : items)
-        html += QStringLiteral("<li>%1</li>").arg(item.toHtmlEscaped());
+        html += QStringLiteral("<li>%1</li>").arg(prose(item));
     return html + QStringLiteral("</%1>").arg(QLatin1String(tag));
 }
 
 QString lessonText(const Lesson& lesson)
 {
-    if (Qt::mightBeRichText(lesson.text))
-        return lesson.text;
-    QString html;
-    for (const QString& paragraph : lesson.text.split(QStringLiteral("\n\n"), Qt::SkipEmptyParts))
-        html += QStringLiteral("<p>%1</p>").arg(paragraph.toHtmlEscaped());
-    return html;
+    return lessons::markupToHtml(lesson.text, false, false).html;
 }
 
 } // namespace
@@ -36,7 +40,7 @@ QString teacherNotesHtml(const Lesson& lesson)
         return {};
     QString html;
     if (!t.goal.isEmpty() || t.minutes > 0) {
-        html += QStringLiteral("<p><b>%1</b> %2").arg(QObject::tr("Goal:"), t.goal.toHtmlEscaped());
+        html += QStringLiteral("<p><b>%1</b> %2").arg(QObject::tr("Goal:"), prose(t.goal));
         if (t.minutes > 0)
             html += QStringLiteral(" <i>(%1)</i>").arg(QObject::tr("about %1 minutes").arg(t.minutes));
         html += QStringLiteral("</p>");
@@ -45,7 +49,7 @@ QString teacherNotesHtml(const Lesson& lesson)
         html += QStringLiteral("<p><b>%1</b></p><ol>").arg(QObject::tr("Expected answers"));
         for (qsizetype i = 0; i < t.answers.size(); ++i)
             html += QStringLiteral("<li><i>%1</i><br>%2</li>")
-                        .arg(lesson.challenges.value(i).toHtmlEscaped(), t.answers[i].toHtmlEscaped());
+                        .arg(prose(lesson.challenges.value(i)), prose(t.answers[i]));
         html += QStringLiteral("</ol>");
     }
     if (!t.misconceptions.isEmpty())
@@ -74,7 +78,7 @@ QString handbookHtml(const QList<Lesson>& lessons)
                                  "scene is checked to show (forcelab-cli check)."));
     for (const Lesson& lesson : lessons) {
         html += QStringLiteral("<section><h2>%1</h2><p class='stage'>%2</p>")
-                    .arg(lesson.title.toHtmlEscaped(),
+                    .arg(prose(lesson.title),
                          lesson.stage == 0 ? QObject::tr("Showcase")
                          : lesson.stage <= 29 ? QObject::tr("Stage %1 of 29").arg(lesson.stage)
                                               : QObject::tr("Beyond the course"));

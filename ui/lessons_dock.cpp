@@ -1,5 +1,7 @@
 #include "lessons_dock.h"
 
+#include "lessons/lesson_markup.h"
+
 #include "handbook.h"
 
 #include "lessons/lesson_loader.h"
@@ -51,9 +53,8 @@ LessonsDock::LessonsDock(QWidget* parent)
             showText(*m_lesson);
     });
 
-    m_text = new QTextBrowser;
+    m_text = new LessonTextView;
     m_text->setObjectName(QStringLiteral("lessonText"));
-    m_text->setOpenExternalLinks(true);
     m_text->setFocusPolicy(Qt::ClickFocus);
     m_text->document()->setDocumentMargin(10);
 
@@ -234,16 +235,15 @@ void LessonsDock::showText(const Lesson& lesson)
         where += (where.isEmpty() ? QString() : QStringLiteral(" · ")) + QFileInfo(lesson.source).fileName();
     if (!where.isEmpty())
         html += QStringLiteral("<p style='color:#5a6270; margin-top:0'>%1</p>").arg(where.toHtmlEscaped());
-    if (Qt::mightBeRichText(lesson.text)) {
-        html += lesson.text;
-    } else {
-        for (const QString& paragraph : lesson.text.split(QStringLiteral("\n\n"), Qt::SkipEmptyParts))
-            html += QStringLiteral("<p>%1</p>").arg(paragraph.toHtmlEscaped());
-    }
+    // The lesson's own words in the markup subset only: nothing in them can
+    // open a file or a page (lessons/lesson_markup.h).
+    const lessons::MarkupHtml text = lessons::markupToHtml(lesson.text);
+    html += text.html;
     if (!lesson.challenges.isEmpty()) {
         html += QStringLiteral("<h3>%1</h3><ol>").arg(tr("Try this"));
         for (const QString& challenge : lesson.challenges)
-            html += QStringLiteral("<li style='margin-bottom:6px'>%1</li>").arg(challenge.toHtmlEscaped());
+            html += QStringLiteral("<li style='margin-bottom:6px'>%1</li>")
+                        .arg(lessons::markupToPlainText(challenge).toHtmlEscaped());
         html += QStringLiteral("</ol>");
     }
     // The teacher's notes only when asked for, so a projected dock shows none.
@@ -252,7 +252,10 @@ void LessonsDock::showText(const Lesson& lesson)
         html += QStringLiteral("<h3>%1</h3>").arg(tr("For the teacher")) +
                 (notes.isEmpty() ? tr("<p>This lesson has no teacher notes.</p>") : notes);
     }
-    m_text->setHtml(html);
+    const QString folder = lesson.source.startsWith(QStringLiteral(":/"))
+                               ? QStringLiteral(":/lessons")
+                               : QFileInfo(lesson.source).absolutePath();
+    m_text->showLesson(html, text.images, lesson.source.isEmpty() ? QString() : folder);
 }
 
 } // namespace forcelab

@@ -5,6 +5,7 @@
 // asks: choosing a lesson emits lessonChosen(source); the main window loads it
 // and tells the dock with setCurrentLesson.
 
+#include "lesson_text_view.h"
 #include "lessons/lesson.h"
 
 #include <QDockWidget>
@@ -57,7 +58,7 @@ public:
     QAction* teacherNotesAction() const { return m_teacherAction; }
 
     QTreeWidget* tree() const { return m_tree; }
-    QTextBrowser* textBrowser() const { return m_text; }
+    LessonTextView* textBrowser() const { return m_text; }
 
 signals:
     /// The user picked a lesson in the tree.
@@ -68,7 +69,7 @@ private:
     QTreeWidgetItem* itemFor(const QString& source) const;
 
     QTreeWidget* m_tree = nullptr;
-    QTextBrowser* m_text = nullptr;
+    LessonTextView* m_text = nullptr;
     QToolButton* m_previousButton = nullptr;
     QToolButton* m_nextButton = nullptr;
     QString m_current;

@@ -1,5 +1,9 @@
 #include "main_window.h"
 
+#include "lessons/atomic_file.h"
+#include "lessons/lesson_markup.h"
+#include "png_file.h"
+
 #include "accuracy_dock.h"
 #include "canvas.h"
 #include "overlay_actions.h"
@@ -651,7 +655,8 @@ bool MainWindow::setLesson(const Lesson& lesson)
     updateStageReadout();
     m_stageSliders->setLessonControls(lesson.controls);
     layoutStage(); // the box's shape decides where the stage bar goes
-    setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab") : tr("%1 — ForceLab").arg(lesson.title));
+    setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab")
+                                          : tr("%1 — ForceLab").arg(lessons::markupToPlainText(lesson.title)));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
     // Undo steps belong to the lesson they were made in.
@@ -788,9 +793,9 @@ bool MainWindow::saveLessonTo(const QString& path)
     static const QRegularExpression validId(QStringLiteral("^[A-Za-z0-9_-]{1,64}$"));
     if (const QString stem = QFileInfo(path).completeBaseName(); validId.match(stem).hasMatch())
         lesson.id = stem;
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(saveLesson(lesson)) < 0 || !file.commit()) {
-        showError(tr("%1: cannot write the lesson: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+    QString why;
+    if (!lessons::writeFileAtomically(path, saveLesson(lesson), &why)) {
+        showError(tr("Lesson not saved: %1").arg(why));
         return false;
     }
     statusBar()->showMessage(tr("Saved %n ball(s) and the settings to %1", nullptr, int(lesson.scene.balls.size()))
@@ -840,8 +845,9 @@ bool MainWindow::saveScreenshotTo(const QString& path, double scale)
     const QScreen* s = m_canvas->screen() ? m_canvas->screen() : QGuiApplication::primaryScreen();
     const double dpr = (s ? s->devicePixelRatio() : 1.0) * scale;
     const QImage image = m_canvas->renderImage(pictureSize(), dpr);
-    if (!image.save(path, "PNG")) {
-        showError(tr("%1: cannot write the picture").arg(QDir::toNativeSeparators(path)));
+    QString why;
+    if (!writePngAtomically(path, image, &why)) {
+        showError(tr("Picture not saved: %1").arg(why));
         return false;
     }
     statusBar()->showMessage(tr("Saved the picture to %1").arg(QDir::toNativeSeparators(path)), 5000);
@@ -880,9 +886,10 @@ void MainWindow::exportHandbook()
                                                       QStringLiteral("forcelab-handbook.html"), tr("HTML (*.html)"));
     if (path.isEmpty())
         return;
-    QFile out(path);
-    if (!out.open(QIODevice::WriteOnly) || out.write(builtInHandbookHtml().toUtf8()) < 0) {
-        QMessageBox::warning(this, tr("Export Teacher Handbook"), tr("%1: cannot write: %2").arg(path, out.errorString()));
+    QString why;
+    if (!lessons::writeFileAtomically(path, builtInHandbookHtml().toUtf8(), &why)) {
+        QMessageBox::warning(this, tr("Export Teacher Handbook"),
+                             tr("%1\nThe handbook was not written; an old file there is unchanged.").arg(why));
         return;
     }
     statusBar()->showMessage(tr("Handbook written to %1").arg(path), 4000);
@@ -1046,7 +1053,8 @@ MainWindow::StageReadout MainWindow::stageReadoutText() const
 
 void MainWindow::updateStageCaption()
 {
-    m_stageBar->setCaption(m_lesson.title, m_lesson.challenges.value(0));
+    m_stageBar->setCaption(lessons::markupToPlainText(m_lesson.title),
+                           lessons::markupToPlainText(m_lesson.challenges.value(0)));
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event)

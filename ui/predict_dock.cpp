@@ -1,5 +1,7 @@
 #include "predict_dock.h"
 
+#include "lessons/lesson_markup.h"
+
 #include "simulation_controller.h"
 
 #include "sim/claims.h"
@@ -42,6 +44,7 @@ PredictDock::PredictDock(SimulationController* controller, QWidget* parent)
     m_ask = new QLabel(body);
     m_ask->setObjectName(QStringLiteral("predictQuestion"));
     m_ask->setWordWrap(true);
+    m_ask->setTextFormat(Qt::PlainText); // a lesson's words never load what an <img> names
     QFont big = m_ask->font();
     big.setPointSizeF(big.pointSizeF() * 1.2);
     big.setBold(true);
@@ -133,7 +136,7 @@ void PredictDock::showQuestion()
     m_question = std::clamp(m_question, 0, static_cast<int>(m_lesson.predict.size()) - 1);
     const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
     const sim::Claim& claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
-    m_ask->setText(q.ask);
+    m_ask->setText(lessons::markupToPlainText(q.ask));
     const bool choices = !q.choices.isEmpty();
     m_number->setVisible(!choices);
     m_unit->setVisible(!choices);
@@ -145,7 +148,7 @@ void PredictDock::showQuestion()
         delete b;
     }
     for (qsizetype k = 0; k < q.choices.size(); ++k) {
-        auto* b = new QRadioButton(q.choices[k], m_choiceBox);
+        auto* b = new QRadioButton(lessons::markupToPlainText(q.choices[k]), m_choiceBox);
         b->setObjectName(QStringLiteral("predictChoice%1").arg(k));
         m_choices->addButton(b, static_cast<int>(k));
         m_choiceLayout->addWidget(b);
