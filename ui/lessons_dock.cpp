@@ -112,7 +112,8 @@ QList<LessonsDock::Entry> LessonsDock::builtInCourse()
             qWarning("Lessons: %s", qPrintable(result.errors().value(0)));
             continue;
         }
-        entries.append(Entry{result.lesson->source, result.lesson->title, result.lesson->stage});
+        entries.append(
+            Entry{result.lesson->source, lessons::markupToPlainText(result.lesson->title), result.lesson->stage});
     }
     // builtInFiles() is sorted by file name; keep that order within a stage.
     std::stable_sort(entries.begin(), entries.end(),
@@ -225,7 +226,8 @@ void LessonsDock::setNavigationActions(QAction* previous, QAction* next)
 
 void LessonsDock::showText(const Lesson& lesson)
 {
-    QString html = QStringLiteral("<h2 style='margin-bottom:2px'>%1</h2>").arg(lesson.title.toHtmlEscaped());
+    QString html = QStringLiteral("<h2 style='margin-bottom:2px'>%1</h2>")
+                       .arg(lessons::markupToPlainText(lesson.title).toHtmlEscaped());
     QString where;
     if (lesson.stage > 0 && lesson.stage <= 29)
         where = tr("Stage %1 of 29").arg(lesson.stage);
