@@ -86,44 +86,6 @@ void mirrorAxis(const Axis& ax, double e, double& p, double& u)
         clampAxis(ax, e, p, u);
 }
 
-// When does the ball touch `wall` while moving into it? The path is
-// p(t) = p0 + u t + ½ a t²; `into` is +1 for the high wall (moving into it
-// means dp/dt > 0) and −1 for the low wall. Returns the smallest such t in
-// [0, tMax], or NaN. A root at which the ball moves away from the wall is not
-// a contact: it is the moment the ball leaves the wall it has just bounced
-// off. A root with zero speed counts only when the acceleration presses the
-// ball into the wall (it rests there). The roots use the cancellation-free
-// form of the quadratic formula: q = −½ (B + sign(B) √D), roots q / A and C / q.
-double contactTime(double p0, double u, double a, double wall, double into, double tMax)
-{
-    const double A = 0.5 * a;
-    const double B = u;
-    const double C = p0 - wall;
-    double best = std::numeric_limits<double>::quiet_NaN();
-    auto consider = [&](double t) {
-        if (!(t >= 0.0 && t <= tMax) || t >= best)
-            return;
-        const double towards = into * (u + a * t);
-        if (towards > 0.0 || (towards == 0.0 && into * a > 0.0))
-            best = t;
-    };
-    if (A == 0.0) {
-        if (B != 0.0)
-            consider(-C / B);
-        return best;
-    }
-    const double disc = B * B - 4.0 * A * C;
-    if (disc < 0.0)
-        return best;
-    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
-    if (q != 0.0) {
-        consider(q / A);
-        consider(C / q);
-    } else {
-        consider(0.0);
-    }
-    return best;
-}
 
 // How a ball moved during the step, as the integrator sees it: from p0 it
 // drifts as p(t) = p0 + d t + ½ a t², and its velocity at the end is
@@ -202,8 +164,8 @@ void exactAxis(const Axis& ax, double e, const PathInStep& path, double p0, doub
                 return;
             }
         }
-        const double tLo = ax.loOn ? contactTime(start, speed, a, ax.lo, -1.0, left) : std::nan("");
-        const double tHi = ax.hiOn ? contactTime(start, speed, a, ax.hi, +1.0, left) : std::nan("");
+        const double tLo = ax.loOn ? wallContactTime(start, speed, a, ax.lo, -1.0, left) : std::nan("");
+        const double tHi = ax.hiOn ? wallContactTime(start, speed, a, ax.hi, +1.0, left) : std::nan("");
         const bool hitLo = !std::isnan(tLo) && (std::isnan(tHi) || tLo <= tHi);
         const double t = hitLo ? tLo : tHi;
         if (std::isnan(t)) { // the path and the integrator disagree: fall back
@@ -280,6 +242,45 @@ double rightOfMiddle(double middle, double r)
 }
 
 } // namespace
+
+// When does the ball touch `wall` while moving into it? The path is
+// p(t) = p0 + u t + ½ a t²; `into` is +1 for the high wall (moving into it
+// means dp/dt > 0) and −1 for the low wall. Returns the smallest such t in
+// [0, tMax], or NaN. A root at which the ball moves away from the wall is not
+// a contact: it is the moment the ball leaves the wall it has just bounced
+// off. A root with zero speed counts only when the acceleration presses the
+// ball into the wall (it rests there). The roots use the cancellation-free
+// form of the quadratic formula: q = −½ (B + sign(B) √D), roots q / A and C / q.
+double wallContactTime(double p0, double u, double a, double wall, double into, double tMax)
+{
+    const double A = 0.5 * a;
+    const double B = u;
+    const double C = p0 - wall;
+    double best = std::numeric_limits<double>::quiet_NaN();
+    auto consider = [&](double t) {
+        if (!(t >= 0.0 && t <= tMax) || t >= best)
+            return;
+        const double towards = into * (u + a * t);
+        if (towards > 0.0 || (towards == 0.0 && into * a > 0.0))
+            best = t;
+    };
+    if (A == 0.0) {
+        if (B != 0.0)
+            consider(-C / B);
+        return best;
+    }
+    const double disc = B * B - 4.0 * A * C;
+    if (disc < 0.0)
+        return best;
+    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    if (q != 0.0) {
+        consider(q / A);
+        consider(C / q);
+    } else {
+        consider(0.0);
+    }
+    return best;
+}
 
 std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
                         Matrix2X& x, Matrix2X& v)

@@ -27,4 +27,11 @@ struct StepStart {
 std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
                         Matrix2X& x, Matrix2X& v);
 
+/// s, the first moment in [0, tMax] at which a coordinate moving as
+/// p0 + u t + ½ a t² reaches `wall` while moving into it (`into` +1 for the
+/// high wall, −1 for the low one), or NaN. A root with no speed counts only
+/// when the acceleration presses into the wall. The exact wall model and
+/// continuous detection's wall impacts share it.
+double wallContactTime(double p0, double u, double a, double wall, double into, double tMax);
+
 } // namespace forcelab::sim

@@ -1,6 +1,7 @@
 #include "impact_events.h"
 
 #include "../integrator_info.h"
+#include "../walls.h"
 #include "positional_correction.h"
 #include "response.h"
 #include "time_of_impact.h"
@@ -13,41 +14,6 @@ namespace forcelab::sim {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// When does a coordinate moving as p(s) = p + u s + ½ a s² reach `wall`
-// while moving into it (`into` +1: the high wall, −1: the low wall)? The
-// smallest such s in [0, sMax], or NaN. The same rule as the exact wall model
-// (walls.cpp): a root where the ball moves away is the moment it leaves the
-// wall; a root with no speed counts only when the acceleration presses the
-// ball into the wall. Cancellation-free roots: q = −½ (B + sign(B) √D), q/A, C/q.
-double wallTime(double p, double u, double a, double wall, double into, double sMax)
-{
-    const double A = 0.5 * a, B = u, C = p - wall;
-    double best = kNaN;
-    auto consider = [&](double s) {
-        if (!(s >= 0.0 && s <= sMax) || s >= best)
-            return;
-        const double towards = into * (u + a * s);
-        if (towards > 0.0 || (towards == 0.0 && into * a > 0.0))
-            best = s;
-    };
-    if (A == 0.0) {
-        if (B != 0.0)
-            consider(-C / B);
-        return best;
-    }
-    const double disc = B * B - 4.0 * A * C;
-    if (disc < 0.0)
-        return best;
-    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
-    if (q != 0.0) {
-        consider(q / A);
-        consider(C / q);
-    } else {
-        consider(0.0);
-    }
-    return best;
-}
 
 // The polynomial f(s) = Σ k[i] sⁱ (degree 4) shifted to s = a + x: the
 // coefficients m of f(a + x) = Σ m[i] xⁱ (repeated synthetic division).
@@ -236,7 +202,7 @@ void ImpactEvents::planWall(int i, double now)
         for (int side = 0; side < 2; ++side) {
             if (!q.on[k][side])
                 continue;
-            const double s = wallTime(p[k], u[k], q.a[k], side ? q.hi[k] : q.lo[k], side ? 1.0 : -1.0, left);
+            const double s = wallContactTime(p[k], u[k], q.a[k], side ? q.hi[k] : q.lo[k], side ? 1.0 : -1.0, left);
             if (s < best || (std::isnan(best) && !std::isnan(s))) {
                 best = s;
                 code = 2 * k + side;
