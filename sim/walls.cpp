@@ -187,13 +187,10 @@ void exactAxis(const Axis& ax, double e, const PathInStep& path, double p0, doub
         // Pulled back towards this wall, and not reaching the other one?
         const double pull = hitLo ? -a : a; // px/s², acceleration towards the wall just hit
         const bool otherOn = hitLo ? ax.hiOn : ax.loOn;
-        if (pull > 0.0 && e < 1.0 && !(otherOn && speed * speed >= 2.0 * pull * (ax.hi - ax.lo))) {
-            const double settle = 2.0 * std::abs(speed) / (pull * (1.0 - e)); // s, all bounces to come
-            if (settle <= left) {
-                p = start;
-                u = 0.0;
-                return;
-            }
+        if (bouncesSettleWithin(speed, pull, e, otherOn, ax.hi - ax.lo, left)) {
+            p = start;
+            u = 0.0;
+            return;
         }
         // The Euler methods cannot lift a ball off the wall by less than one
         // step's kick: a rebound slower than the kick towards this wall is
@@ -242,6 +239,13 @@ double rightOfMiddle(double middle, double r)
 }
 
 } // namespace
+
+bool bouncesSettleWithin(double speed, double pull, double e, bool otherWall, double span, double within)
+{
+    if (!(pull > 0.0 && e < 1.0) || (otherWall && speed * speed >= 2.0 * pull * span))
+        return false;
+    return 2.0 * std::abs(speed) / (pull * (1.0 - e)) <= within; // s, all bounces to come
+}
 
 // When does the ball touch `wall` while moving into it? The path is
 // p(t) = p0 + u t + ½ a t²; `into` is +1 for the high wall (moving into it

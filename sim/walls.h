@@ -34,4 +34,12 @@ std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, co
 /// continuous detection's wall impacts share it.
 double wallContactTime(double p0, double u, double a, double wall, double into, double tMax);
 
+/// Whether a ball that has just bounced off a wall at `speed` (px/s, after
+/// the bounce), pulled back to it at `pull` (px/s²) with restitution e < 1,
+/// makes all its bounces within `within` s: they add up to
+/// 2 |speed| / (pull (1 − e)). Never when it is pushed away or could reach
+/// the opposite wall (`otherWall` on, `span` px away). The exact wall model
+/// and continuous detection's wall impacts share it.
+bool bouncesSettleWithin(double speed, double pull, double e, bool otherWall, double span, double within);
+
 } // namespace forcelab::sim

@@ -270,12 +270,9 @@ bool ImpactEvents::restsOnWall(int i, int k, int side, double now, double hitSpe
     const Path& q = m_path[static_cast<std::size_t>(i)];
     if (hitSpeed == 0.0)
         return true;
-    const double speed = m_wallE * std::abs(hitSpeed);
     const double pull = side ? q.a[k] : -q.a[k]; // px/s², towards this wall
-    const bool otherOn = q.on[k][1 - side];
-    if (pull > 0.0 && m_wallE < 1.0 && !(otherOn && speed * speed >= 2.0 * pull * (q.hi[k] - q.lo[k])))
-        return 2.0 * speed / (pull * (1.0 - m_wallE)) <= m_h - now;
-    return false;
+    return bouncesSettleWithin(m_wallE * std::abs(hitSpeed), pull, m_wallE, q.on[k][1 - side], q.hi[k] - q.lo[k],
+                               m_h - now);
 }
 
 void ImpactEvents::restIfPressed(Path& q, int k, double end)
