@@ -36,6 +36,7 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("substeps"), {"substeps"}},
         {QStringLiteral("tolerance"), {"tolerance"}},
         {QStringLiteral("per_frame"), {"per_frame"}},
+        {QStringLiteral("close_passes"), {"close_passes"}},
         {QStringLiteral("seed"), {"seed"}},
         {QStringLiteral("spawn"), {"ball_count"}},
         {QStringLiteral("fully_inside"), {"fully_inside"}},

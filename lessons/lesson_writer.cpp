@@ -348,7 +348,8 @@ QByteArray saveLesson(const Lesson& lesson)
     Fields world = sectionFields("world", s);
     world.insert(world.begin() + 2, {"walls", inlineArray(walls)});
     Fields time = sectionFields("time", s);
-    time.insert(time.end() - 1, {"seed", seed(s.time.seed)});
+    const auto perFrame = std::find_if(time.begin(), time.end(), [](const auto& f) { return std::string_view(f.first) == "per_frame"; });
+    time.insert(perFrame, {"seed", seed(s.time.seed)});
 
     Fields top{
         {"format", num(lessons::kFormat)},

@@ -11,10 +11,13 @@
 #include "ball_state.h"
 #include "world_settings.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 
 namespace forcelab::sim {
+
+struct StepInputs; // force_model.h
 
 struct ClosePass {
     int first = -1;        ///< ball index
@@ -35,8 +38,9 @@ PairEnergy pairEnergy(const MutualGravitySettings& gravity, const BallState& bal
 
 /// Which 1/d² pulls shortestFallTime() looks at.
 enum class Pulls {
-    Pairs,         ///< attracting mutual gravity only (G > 0)
-    PairsAndPoint, ///< also the attracting point
+    Pairs,                  ///< attracting mutual gravity only (G > 0)
+    PairsAndPoint,          ///< also the attracting point
+    PairsAndUnclampedPoint, ///< also the attracting point, unless its clamp bounds the pull
 };
 
 /// The pair (or ball and point) with the shortest fall time, or nullopt when
@@ -48,5 +52,33 @@ std::optional<ClosePass> shortestFallTime(const WorldSettings& settings, const B
 /// adaptive integrator (which gave up on the pass) only softening or the
 /// clamp: its sub-steps already went as short as they may.
 std::string describeClosePass(const ClosePass& pass, const WorldSettings& settings, double subStep);
+
+/// How stiff a student's force law (the custom force) is over a step, at
+/// the ball where a fixed sub-step h follows it worst. The stiffness is
+/// |∂a/∂x|, the spectral norm of the 2×2 derivative of the law's
+/// acceleration by the ball's position (forward differences), at the step's
+/// start and at its end. A linear force of stiffness ω² makes semi-implicit
+/// Euler and verlet grow without end once h ω > 2, so h² · stiffness > 4 is
+/// never followed. A law that is singular at a point (1/d²) stiffens without
+/// bound as a ball nears it: once it stiffens within one step the step jumps
+/// past, so h² · stiffness > 0.5 (the bar the 1/d² pulls of the built-in
+/// models meet, close_pass) with the stiffness changing by more than half
+/// within the step is not followed either.
+struct SteepForce {
+    int ball = -1;      ///< ball index
+    double start = 0.0; ///< 1/s², |∂a/∂x| at the step's start; +∞ where the law is not finite
+    double end = 0.0;   ///< 1/s², the same at its end
+    double largest() const { return std::max(start, end); }
+    /// Whether a fixed sub-step h follows the law at this ball.
+    bool followedBy(double h) const;
+};
+std::optional<SteepForce> steepestCustomForce(const WorldSettings& settings, const BallState& before, double tBefore,
+                                              const BallState& after, double tAfter, const StepInputs& inputs,
+                                              double subStep);
+
+/// "the custom force changes faster than the step can follow at ball 0 …"
+/// with where it is and what to change.
+std::string describeSteepForce(const SteepForce& steep, const WorldSettings& settings, const BallState& balls,
+                               double subStep);
 
 } // namespace forcelab::sim

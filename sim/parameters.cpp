@@ -73,6 +73,10 @@ const Parameter kParameters[] = {
     {.key = "time.per_frame", .label = "Move per frame", .type = T::Boolean, .hi = 1,
      .help = "Ignore dt: every step moves the balls as if 1/60 s had passed (stage 5's bug).", SWITCH(time.perFrame),
      .control = "per_frame"},
+    {.key = "time.step_past_close_passes", .label = "Step past close passes", .type = T::Boolean, .hi = 1,
+     .help = "Let a fixed step jump past a close pass it cannot follow instead of stopping there (stage 17's "
+             "slingshot bug).",
+     SWITCH(time.stepPastClosePasses), .control = "close_passes"},
     // models
     {.key = "models.gravity.enabled", .label = "Gravity", .type = T::Boolean, .hi = 1,
      .help = "The same downward pull on every ball.", SWITCH(gravity.enabled), .control = "gravity", .whenListed = 1},

@@ -257,14 +257,14 @@ bool World::blewUp() const
     return !(far < kLostPosition) || !(fast < kLostSpeed); // also true for NaN
 }
 
-std::string World::explainBlowUp(double h, const std::optional<ClosePass>& unresolved) const
+std::string World::explainBlowUp(double h, const std::optional<std::string>& unresolved) const
 {
     const WorldSettings& s = m_settings;
     char when[32];
     std::snprintf(when, sizeof when, "%.4g", m_time);
     const std::string stopped = std::string("the simulation stopped at t = ") + when + " s, one step before ";
     if (unresolved)
-        return stopped + "a close pass it cannot follow: " + describeClosePass(*unresolved, s, h);
+        return stopped + *unresolved;
     if (m_gaveUp && m_stuckSubStep > 0.0)
         return stopped + explainSingularApproach(h);
 
@@ -383,10 +383,11 @@ void World::step()
     const int substeps = m_settings.time.substeps;
     // The per-frame bug moves the balls by one frame's worth whatever dt is.
     const double h = (m_settings.time.perFrame ? kFrameSeconds : m_settings.time.dt) / substeps;
-    // Close passes are watched for fixed-step integrators only: rk45 and
-    // ias15 shorten their own sub-steps.
+    // What a fixed step cannot follow is watched for fixed-step integrators
+    // only (rk45 and ias15 shorten their own sub-steps), unless the scene
+    // asks to see the step's mistake (stage 17's slingshot).
     const bool adaptive = integratorInfo(m_settings.time.integrator).adaptive;
-    const bool watchPairs = !adaptive && m_settings.mutualGravity.enabled && m_settings.mutualGravity.G > 0.0;
+    const bool watch = !adaptive && !m_settings.time.stepPastClosePasses;
     // A ball at rest may sleep only while every force on it at rest stays
     // what it was when it fell asleep.
     bool steady = true;
@@ -396,13 +397,24 @@ void World::step()
     for (int k = 0; k < substeps && !m_gaveUp; ++k)
         subStep(h);
     // A fixed-step integrator does not notice that it skips over a close
-    // pass: stop when the pair closest in fall time is closer than two
-    // sub-steps can follow. (The attracting point's slingshot is left to
-    // show: stage 17 is about it, and the ball it flings keeps a finite speed.)
-    std::optional<ClosePass> unresolved;
-    if (watchPairs && !m_gaveUp && !blewUp()) {
-        if (auto pass = shortestFallTime(m_settings, m_balls, Pulls::Pairs); pass && h > kFollowPairs * pass->fallTime)
-            unresolved = pass;
+    // pass: stop when the pair (or ball and unclamped point) closest in fall
+    // time is closer than two sub-steps can follow, or where a custom force
+    // is stiffer than the sub-step can follow. A clamped point bounds the
+    // pull, and the mistake with it: stage 17 shows that one.
+    std::optional<std::string> unresolved;
+    if (watch && !m_gaveUp && !blewUp()) {
+        if (auto pass = shortestFallTime(m_settings, m_balls, Pulls::PairsAndUnclampedPoint);
+            pass && h > kFollowPairs * pass->fallTime)
+            unresolved = "a close pass it cannot follow: " + describeClosePass(*pass, m_settings, h);
+        else if (m_settings.custom.enabled) {
+            BallState before = m_balls;
+            before.position = m_savedPosition;
+            before.velocity = m_savedVelocity;
+            const auto steep =
+                steepestCustomForce(m_settings, before, m_time, m_balls, m_time + m_settings.time.dt, m_inputs, h);
+            if (steep && !steep->followedBy(h))
+                unresolved = "a force it cannot follow: " + describeSteepForce(*steep, m_settings, m_balls, h);
+        }
     }
     if (m_gaveUp || blewUp() || unresolved) {
         // Undo the step and stop, with the cause found in the state and its fix.

@@ -125,7 +125,7 @@ private:
     void drawStepRandomness();
     void spawnOverTime();
     bool blewUp() const;
-    std::string explainBlowUp(double subStep, const std::optional<ClosePass>& unresolved) const;
+    std::string explainBlowUp(double subStep, const std::optional<std::string>& unresolved) const;
     std::string explainSingularApproach(double subStep) const;
 
     WorldSettings m_settings;

@@ -163,6 +163,10 @@ struct TimeSettings {
     double tolerance = 1e-9;  ///< 1, rk45 local error tolerance (absolute and relative); ias15 error per sub-step (|b₆| / |a|)
     std::uint64_t seed = 1;   ///< random generator seed (wind, random acceleration, spawning)
     bool perFrame = false;    ///< ignore dt: each step moves the balls as if 1/60 s had passed (stage 5's bug)
+    /// Let a fixed step jump past what it cannot follow (a close pass of an
+    /// unclamped 1/d² pull, a custom force stiffer than the step) instead of
+    /// stopping there: stage 17's slingshot bug.
+    bool stepPastClosePasses = false;
 };
 
 /// The length of one "frame" of the per-frame bug, s.

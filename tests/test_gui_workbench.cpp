@@ -158,6 +158,7 @@ const std::vector<ControlCase>& controlCases()
         {"substeps", "substepsSpin", 4.0, 4.0, FIELD(s.time.substeps)},
         {"tolerance", "toleranceSpin", 1e-6, 1e-6, FIELD(s.time.tolerance)},
         {"per_frame", "perFrameCheck", true, 1.0, FIELD(s.time.perFrame)},
+        {"close_passes", "closePassesCheck", true, 1.0, FIELD(s.time.stepPastClosePasses)},
         {"seed", "seedEdit", "12345", 12345.0, FIELD(s.time.seed)},
         {"time_scale", "timeScaleSpin", 0.25, 0.25, [](C c) { return c.timeScale(); }},
         {"ball_count", "ballCountSpin", 12.0, 12.0, [](C c) { return double(c.spawn().count); }},
@@ -204,6 +205,7 @@ QString settingsDifference(const sim::WorldSettings& a, const sim::WorldSettings
     SAME(walls.left) SAME(walls.right) SAME(walls.top) SAME(walls.bottom) SAME(walls.model) SAME(walls.restitution)
     SAME(walls.middle) SAME(walls.centreOnly)
     SAME(time.integrator) SAME(time.dt) SAME(time.substeps) SAME(time.tolerance) SAME(time.perFrame)
+    SAME(time.stepPastClosePasses)
     if (a.time.seed != b.time.seed)
         return QStringLiteral("time.seed");
     SAME(gravity.enabled) SAME(gravity.g.x()) SAME(gravity.g.y())

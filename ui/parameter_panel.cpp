@@ -131,7 +131,8 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
 
     addSection(QStringLiteral("time"), tr("Time"));
     addTimeScale();
-    for (const char* key : {"time.integrator", "time.dt", "time.substeps", "time.tolerance", "time.per_frame"})
+    for (const char* key : {"time.integrator", "time.dt", "time.substeps", "time.tolerance", "time.per_frame",
+                            "time.step_past_close_passes"})
         addParameter(key);
     addSeed();
 
