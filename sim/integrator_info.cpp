@@ -12,7 +12,7 @@ constexpr double kNone = std::numeric_limits<double>::infinity();
 // w₁ = 1 / (2 − 2^(1/3)) = 1.3512 and w₀ = 1 − 2 w₁; its spring limit is where
 // the product of the three Verlet matrices leaves the unit circle.
 constexpr std::array<IntegratorInfo, 8> kIntegrators{{
-    {IntegratorKind::Euler, "euler", 1.0, false, false, 1, StepPath::KickDrift, 0.0,
+    {IntegratorKind::Euler, "euler", 1.0, false, false, 1, StepPath::DriftKick, 0.0,
      "explicit Euler: move with the old velocity, then change the velocity; gains energy on every orbit"},
     {IntegratorKind::SemiImplicitEuler, "semi-implicit-euler", 1.0, true, false, 1, StepPath::KickDrift, 2.0,
      "semi-implicit Euler: change the velocity first, then move with the new one"},

@@ -14,7 +14,8 @@ namespace forcelab::sim {
 /// How a ball moves inside one step, as the integrator really moves it (the
 /// exact wall model finds the moment of impact on this path).
 enum class StepPath {
-    KickDrift, ///< one velocity kick and a straight drift (the Euler methods)
+    DriftKick, ///< a straight drift at the start's velocity, then one velocity kick (explicit Euler)
+    KickDrift, ///< one velocity kick, then a straight drift at the new velocity (semi-implicit Euler)
     Parabola,  ///< x₀ + v₀ t + ½ a t² with a = (v₁ − v₀)/h: exact under a constant force
 };
 
