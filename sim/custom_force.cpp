@@ -129,6 +129,23 @@ std::optional<Error> checkFormula(const std::string& path, const std::string& fo
     try {
         CompiledLaw law(one);
         law.fx.Eval(); // parsing happens here: an unknown name or a missing bracket throws
+        // muparser reads "1, 2" as two formulas and gives the last: a law is
+        // one formula, so a comma outside a function's brackets is an error.
+        if (law.fx.GetNumResults() != 1) {
+            std::size_t column = 0;
+            int depth = 0;
+            for (std::size_t i = 0; i < formula.size() && column == 0; ++i) {
+                depth += formula[i] == '(' ? 1 : formula[i] == ')' ? -1 : 0;
+                if (formula[i] == ',' && depth == 0)
+                    column = i + 1;
+            }
+            std::string message = "column " + std::to_string(column) +
+                                  ": a comma outside brackets; a law is one formula (commas separate a "
+                                  "function's arguments, as in min(a, b))";
+            if (formula.size() > 80)
+                message.append(" (at \"").append(excerpt(formula, column)).append("\")");
+            return keyError(path, message);
+        }
     } catch (const mu::Parser::exception_type& e) {
         const std::size_t column = static_cast<std::size_t>(e.GetPos()) + 1;
         const std::string token = e.GetToken();

@@ -107,7 +107,10 @@ TEST_CASE("malformed formulas are refused with the column, and the world keeps i
     for (const Bad& bad : {Bad{"fx", "-kk*x", "models.custom.fx", "column 2: unknown name \"kk\""},
                            Bad{"fy", "2*(y + 1", "models.custom.fy", "column"},
                            Bad{"fx", "3 +* x", "models.custom.fx", "column"},
-                           Bad{"fx", "sin(x", "models.custom.fx", "column"}}) {
+                           Bad{"fx", "sin(x", "models.custom.fx", "column"},
+                           // muparser reads "1, 2" as two formulas and gave the last one
+                           Bad{"fx", "1, 2", "models.custom.fx", "column 2: a comma outside brackets"},
+                           Bad{"fy", "min(x, 1), -k*y", "models.custom.fy", "column 10: a comma outside brackets"}}) {
         CAPTURE(bad.formula);
         WorldSettings edit = world.settings();
         (std::string(bad.field) == "fx" ? edit.custom.fx : edit.custom.fy) = bad.formula;
