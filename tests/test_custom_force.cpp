@@ -247,3 +247,23 @@ TEST_CASE("a long refused formula is shown around its error")
     REQUIRE(tooLong.has_value());
     CHECK(tooLong->message == "the formula is 10000 characters long, more than the limit of 2000");
 }
+
+// Issue #33. A potential that is not a number over part of the box, where
+// the force is one, is refused: before, U = ½ k m (x − 300)² + 0·√(x − 300)
+// was accepted and the energy read "nan" in every readout. A law singular at
+// a point, where U and F both fail, is still accepted (above).
+TEST_CASE("a potential that is not a number where the force is one is refused")
+{
+    CustomForceSettings c;
+    c.enabled = true;
+    c.fx = "-k*m*(x - 300)";
+    c.fy = "0";
+    c.constants = {{"k", 4.0, 0.0, 10.0}};
+    c.potential = "0.5*k*m*(x - 300)^2";
+    CHECK(!checkCustomForce(c, 600, 400));
+    c.potential = "0.5*k*m*(x - 300)^2 + 0*sqrt(x - 300)";
+    const auto error = checkCustomForce(c, 600, 400);
+    REQUIRE(error.has_value());
+    CHECK(error->keyPath == "models.custom.potential");
+    CHECK(error->message.find("U is not a number at (0, 0) px") != std::string::npos);
+}
