@@ -1,6 +1,7 @@
 #include "collision_system.h"
 
 #include "brute_force.h"
+#include "../integrator_info.h"
 #include "halved.h"
 #include "narrow_phase.h"
 #include "positional_correction.h"
@@ -79,9 +80,16 @@ void CollisionSystem::allowSleep(bool on)
     m_sleepAllowed = on;
 }
 
+// How far x − v·h misses the start of a sub-step under gravity, in g·h², as
+// the solver takes it back (sub_step_context.h).
+static double startLag(IntegratorKind integrator)
+{
+    return integratorInfo(integrator).path == StepPath::DriftKick ? 1.0 : 0.0;
+}
+
 SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const BoxSettings& box,
                                         const WallSettings& walls, double h, double restingSpeed,
-                                        const Vec2& gravity) const
+                                        const Vec2& gravity, const StepMotion& motion) const
 {
     SubStepContext c;
     c.h = h;
@@ -94,6 +102,7 @@ SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const
     c.gravityX = gravity.x();
     c.gravityY = gravity.y();
     c.solver = m_solver;
+    c.startLag = startLag(motion.integrator);
     return c;
 }
 
@@ -206,14 +215,14 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         findContacts(settings.detection, false, m_speculative, stats, clock);
         const double stillSpeed = m_solver.stillShare * restingSpeed;
         if (sleeping) {
-            m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, stillSpeed, m_solver.wakeShare * restingSpeed,
-                             m_solver.wakeLayers);
+            m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, startLag(motion.integrator), stillSpeed,
+                             m_solver.wakeShare * restingSpeed, m_solver.wakeLayers);
             clock.lap(m_profile.sleep);
         }
         // The solver puts the pairs that overlap now back into m_contacts
         // (what contacts(), the flags and the counters report) as it builds
         // its rows.
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_speculative, &m_contacts, clock,
+        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity, motion), m_speculative, &m_contacts, clock,
                         m_profile, sleeping ? m_sleep.asleep() : nullptr);
         if (sleeping) {
             m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
@@ -245,7 +254,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         return stats;
     }
     if (resting) {
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity), m_contacts, nullptr, clock,
+        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity, motion), m_contacts, nullptr, clock,
                         m_profile);
         m_lastPasses = m_resting.lastPasses();
         m_lastBounceRows = m_resting.lastBounceRows();

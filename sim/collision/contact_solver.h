@@ -70,7 +70,13 @@
 //    hit with in the stage where it met (not the speed at the end of the
 //    sub-step, which has up to g·h more in it); `bouncePasses` passes over
 //    every row follow, and a bounce adds velocityPasses − bouncePasses more
-//    over the rows within `bounceLayers` balls of it. Gravity in short
+//    over the rows within `bounceLayers` balls of it. A ball that hits the
+//    pile in an early stage gets the same extra passes, rigid, in every
+//    stage from then on, and in the passes after a bounce a row that pushed
+//    in this sub-step holds even across a hair of gap, so the pile under a
+//    struck ball does not yield and the ball bounces as from a floor. A new
+//    contact's speed at the end counts a ball that contacts held in the
+//    last solve as not falling (they take its g·h out again). Gravity in short
 //    stages is what the pile needs: the overlap one of 6 stages makes is
 //    1/36 of a whole step's. A body no contact pushed keeps the
 //    integrator's result, so a lone ball (a restitution-1 ball bouncing for
@@ -111,6 +117,7 @@ struct ContactSolverSettings {
     int relaxPasses = 1;          ///< 1, velocity passes per stage after the move, without the push
     int bouncePasses = 4;         ///< 1, passes after the last stage over every row (velocityPasses when a pair bounces)
     int bounceLayers = 12;        ///< 1, staged solve: the passes a bounce adds go to the rows this many balls from it (0: every row)
+    int impactRows = 4096;        ///< 1, staged solve: most rows that get a stage's impact passes over every row, when the region around the impact is half the pile or more
     double contactStiffness = 0.5; ///< 1, a soft contact's spring frequency as a share of the stage rate 1/hs
     double dampingRatio = 1.0;    ///< 1, the soft contact's damping as a share of critical damping
     double pushSpeed = 300.0;     ///< px/s, fastest speed at which an overlap is pushed apart

@@ -15,6 +15,8 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
 {
     const bool profiling = clock.on();
     m_asleep = asleep;
+    m_startShift[0] = c.startLag * c.gravityX * c.h * c.h;
+    m_startShift[1] = c.startLag * c.gravityY * c.h * c.h;
     prepare(balls.size());
     takeBackWallBounces(balls, c);
     buildPairRows(balls, c, pairs, touching);
@@ -108,6 +110,7 @@ void RestingSolver::prepare(int n)
         m_bodies.resize(size);
         m_bodyPositions.resize(size);
         m_bodyVelocity0.resize(2 * size);
+        m_bodyShift.resize(2 * size);
     }
     m_bodyCount = 0;
 }
@@ -135,6 +138,10 @@ int RestingSolver::bodyFor(std::size_t i, const BallState& balls)
     const unsigned char* tookBack = &m_tookBack[2 * i];
     m_bodyVelocity0[2 * kk] = tookBack[0] ? 0.0 : v[2 * i];
     m_bodyVelocity0[2 * kk + 1] = tookBack[1] ? 0.0 : v[2 * i + 1];
+    // What x − v·h misses its start by (sub_step_context.h); along an axis
+    // whose wall bounce was taken back it starts on the wall instead.
+    for (int axis = 0; axis < 2; ++axis)
+        m_bodyShift[2 * kk + static_cast<std::size_t>(axis)] = tookBack[axis] ? 0.0 : m_startShift[axis];
     m_bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)], w};
     return k;
 }
@@ -260,7 +267,14 @@ void RestingSolver::buildPairRows(BallState& balls, const SubStepContext& c, con
             nrm = Vec2(sx / len, sy / len);
         else
             nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
-        const double vn0 = dvx * nrm.x() + dvy * nrm.y();
+        // The approach the pair ends the step with, less the speed gravity
+        // gave a ball that contacts held in the last solve: those contacts
+        // take it out again (a ball landing on a resting pile meets a ball
+        // at rest, not one falling at g·h).
+        const double heldA = a < m_held.size() && m_held[a] ? 1.0 : 0.0;
+        const double heldB = b < m_held.size() && m_held[b] ? 1.0 : 0.0;
+        const double vn0 = (dvx - (heldB - heldA) * c.gravityX * c.h) * nrm.x() +
+                           (dvy - (heldB - heldA) * c.gravityY * c.h) * nrm.y();
         const double gapStart = len - s;
         // A gap may close within the sub-step and no more: its normal speed
         // may not drop below −gap/h (0 for a pair that overlapped already).

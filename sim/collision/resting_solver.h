@@ -138,7 +138,7 @@ private:
     void stagePass(const SubStepContext& c, const SoftContact& soft, bool push, bool bounce, bool last,
                    const std::vector<int>* onlyRows = nullptr);
     // The rows near a bounce, for the passes a bounce adds (soft_stages.cpp).
-    bool markBounceRegion(int layers);
+    bool markBounceRegion(int layers, const std::vector<int>* seedRows = nullptr);
     static constexpr unsigned char kFarFromBounce = PairGraph::kFar;
     void stagedWriteBack(BallState& balls, const SubStepContext& c);
 
@@ -177,6 +177,8 @@ private:
     std::vector<double> m_bodyMoved;       // per body, staged solve: x, y now less x, y at the start
     std::vector<unsigned char> m_bodyLayer; // per body, staged solve: rows between it and a bounce (kFarFromBounce: more)
     std::vector<int> m_bounceRows;         // staged solve: the rows near a bounce, in row order
+    std::vector<unsigned char> m_hitNoted; // per row, staged solve: its first push was looked at
+    std::vector<int> m_stageHits;          // staged solve: the rows a hard impact first pushed in this stage
     std::vector<int> m_bounceRegion;       // staged solve: the bodies near a bounce, in the order reached
     PairGraph m_rowGraph;                  // staged solve: the rows as a graph of bodies, for the region
     std::size_t m_rowCount = 0;
@@ -192,6 +194,8 @@ private:
     std::vector<Contact> m_dormantBalls, m_spareDormantBalls;
     std::vector<double> m_dormantImpulse, m_spareDormantImpulse;
     std::vector<double> m_bodyVelocity0;
+    std::vector<double> m_bodyShift;       // per body, px: x, y to add to x − v·h for its start (sub_step_context.h)
+    double m_startShift[2] = {0.0, 0.0};   // this solve, px: startLag·g·h² along x and y
     std::vector<unsigned char> m_tookBack;   // per ball and axis: 1 when stage 0 took its bounce back
     RowStrips m_strips;                      // the rows cut into strips for the passes (row_strips.h)
     std::vector<unsigned char> m_stripMoved; // per strip, this pass: a ball changed by more than the tolerance

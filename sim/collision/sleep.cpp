@@ -49,7 +49,7 @@ void SleepingBalls::buildNeighbours(int n, const std::vector<Contact>& pairs)
 }
 
 void SleepingBalls::wakeNear(BallState& balls, const std::vector<Contact>& pairs, const Vec2& gh, double h,
-                             double pushSpeed, double wakeSpeed, int layers)
+                             double startLag, double pushSpeed, double wakeSpeed, int layers)
 {
     if (m_count == 0 || layers <= 0)
         return;
@@ -99,11 +99,12 @@ void SleepingBalls::wakeNear(BallState& balls, const std::vector<Contact>& pairs
         --m_count;
         ++m_lastWoken;
         // As if the integrator had moved it from rest over the sub-step:
-        // v = g·h and x moved by v·h, which the solver takes back again.
+        // v = g·h and x moved by (1 − startLag)·g·h², which the solver
+        // takes back again.
         v[2 * i] = gh.x();
         v[2 * i + 1] = gh.y();
-        xw[2 * i] = m_frozen[2 * i] + gh.x() * h;
-        xw[2 * i + 1] = m_frozen[2 * i + 1] + gh.y() * h;
+        xw[2 * i] = m_frozen[2 * i] + (1.0 - startLag) * gh.x() * h;
+        xw[2 * i + 1] = m_frozen[2 * i + 1] + (1.0 - startLag) * gh.y() * h;
     }
 }
 

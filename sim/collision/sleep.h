@@ -40,9 +40,11 @@ public:
     /// the speeds they had at the end of the last step, faster than
     /// `pushSpeed` (px/s) when one of them sleeps, or than `wakeSpeed` when
     /// both are awake. A ball that wakes starts as if the integrator had moved it
-    /// from rest: speed g·h, position g·h² further (`gh` = g·h, px/s).
-    void wakeNear(BallState& balls, const std::vector<Contact>& pairs, const Vec2& gh, double h, double pushSpeed,
-                  double wakeSpeed, int layers);
+    /// from rest: speed g·h, position (1 − startLag)·g·h² further (`gh` =
+    /// g·h, px/s; startLag as in sub_step_context.h), so the solver, taking
+    /// v·h back and adding startLag·g·h², starts it where it slept.
+    void wakeNear(BallState& balls, const std::vector<Contact>& pairs, const Vec2& gh, double h, double startLag,
+                  double pushSpeed, double wakeSpeed, int layers);
 
     /// After the solve: a ball that a contact held (`held`, per ball) and
     /// that is slower than `stillSpeed` (px/s) has been still h longer; one

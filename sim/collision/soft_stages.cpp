@@ -40,8 +40,9 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     soft.impulseScale = a3;
 
     // The bodies at the start of the sub-step: the integrator moved each by
-    // v·h (a ball whose wall bounce stage 0 took back: from the wall) and gave
-    // it g·h of speed; both are taken back, and each stage gives g·hs again.
+    // about v·h (a ball whose wall bounce stage 0 took back: from the wall;
+    // explicit Euler by g·h² less, sub_step_context.h) and gave it g·h of
+    // speed; both are taken back, and each stage gives g·hs again.
     const auto bodies = static_cast<std::size_t>(m_bodyCount);
     if (m_bodyStart.size() < 2 * bodies) {
         m_bodyStart.resize(2 * bodies);
@@ -58,7 +59,8 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
         BodyPosition& p = m_bodyPositions[k];
         double* at[2] = {&p.x, &p.y};
         for (int axis = 0; axis < 2; ++axis) {
-            const double q = *at[axis] - m_bodyVelocity0[2 * k + static_cast<std::size_t>(axis)] * c.h;
+            const std::size_t ka = 2 * k + static_cast<std::size_t>(axis);
+            const double q = *at[axis] - m_bodyVelocity0[ka] * c.h + m_bodyShift[ka];
             const bool beyond = (on[axis][0] && q - p.r < 0.0) || (on[axis][1] && size[axis] - p.r - q < 0.0);
             if (!beyond)
                 *at[axis] = q;
@@ -89,6 +91,9 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
     }
     m_pushed.assign(m_rowCount, 0);
     m_hitSpeed.assign(m_rowCount, 0.0);
+    m_hitNoted.assign(m_rowCount, 0);
+    m_stageHits.clear();
+    const int impactPasses = std::max(0, settings.velocityPasses - std::max(1, settings.stagePasses));
     // A wall row's `allowed` holds, until the bounces, the speed its ball
     // came at the wall when the row first pushed: −1 until then, −2 for a
     // row that pushed in the last sub-step already (a resting ball).
@@ -128,6 +133,31 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
         // 3. Passes that stop approaches and push overlaps apart (soft).
         for (int pass = 0; pass < stagePasses; ++pass)
             stagePass(c, soft, true, false, false);
+        // 3b. A ball that hits the pile (a new contact, faster than the
+        //     resting speed) pushes on it for the rest of the sub-step. The
+        //     stage's passes carry that push a few balls down and are soft
+        //     where balls overlap, so the pile yielded and the struck ball
+        //     sank into it: a ball dropped 200 px on a pile with verlet rose
+        //     46% of e²·h0. From the stage of the hit on, the rows within
+        //     bounceLayers balls of it get velocityPasses − stagePasses more
+        //     passes that hold the pile rigid (no soft push), as a bounce's
+        //     region does at the end. When that region is half the pile or
+        //     more (a landing pile), only a solve of at most impactRows rows
+        //     gets them, over every row.
+        for (std::size_t k = 0; k < m_rowCount; ++k)
+            if (m_pushed[k] != 0 && !m_hitNoted[k]) {
+                m_hitNoted[k] = 1;
+                if (m_vn0[k] != 0.0 && -m_hitSpeed[k] > c.restingSpeed)
+                    m_stageHits.push_back(static_cast<int>(k));
+            }
+        if (!m_stageHits.empty() && impactPasses > 0) {
+            const bool region = settings.bounceLayers > 0 && markBounceRegion(settings.bounceLayers, &m_stageHits);
+            if (region || m_rowCount <= static_cast<std::size_t>(settings.impactRows)) {
+                for (int pass = 0; pass < impactPasses; ++pass)
+                    stagePass(c, soft, false, false, false, region ? &m_bounceRows : nullptr);
+                m_lastPasses += impactPasses;
+            }
+        }
         // 4. The bodies move by their speeds, never through an enabled wall.
         for (std::size_t k = 0; k < bodies; ++k) {
             BodyPosition& p = m_bodyPositions[k];
@@ -200,7 +230,7 @@ void RestingSolver::stagedSolve(const SubStepContext& c)
 // the thread count. False (and the region unused) when it would hold half
 // the bodies or half the rows or more: then every row gets every pass, as
 // without a region.
-bool RestingSolver::markBounceRegion(int layers)
+bool RestingSolver::markBounceRegion(int layers, const std::vector<int>* seedRows)
 {
     layers = std::min(layers, static_cast<int>(kFarFromBounce) - 1);
     const auto bodies = static_cast<std::size_t>(m_bodyCount);
@@ -213,14 +243,21 @@ bool RestingSolver::markBounceRegion(int layers)
             m_bounceRegion.push_back(body);
         }
     };
-    for (std::size_t k = 0; k < m_rowCount; ++k)
-        if (m_pushed[k] == 2) {
-            seed(m_pairRows[k].a);
-            seed(m_pairRows[k].b);
+    if (seedRows) {
+        for (const int k : *seedRows) {
+            seed(m_pairRows[static_cast<std::size_t>(k)].a);
+            seed(m_pairRows[static_cast<std::size_t>(k)].b);
         }
-    for (const WallRow& row : m_wallRows)
-        if (row.allowed >= 0.0)
-            seed(row.body);
+    } else {
+        for (std::size_t k = 0; k < m_rowCount; ++k)
+            if (m_pushed[k] == 2) {
+                seed(m_pairRows[k].a);
+                seed(m_pairRows[k].b);
+            }
+        for (const WallRow& row : m_wallRows)
+            if (row.allowed >= 0.0)
+                seed(row.body);
+    }
     // A region of half the bodies or more has about half the rows or more:
     // the search stops there (in the landing of a pile, where bounces are
     // everywhere).
@@ -286,8 +323,11 @@ void RestingSolver::stagePass(const SubStepContext& c, const SoftContact& soft, 
         double total = std::max(impulse[k] - massScale * row.mass * (vn + bias) - impulseScale * impulse[k], 0.0);
         // At the end of the last stage a gap no longer limits how fast
         // it may close (the next sub-step's rows will, over the length
-        // it moves): such a row may only give back impulse.
-        if (last && sep > 0.0 && !bouncing)
+        // it moves): such a row may only give back impulse. Not while a
+        // bounce is made, for a row that pushed in this sub-step: the pile
+        // under a bouncing ball holds it as the contact it was, or the ball
+        // it struck sinks into the balls under it and the bounce is lost.
+        if (last && sep > 0.0 && !bouncing && !(bounce && pushed[k] != 0))
             total = std::min(total, impulse[k]);
         const double j = total - impulse[k];
         impulse[k] = total;
