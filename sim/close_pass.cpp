@@ -1,6 +1,7 @@
 #include "close_pass.h"
 
 #include "force_model.h"
+#include "custom_force.h"
 #include "force_models.h"
 #include "integrator_info.h"
 
@@ -174,7 +175,7 @@ std::string describeSteepForce(const SteepForce& steep, const WorldSettings& s, 
     const Vec2 at = b.position.col(steep.ball);
     std::string where = "ball " + std::to_string(steep.ball) + " at (" + format(at.x(), 6) + ", " +
                         format(at.y(), 6) + ") px";
-    const std::string law = "the custom force (F_x = " + s.custom.fx + ", F_y = " + s.custom.fy + ")";
+    const std::string law = describeCustomLaw(s.custom);
     const std::string singularFix = "keep its denominator away from zero (add a small constant to the distance "
                                     "squared, as softening does)";
     if (!std::isfinite(steep.largest()))

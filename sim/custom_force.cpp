@@ -389,6 +389,20 @@ void addCustomAcceleration(const WorldSettings& settings, const BallState& balls
     }
 }
 
+std::string describeCustomLaw(const CustomForceSettings& c)
+{
+    const auto cut = [](const std::string& formula) {
+        constexpr std::size_t kShown = 60;
+        if (formula.size() <= kShown + 20)
+            return formula;
+        std::size_t end = kShown;
+        while (end > 0 && (static_cast<unsigned char>(formula[end]) & 0xC0) == 0x80) // not inside a UTF-8 character
+            --end;
+        return formula.substr(0, end) + "… (" + std::to_string(formula.size()) + " characters)";
+    };
+    return "the custom force (F_x = " + cut(c.fx) + ", F_y = " + cut(c.fy) + ")";
+}
+
 double customPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x)
 {
     const CustomForceSettings& s = settings.custom;

@@ -28,6 +28,10 @@ std::optional<Error> checkCustomForce(const CustomForceSettings& custom, double 
 void addCustomAcceleration(const WorldSettings& settings, const BallState& balls, const Matrix2X& x,
                            const Matrix2X& v, double t, Matrix2X& a);
 
+/// "the custom force (F_x = …, F_y = …)" for a message, each formula cut
+/// to its first 60 characters with "…" when longer (a formula may be 2,000).
+std::string describeCustomLaw(const CustomForceSettings& custom);
+
 /// The potential energy of all balls at x (sum of U over the balls); 0 when
 /// the law gives none.
 double customPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x);

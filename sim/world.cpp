@@ -287,11 +287,8 @@ std::string World::explainBlowUp(double h, const std::optional<std::string>& unr
         return stopped + "it blew up (" + what + "): " + describeClosePass(*pass, s, h);
     std::string cause;
     if (s.custom.enabled)
-        cause.append("the custom force (F_x = ")
-            .append(s.custom.fx)
-            .append(", F_y = ")
-            .append(s.custom.fy)
-            .append(") grows too fast for this dt, or gives a number that is not finite (a division by zero?): "
+        cause.append(describeCustomLaw(s.custom))
+            .append(" grows too fast for this dt, or gives a number that is not finite (a division by zero?): "
                     "check its formulas, or lower dt");
     else if (s.drag.enabled && s.drag.law == DragLaw::Quadratic)
         cause = "quadratic drag is too strong for this dt at these speeds: lower dt or k";
@@ -349,8 +346,8 @@ std::string World::explainSingularApproach(double h) const
     }
     std::string fix;
     if (model == "custom force")
-        fix = "the custom force (F_x = " + s.custom.fx + ", F_y = " + s.custom.fy +
-              ") is singular there, or nearly: keep its denominator away from zero (add a small constant to the "
+        fix = describeCustomLaw(s.custom) +
+              " is singular there, or nearly: keep its denominator away from zero (add a small constant to the "
               "distance squared, as softening does)";
     else
         fix = "the force is singular there, or nearly: soften it, clamp it, or raise time.tolerance";

@@ -221,3 +221,31 @@ TEST_CASE("TestSingularFalls::customSpringStopsOnlyBeyondTheLimit")
         }
     }
 }
+
+// Issue #31 item 11: a stop names a student's law with each formula cut to
+// its first 60 characters. A law of two 1,500-character formulas (the fall
+// above with "+ 0*x" padding) stops every integrator with a message under
+// 1,000 characters that says how long the formula is.
+TEST_CASE("TestSingularFalls::aLongLawIsCutInTheStopMessage")
+{
+    for (const IntegratorKind kind : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Rk45}) {
+        Scene s = customFall();
+        std::string padding;
+        while (padding.size() < 1400)
+            padding += " + 0*x";
+        s.settings.custom.fx += padding;
+        s.settings.custom.fy += padding;
+        s.settings.time.integrator = kind;
+        s.settings.time.dt = 1.0 / 60;
+        World w;
+        REQUIRE(!w.reset(s));
+        for (int step = 0; step < 120 && !w.halted(); ++step)
+            w.step();
+        REQUIRE(w.halted());
+        const std::string& message = *w.halted();
+        INFO(message);
+        CHECK(message.size() < 1000);
+        CHECK(message.find("characters)") != std::string::npos);
+        CHECK(message.find(padding) == std::string::npos);
+    }
+}
