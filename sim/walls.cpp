@@ -127,7 +127,8 @@ PathInStep stepPath(IntegratorKind kind, double p0, double u0, double p1, double
 // part of the fall: a hop then gains e k (k up to one step's kick) at every
 // bounce, and at dt = 1/240 s a ball dropped with e = 0.8 hopped for ever.
 // With e = 1 the plain reflection of d is kept: it is symplectic, so the
-// energy stays bounded, while this one drifts (2% in 6000 s at dt = 1/60 s).
+// energy stays bounded, while this one drifts (2% in 6000 s at dt = 1/60 s
+// in a one-ball script of the same step).
 double midStepRebound(const PathInStep& path, double hitSpeed, double e, double elapsed, double h)
 {
     const double kick = path.stepKick / h;  // px/s², along the axis
