@@ -2,7 +2,6 @@
 
 #include "force_model.h"
 #include "custom_force.h"
-#include "force_models.h"
 #include "integrator_info.h"
 
 #include <cmath>
@@ -113,18 +112,18 @@ namespace {
 // small step gives every ball's derivative in one evaluation per direction.
 // The step is scaled to the position: small against any distance the law
 // changes over, large against its rounding. +∞ where the law is not finite.
-VectorX customStiffness(const ForceModel& forces, const ForceModelInfo& custom, const BallState& b, double t)
+VectorX customStiffness(const WorldSettings& s, const BallState& b, double t)
 {
     const int n = b.size();
     const VectorX delta = 1e-7 * b.position.cwiseAbs().colwise().maxCoeff().transpose().cwiseMax(1.0);
     Matrix2X base = Matrix2X::Zero(2, n);
-    forces.addOne(custom, b.position, b.velocity, t, base);
+    addCustomAcceleration(s, b, b.position, b.velocity, t, base);
     Matrix2X column[2];
     for (int axis = 0; axis < 2; ++axis) {
         Matrix2X moved = b.position;
         moved.row(axis) += delta.transpose();
         column[axis] = Matrix2X::Zero(2, n);
-        forces.addOne(custom, moved, b.velocity, t, column[axis]);
+        addCustomAcceleration(s, b, moved, b.velocity, t, column[axis]);
     }
     VectorX stiffness(n);
     for (int i = 0; i < n; ++i) {
@@ -146,19 +145,12 @@ VectorX customStiffness(const ForceModel& forces, const ForceModelInfo& custom, 
 } // namespace
 
 std::optional<SteepForce> steepestCustomForce(const WorldSettings& s, const BallState& before, double tBefore,
-                                              const BallState& b, double t, const StepInputs& inputs, double h)
+                                              const BallState& b, double t, double h)
 {
     if (!s.custom.enabled || b.size() == 0 || before.size() != b.size())
         return std::nullopt;
-    const ForceModelInfo* custom = nullptr;
-    for (const ForceModelInfo& model : forceModels())
-        if (model.name == "custom force")
-            custom = &model;
-    if (!custom)
-        return std::nullopt;
-    const ForceModel forces(s, b, inputs);
-    const VectorX start = customStiffness(forces, *custom, before, tBefore);
-    const VectorX end = customStiffness(forces, *custom, b, t);
+    const VectorX start = customStiffness(s, before, tBefore);
+    const VectorX end = customStiffness(s, b, t);
     // The ball followed worst: not followed first, then the stiffest.
     std::optional<SteepForce> worst;
     for (int i = 0; i < b.size(); ++i) {

@@ -17,8 +17,6 @@
 
 namespace forcelab::sim {
 
-struct StepInputs; // force_model.h
-
 struct ClosePass {
     int first = -1;        ///< ball index
     int second = -1;       ///< ball index, or -1 for the attracting point
@@ -73,8 +71,7 @@ struct SteepForce {
     bool followedBy(double h) const;
 };
 std::optional<SteepForce> steepestCustomForce(const WorldSettings& settings, const BallState& before, double tBefore,
-                                              const BallState& after, double tAfter, const StepInputs& inputs,
-                                              double subStep);
+                                              const BallState& after, double tAfter, double subStep);
 
 /// "the custom force changes faster than the step can follow at ball 0 …"
 /// with where it is and what to change.

@@ -408,7 +408,7 @@ void World::step()
             before.position = m_savedPosition;
             before.velocity = m_savedVelocity;
             const auto steep =
-                steepestCustomForce(m_settings, before, m_time, m_balls, m_time + m_settings.time.dt, m_inputs, h);
+                steepestCustomForce(m_settings, before, m_time, m_balls, m_time + m_settings.time.dt, h);
             if (steep && !steep->followedBy(h))
                 unresolved = "a force it cannot follow: " + describeSteepForce(*steep, m_settings, m_balls, h);
         }
