@@ -40,6 +40,30 @@ struct Prediction {
     std::vector<double> values; ///< each choice's value in the claim's unit; the measured one is the nearest
 };
 
+/// A sentence of the lesson with a number or a comparison that no claim
+/// checks, and why none can: `forcelab-cli check` fails a lesson in which
+/// such a sentence is neither backed by a claim nor listed here
+/// (lessons/sentence_check.h).
+struct NotMeasured {
+    /// Why the sentence is not a claim about this scene.
+    enum class Because {
+        Question,    ///< it asks; the answer is a teacher answer, checked on its own
+        Instruction, ///< it tells the class what to set or do; its numbers are what to type in
+        Formula,     ///< a calculation, a definition or the program's rule: true whatever the scene does
+        Setting,     ///< it repeats this scene's settings; the check finds each of its numbers in the scene
+        Elsewhere,   ///< about the world outside, another program or another lesson, not this scene
+        Unmeasured,  ///< about this scene, but no claim measurement covers it; `why` says how it was checked
+    };
+    QString says;   ///< the sentence, or pieces of it joined by "…", as the lesson writes it
+    Because because = Because::Question;
+    QString why;    ///< required for Unmeasured: how the sentence was checked and what measurement it lacks
+    friend bool operator==(const NotMeasured&, const NotMeasured&) = default;
+};
+
+/// The file's names of NotMeasured::Because, in its order.
+inline constexpr const char* kNotMeasuredReasons[] = {"question", "instruction", "formula",
+                                                      "setting",  "elsewhere",   "unmeasured"};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -52,6 +76,8 @@ struct Lesson {
     /// What the text says about the scene, as measurements `forcelab-cli
     /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;
+    /// Sentences with numbers or comparisons that are not claims, and why.
+    std::vector<NotMeasured> notMeasured;
     TeacherNotes teacher;
     /// Questions asked before the run, each answered by a claim.
     std::vector<Prediction> predict;

@@ -7,6 +7,7 @@
 #include "nearest_key.h"
 #include "sim/names.h"
 #include "sim/parameters.h"
+#include "sim/scene_keys.h"
 
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -612,11 +613,27 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
 }
 
 /// {"key.path": value, …}: parameter rows and values allowed for them
-/// (choices by name, switches as true/false), as claims' and compare panes' "set".
-void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<std::pair<std::string, double>>& out)
+/// (choices by name, switches as true/false), as claims' and compare panes'
+/// "set". With `scene`, a claim's: its keys may also name a listed ball's
+/// start or the random balls' count (sim/scene_keys.h).
+void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<std::pair<std::string, double>>& out,
+              const sim::Scene* scene = nullptr)
 {
     for (auto it = set.begin(); it != set.end(); ++it) {
         const QString key = it.key();
+        if (scene && sim::isSceneKey(key.toStdString())) {
+            const QJsonValue v = it.value();
+            if (!v.isDouble()) {
+                r.fail(join(sp, key), QStringLiteral("expected a number, got ") + describe(v));
+                continue;
+            }
+            if (const auto problem = sim::checkSceneKey(*scene, key.toStdString(), v.toDouble())) {
+                r.fail(join(sp, key), qs(*problem));
+                continue;
+            }
+            out.emplace_back(key.toStdString(), v.toDouble());
+            continue;
+        }
         const sim::Parameter* row = sim::findParameter(key.toStdString());
         if (!row) {
             r.fail(join(sp, key), QStringLiteral("not a parameter key path (docs/parameters.md lists them)"));
@@ -657,8 +674,9 @@ void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<
 /// One claim: {"says": "…", "measure": "apex", "ball": 0, "n": 1, "at": 10,
 /// "near": 192, "within": 1} (or "within_percent", or "below"/"above" instead
 /// of "near"), optionally "axis", "other", "distance" and "set": {key: value}.
-void parseClaim(Reader& r, const QJsonObject& o, const QString& p, int balls, sim::Claim& c)
+void parseClaim(Reader& r, const QJsonObject& o, const QString& p, const sim::Scene& scene, sim::Claim& c)
 {
+    const int balls = static_cast<int>(scene.balls.size()) + scene.spawn.count;
     r.checkKeys(o, p,
                 {"says", "measure", "ball", "other", "at", "n", "axis", "distance", "near", "within", "within_percent",
                  "below", "above", "set"});
@@ -711,7 +729,7 @@ void parseClaim(Reader& r, const QJsonObject& o, const QString& p, int balls, si
             r.number(o, p, "within", range::kClaimTolerance, c.tolerance);
     }
     if (const auto set = r.object(o, p, "set"))
-        parseSet(r, *set, join(p, "set"), c.set);
+        parseSet(r, *set, join(p, "set"), c.set, &scene);
 }
 
 /// A list of objects with at most `most` entries (`unit` names them in the
@@ -737,14 +755,46 @@ void objectList(Reader& r, const QJsonArray& a, const QString& base, int most, c
     }
 }
 
-void parseClaims(Reader& r, const QJsonArray& a, int balls, std::vector<sim::Claim>& out)
+void parseClaims(Reader& r, const QJsonArray& a, const sim::Scene& scene, std::vector<sim::Claim>& out)
 {
     objectList(r, a, QStringLiteral("claims"), kMaxListEntries, "entries",
                QStringLiteral("a claim object {\"says\": …, \"measure\": …}"), out,
                [&](const QJsonObject& o, const QString& p) {
                    sim::Claim c;
-                   parseClaim(r, o, p, balls, c);
+                   parseClaim(r, o, p, scene, c);
                    return c;
+               });
+}
+
+/// [{"says": "…", "because": "question"}, {"says": "…", "because": "unmeasured", "why": "…"}]:
+/// sentences with numbers that are not claims, and why (lesson.h).
+void parseNotMeasured(Reader& r, const QJsonArray& a, std::vector<NotMeasured>& out)
+{
+    QStringList reasons;
+    for (const char* name : kNotMeasuredReasons)
+        reasons << QLatin1String(name);
+    objectList(r, a, QStringLiteral("not_measured"), kMaxListEntries, "entries",
+               QStringLiteral("an entry {\"says\": …, \"because\": …}"), out,
+               [&](const QJsonObject& o, const QString& p) {
+                   r.checkKeys(o, p, {"says", "because", "why"});
+                   NotMeasured n;
+                   if (r.require(o, p, "says", QStringLiteral("the sentence, as the lesson writes it")))
+                       r.string(o, p, "says", n.says);
+                   QString because;
+                   if (r.require(o, p, "because", QStringLiteral("one of ") + reasons.join(", ")) &&
+                       r.string(o, p, "because", because)) {
+                       const qsizetype i = reasons.indexOf(because);
+                       if (i < 0)
+                           r.fail(join(p, "because"),
+                                  QStringLiteral("%1 is not one of %2").arg(quoted(because), reasons.join(", ")));
+                       else
+                           n.because = static_cast<NotMeasured::Because>(i);
+                   }
+                   r.string(o, p, "why", n.why);
+                   if (n.because == NotMeasured::Because::Unmeasured && n.why.trimmed().isEmpty())
+                       r.fail(join(p, "why"), QStringLiteral("an unmeasured sentence needs \"why\": how it was checked "
+                                                             "and which measurement it lacks"));
+                   return n;
                });
 }
 
@@ -888,6 +938,11 @@ void checkProse(Reader& r, const Lesson& lesson)
     for (std::size_t k = 0; k < lesson.claims.size(); ++k)
         check(join(join(QStringLiteral("claims"), static_cast<qsizetype>(k)), "says"),
               QString::fromStdString(lesson.claims[k].text), kMaxProseChars);
+    for (std::size_t k = 0; k < lesson.notMeasured.size(); ++k) {
+        const QString path = join(QStringLiteral("not_measured"), static_cast<qsizetype>(k));
+        check(join(path, "says"), lesson.notMeasured[k].says, kMaxProseChars);
+        check(join(path, "why"), lesson.notMeasured[k].why, kMaxProseChars);
+    }
 }
 
 /// A whole number with its thousands grouped: "360,000,000,000".
@@ -932,7 +987,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "claims", "teacher", "compare", "predict"});
+                 "controls", "overlays", "claims", "not_measured", "teacher", "compare", "predict"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -970,7 +1025,9 @@ ParseResult parseLesson(const QJsonObject& root)
     if (const auto o = r.object(root, top, "spawn"))
         parseSpawn(r, *o, static_cast<int>(scene.balls.size()), scene.spawn);
     if (const auto a = r.array(root, top, "claims", QStringLiteral("an array of claim objects")))
-        parseClaims(r, *a, static_cast<int>(scene.balls.size()) + scene.spawn.count, lesson.claims);
+        parseClaims(r, *a, scene, lesson.claims);
+    if (const auto a = r.array(root, top, "not_measured", QStringLiteral("an array of sentence objects")))
+        parseNotMeasured(r, *a, lesson.notMeasured);
     if (const auto o = r.object(root, top, "teacher"))
         parseTeacher(r, *o, lesson.challenges.size(), lesson.teacher);
     if (const auto a = r.array(root, top, "compare", QStringLiteral("an array of panes")))

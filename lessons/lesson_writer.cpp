@@ -7,6 +7,7 @@
 #include "lesson_loader.h"
 #include "sim/names.h"
 #include "sim/parameters.h"
+#include "sim/scene_keys.h"
 
 #include <charconv>
 #include <algorithm>
@@ -161,11 +162,15 @@ QByteArray setObject(const std::vector<std::pair<std::string, double>>& entries)
     QByteArray set = "{";
     for (const auto& [key, value] : entries) {
         const sim::Parameter* p = sim::findParameter(key);
-        if (!p)
+        if (!p && !sim::isSceneKey(key))
             continue;
-        p->set(values, value);
         if (set.size() > 1)
             set += ", ";
+        if (!p) { // a ball's field or the spawn count: a plain number
+            set += str(key) + ": " + num(value);
+            continue;
+        }
+        p->set(values, value);
         set += str(key) + ": " + rowValue(*p, values);
     }
     return set + '}';
@@ -391,6 +396,16 @@ QByteArray saveLesson(const Lesson& lesson)
         for (const sim::Claim& c : lesson.claims)
             claims << claimLine(c);
         top.push_back({"claims", blockArray(claims, 2)});
+    }
+    if (!lesson.notMeasured.empty()) {
+        QList<QByteArray> entries;
+        for (const NotMeasured& n : lesson.notMeasured) {
+            Fields f{{"says", str(n.says)}, {"because", str(QString::fromLatin1(kNotMeasuredReasons[int(n.because)]))}};
+            if (!n.why.isEmpty())
+                f.push_back({"why", str(n.why)});
+            entries << inlineObject(f);
+        }
+        top.push_back({"not_measured", blockArray(entries, 2)});
     }
 
     if (!lesson.predict.empty()) {

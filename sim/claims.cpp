@@ -1,4 +1,5 @@
 #include "claims.h"
+#include "scene_keys.h"
 
 #include "error.h"
 #include "parameters.h"
@@ -56,6 +57,15 @@ constexpr std::array kMeasures{
     ClaimMeasure{"acceleration_ratio", "1", W::At, true,
                  "the ball's acceleration along `axis` divided by that of ball `other` at the moment `at`, as the "
                  "acceleration arrows show them"},
+    ClaimMeasure{"overlapping", "balls", W::At, false,
+                 "how many balls overlap at least one other ball at the moment `at` (their centres are closer than "
+                 "the sum of their radii)"},
+    ClaimMeasure{"ball_count", "balls", W::At, false, "how many balls the world holds at the moment `at`"},
+    ClaimMeasure{"energy_ratio", "1", W::At, false,
+                 "the total energy (kinetic plus potential) at the moment `at` divided by that at the start"},
+    ClaimMeasure{"contacts", "contacts", W::OverRun, false,
+                 "how many ball–ball contacts the collision detection found from 0 to `at` (a contact that lasts "
+                 "several steps counts once a step)"},
     ClaimMeasure{"tests_per_step", "tests", W::At, false,
                  "how many pairs the collision detection tested with the exact distance test in the step that ends "
                  "at `at` (0 when collisions are off)"},
@@ -182,6 +192,18 @@ public:
             return static_cast<double>(w.lastStep().pairsTested);
         if (name == "stopped")
             return w.halted() ? 1.0 : 0.0;
+        if (name == "ball_count")
+            return b.size();
+        if (name == "energy_ratio")
+            return m_e0 != 0.0 ? w.energy().total() / m_e0 : std::numeric_limits<double>::quiet_NaN();
+        if (name == "overlapping") {
+            std::vector<char> hit(std::size_t(b.size()), 0);
+            for (int k = 0; k < b.size(); ++k)
+                for (int j = k + 1; j < b.size(); ++j)
+                    if ((b.position.col(k) - b.position.col(j)).norm() < b.radius[k] + b.radius[j])
+                        hit[std::size_t(k)] = hit[std::size_t(j)] = 1;
+            return double(std::count(hit.begin(), hit.end(), 1));
+        }
         if (b.size() == 0)
             return std::numeric_limits<double>::quiet_NaN();
         const Eigen::VectorXd speed = b.velocity.colwise().norm().transpose();
@@ -234,6 +256,9 @@ private:
         } else if (name == "max_position" || name == "min_position") {
             largest = name == "max_position";
             v = component(b.position.col(m_claim.ball), m_claim.axis);
+        } else if (name == "contacts") {
+            m_value = static_cast<double>(w.totals().contacts);
+            return;
         } else { // wall_hits
             m_value = static_cast<double>(w.totals().wallHits);
             return;
@@ -287,6 +312,11 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
         return refused("the time `at` must be a number of seconds ≥ 0");
     Scene changed = scene;
     for (const auto& [key, value] : claim.set) {
+        if (isSceneKey(key)) {
+            if (const auto problem = setSceneKey(changed, key, value))
+                return refused(cat({"cannot set ", key, ": ", *problem}));
+            continue;
+        }
         const Parameter* p = findParameter(key);
         if (!p)
             return refused(cat({"no parameter called \"", key, "\" to set"}));

@@ -44,7 +44,8 @@ struct Claim {
     bool relative = false;  ///< Near: tolerance is a fraction of |value|
     /// Changes to the scene's settings before it runs ("with resting contacts
     /// off, …"): key paths of sim/parameters.h and their values (a choice by
-    /// its index, a switch as 0 or 1).
+    /// its index, a switch as 0 or 1), or of sim/scene_keys.h ("balls.0.y",
+    /// "spawn.count").
     std::vector<std::pair<std::string, double>> set;
 
     friend bool operator==(const Claim&, const Claim&) = default;

@@ -1,0 +1,27 @@
+#pragma once
+// Key paths into a scene beyond its world settings, for a claim's "set": one
+// listed ball's start ("balls.2.vx") and the random balls' count and seed
+// ("spawn.count"). A claim such as "with the tip ball 200 px higher, …" runs
+// the scene it describes. World settings are the rows of sim/parameters.h.
+
+#include "scene.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace forcelab::sim {
+
+/// Why `value` cannot be set at `key` in `scene` (the key names nothing, the
+/// ball does not exist, the value is outside the field's range), or nothing
+/// when it can.
+std::optional<std::string> checkSceneKey(const Scene& scene, std::string_view key, double value);
+
+/// Sets it; the same explanation as checkSceneKey when it cannot.
+std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value);
+
+/// Whether `key` has the form of a scene key (it starts "balls." or "spawn."),
+/// whatever its ball or field.
+bool isSceneKey(std::string_view key);
+
+} // namespace forcelab::sim
