@@ -241,3 +241,81 @@ TEST_CASE("TestClaims::testsPerStepCountPairs")
     VERIFY2(off.holds, off.explanation.c_str());
 }
 
+
+// A claim's "set" may move a listed ball or change the number of random
+// balls: the run starts from the scene the sentence describes.
+TEST_CASE("TestClaims::setMovesABallAndAddsRandomBalls")
+{
+    // Free flight at 120 px/s from x = 250 instead of 100: x(1.5 s) = 430.
+    Scene s = openScene({ballAt(100, 200, 120, 0)});
+    Claim c = near("position", 430.0, 1e-9, 1.5);
+    c.axis = 'x';
+    c.set = {{"balls.0.x", 250.0}};
+    ClaimResult r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    // And with vx = −60: x = 250 − 90 = 160.
+    c.set.push_back({"balls.0.vx", -60.0});
+    c.value = 160.0;
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    // The random balls come after the listed one.
+    s.settings.walls = WallSettings{};
+    Claim count = near("ball_count", 6.0, 0.0, 0.0);
+    count.set = {{"spawn.count", 5.0}};
+    r = checkClaim(s, count);
+    VERIFY2(r.holds, r.explanation.c_str());
+    // Keys that name nothing are refused with the reason.
+    count.set = {{"balls.1.x", 0.0}};
+    r = checkClaim(s, count);
+    VERIFY(!r.holds);
+    VERIFY2(r.explanation.find("no listed ball 1") != std::string::npos, r.explanation.c_str());
+    count.set = {{"spawn.count", 2.5}};
+    r = checkClaim(s, count);
+    VERIFY2(!r.holds && r.explanation.find("not a whole number") != std::string::npos, r.explanation.c_str());
+    count.set = {{"balls.0.colour", 1.0}};
+    VERIFY(!checkClaim(s, count).holds);
+}
+
+// Two balls 15 px apart with radii 10 overlap; a third far away does not.
+TEST_CASE("TestClaims::overlappingCountsBallsThatTouchAnother")
+{
+    Scene s = openScene({ballAt(100, 100), ballAt(115, 100), ballAt(300, 100)});
+    ClaimResult r = checkClaim(s, near("overlapping", 2.0, 0.0, 0.0));
+    VERIFY2(r.holds, r.explanation.c_str());
+    // Moving the far ball onto the second makes it three.
+    Claim c = near("overlapping", 3.0, 0.0, 0.0);
+    c.set = {{"balls.2.x", 130.0}};
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+}
+
+// Linear drag: v(t) = v₀ e^(−k t), so the kinetic energy falls as e^(−2 k t).
+// rk4 at dt = 1/600 s is exact to about (k dt)⁵ per step; 1e-9 relative is ample.
+// Without a force the energy stays exactly.
+TEST_CASE("TestClaims::energyRatioFollowsDrag")
+{
+    Scene s = openScene({ballAt(300, 200, 100, 0)});
+    s.settings.time.integrator = IntegratorKind::Rk4;
+    s.settings.time.dt = 1.0 / 600.0;
+    ClaimResult r = checkClaim(s, near("energy_ratio", 1.0, 1e-12, 2.0));
+    VERIFY2(r.holds, r.explanation.c_str());
+    s.settings.drag.enabled = true;
+    s.settings.drag.k = 0.5;
+    Claim c = near("energy_ratio", std::exp(-2.0 * 0.5 * 2.0), 0.0, 2.0);
+    c.relative = true;
+    c.tolerance = 1e-9;
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+}
+
+// Two balls meet head-on once and fly apart: one contact, found in one step.
+TEST_CASE("TestClaims::contactsCountsAHeadOnMeetingOnce")
+{
+    Scene s = openScene({ballAt(100, 200, 100, 0), ballAt(300, 200, -100, 0)});
+    s.settings.collisions.response = Response::Elastic1D;
+    ClaimResult r = checkClaim(s, near("contacts", 1.0, 0.0, 3.0));
+    VERIFY2(r.holds, r.explanation.c_str());
+    s.settings.collisions.response = Response::None;
+    r = checkClaim(s, near("contacts", 0.0, 0.0, 3.0));
+    VERIFY2(r.holds, r.explanation.c_str());
+}

@@ -6,6 +6,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "lessons/lesson_markup.h"
+#include "lessons/sentence_check.h"
 #include "sim/names.h"
 #include "sim/world.h"
 
@@ -70,6 +71,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
     QCOMPARE(a.claims.size(), b.claims.size());
     for (std::size_t i = 0; i < a.claims.size(); ++i)
         QVERIFY2(a.claims[i] == b.claims[i], a.claims[i].text.c_str());
+    QVERIFY(a.notMeasured == b.notMeasured);
 
     const sim::WorldSettings& s = a.scene.settings;
     const sim::WorldSettings& t = b.scene.settings;
@@ -173,6 +175,12 @@ class TestLessonLoader : public QObject {
 private slots:
     void claimsAreReadCheckedAndWritten();
     void teacherNotesAreReadAndWritten();
+    void claimSetNamesBallsAndRandomBalls();
+    void notMeasuredIsReadAndWritten();
+    void sentencesWithNumbersNeedAClaimOrAReason_data();
+    void sentencesWithNumbersNeedAClaimOrAReason();
+    void numbersAndComparisonsAreFound_data();
+    void numbersAndComparisonsAreFound();
     void builtInFilesAreCompiledIn();
     void everyBuiltInLessonLoads();
     void builtInByIdAndStem();
@@ -244,6 +252,131 @@ void TestLessonLoader::claimsAreReadCheckedAndWritten()
                                  "claims.2: give \"near\" one tolerance", "claims.3.set.models.drag.kk: not a parameter",
                                  "claims.4.says: missing", "claims.4: give exactly one of"})
         QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
+}
+
+void TestLessonLoader::claimSetNamesBallsAndRandomBalls()
+{
+    const LoadResult r = loadText(minimal(R"("balls": [{"x": 100, "y": 90}], "spawn": {"count": 2}, "claims": [
+        {"says": "s", "measure": "position", "at": 0, "near": 40, "within": 0, "axis": "x",
+         "set": {"balls.0.x": 40, "spawn.count": 7, "time.dt": 0.01}}])"));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
+    const sim::Claim& c = r.lesson->claims.at(0);
+    QCOMPARE(c.set.size(), std::size_t{3});
+    QCOMPARE(c.set[0], (std::pair<std::string, double>{"balls.0.x", 40.0}));
+    QCOMPARE(c.set[1], (std::pair<std::string, double>{"spawn.count", 7.0}));
+    QVERIFY(sim::checkClaim(r.lesson->scene, c).holds);
+    const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
+    QVERIFY2(back.ok(), qPrintable(back.errors().join(" | ")));
+    compareLessons(*r.lesson, *back.lesson);
+
+    // Each bad key or value is one line naming the key.
+    const LoadResult bad = loadText(minimal(R"("balls": [{"x": 100, "y": 90}], "claims": [
+        {"says": "s", "measure": "speed", "at": 0, "below": 1,
+         "set": {"balls.1.x": 5, "balls.0.r": -1, "balls.0.hue": 3, "spawn.count": 1.5, "balls.0.vx": "fast"}}])"));
+    QVERIFY(!bad.ok());
+    const QString all = bad.errors().join(" | ");
+    for (const char* expected :
+         {"claims.0.set.balls.1.x: the lesson lists 1 balls, so there is no listed ball 1", "claims.0.set.balls.0.r: -1 is outside",
+          "claims.0.set.balls.0.hue: a ball's fields are", "claims.0.set.spawn.count: 1.5 is not a whole number",
+          "claims.0.set.balls.0.vx: expected a number"})
+        QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
+}
+
+void TestLessonLoader::notMeasuredIsReadAndWritten()
+{
+    const LoadResult r = loadText(minimal(R"("text": "How high? Set g to 98 px/s².", "not_measured": [
+        {"says": "How high?", "because": "question"},
+        {"says": "Set g to 98", "because": "unmeasured", "why": "looked at it"}])"));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
+    QCOMPARE(r.lesson->notMeasured.size(), std::size_t{2});
+    QVERIFY(r.lesson->notMeasured[0].because == NotMeasured::Because::Question);
+    QVERIFY(r.lesson->notMeasured[1].because == NotMeasured::Because::Unmeasured);
+    QCOMPARE(r.lesson->notMeasured[1].why, QStringLiteral("looked at it"));
+    const LoadResult back = LessonLoader::loadBytes(saveLesson(*r.lesson), QStringLiteral("saved.json"));
+    QVERIFY2(back.ok(), qPrintable(back.errors().join(" | ")));
+    compareLessons(*r.lesson, *back.lesson);
+
+    const LoadResult bad = loadText(minimal(R"("not_measured": [{"says": "a", "because": "obvious"},
+        {"says": "b", "because": "unmeasured"}, {"because": "question"}, 3])"));
+    QVERIFY(!bad.ok());
+    const QString all = bad.errors().join(" | ");
+    for (const char* expected : {"not_measured.0.because: \"obvious\" is not one of question, instruction",
+                                 "not_measured.1.why: an unmeasured sentence needs", "not_measured.2.says: missing",
+                                 "not_measured.3: expected an entry"})
+        QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
+}
+
+// Each row: a lesson's words and entries, and the problems `check` reports
+// (a part of each line, in order; none when the lesson passes).
+void TestLessonLoader::sentencesWithNumbersNeedAClaimOrAReason_data()
+{
+    QTest::addColumn<QByteArray>("extra");
+    QTest::addColumn<QStringList>("problems");
+    const QByteArray ball = R"("balls": [{"x": 100, "y": 90, "r": 12}], )";
+    QTest::newRow("no number") << QByteArray(R"("text": "<p>A ball falls.</p><p>It is red.</p>")") << QStringList{};
+    QTest::newRow("a number nothing backs")
+        << QByteArray(R"("text": "<p>A ball falls.</p><p>It falls 100 px in a second.</p>")")
+        << QStringList{QStringLiteral("text: \"It falls 100 px in a second.\" says \"100\", but no claim checks it")};
+    QTest::newRow("a comparison in an answer")
+        << QByteArray(R"("challenges": ["Which is first?"], "teacher": {"answers": ["Both land at the same time."]},
+                        "not_measured": [{"says": "Which is first?", "because": "question"}])")
+        << QStringList{QStringLiteral("teacher.answers.0: \"Both land at the same time.\" says \"same\"")};
+    QTest::newRow("backed by a claim, in pieces, in two texts")
+        << ball + R"("text": "The ball is at x = 100 px. So it stays.", "teacher": {"answers": ["Yes: the ball is at x = 100 px."]},
+                     "challenges": ["Where?"], "not_measured": [{"says": "Where?", "because": "question"}],
+                     "claims": [{"says": "ball is at … 100 px", "measure": "position", "axis": "x", "at": 0, "near": 100, "within": 0}])"
+        << QStringList{};
+    QTest::newRow("a quote that is not there")
+        << ball + R"("claims": [{"says": "It rises to 192 px.", "measure": "speed", "at": 0, "below": 1}])"
+        << QStringList{QStringLiteral("claims.0.says: \"It rises to 192 px.\" is not in the lesson")};
+    QTest::newRow("a reason over two sentences")
+        << QByteArray(R"("text": "Set dt to 1/60 s. Then 60 steps take 1 s.",
+                         "not_measured": [{"says": "1/60 s. Then 60", "because": "instruction"}])")
+        << QStringList{QStringLiteral("not_measured.0.says: \"1/60 s. Then 60\" runs over 2 sentences")};
+    QTest::newRow("a setting the scene sets")
+        << ball + R"("text": "Its radius is 12 px and dt is 1/60 s, 60 steps a second.", "time": {"dt": 0.016666666666666666},
+                     "not_measured": [{"says": "Its radius", "because": "setting"}])"
+        << QStringList{};
+    QTest::newRow("a setting the scene does not set")
+        << ball + R"("text": "Its radius is 15 px.", "not_measured": [{"says": "Its radius", "because": "setting"}])"
+        << QStringList{QStringLiteral("not_measured.0: \"Its radius is 15 px.\" is called a setting, but 15 is not")};
+}
+
+void TestLessonLoader::sentencesWithNumbersNeedAClaimOrAReason()
+{
+    QFETCH(QByteArray, extra);
+    QFETCH(QStringList, problems);
+    const LoadResult r = loadText(minimal(extra));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
+    const lessons::SentenceReport report = lessons::checkSentences(*r.lesson);
+    QCOMPARE(report.problems.size(), problems.size());
+    for (qsizetype i = 0; i < problems.size(); ++i)
+        QVERIFY2(report.problems[i].contains(problems[i]),
+                 qPrintable(QStringLiteral("%1 not in %2").arg(problems[i], report.problems[i])));
+}
+
+void TestLessonLoader::numbersAndComparisonsAreFound_data()
+{
+    QTest::addColumn<QString>("sentence");
+    QTest::addColumn<QString>("found");
+    QTest::newRow("plain") << QStringLiteral("It rises 211 px.") << QStringLiteral("211");
+    QTest::newRow("decimal") << QStringLiteral("e is 0.9 here.") << QStringLiteral("0.9");
+    QTest::newRow("fraction") << QStringLiteral("Use dt = 1/60 s.") << QStringLiteral("1/60");
+    QTest::newRow("grouped") << QStringLiteral("About 1,200 tests.") << QStringLiteral("1,200");
+    QTest::newRow("minus") << QStringLiteral("vx becomes −103.9.") << QStringLiteral("−103.9");
+    QTest::newRow("integrator names are not numbers") << QStringLiteral("Try rk4 or yoshida4.") << QString();
+    QTest::newRow("response names are not numbers") << QStringLiteral("Switch to 2d-axis.") << QString();
+    QTest::newRow("a word") << QStringLiteral("It takes twice as long.") << QStringLiteral("twice");
+    QTest::newRow("a comparative") << QStringLiteral("The red one is Faster.") << QStringLiteral("Faster");
+    QTest::newRow("pi") << QStringLiteral("The period is π s.") << QStringLiteral("π");
+    QTest::newRow("none") << QStringLiteral("The ball turns round.") << QString();
+}
+
+void TestLessonLoader::numbersAndComparisonsAreFound()
+{
+    QFETCH(QString, sentence);
+    QFETCH(QString, found);
+    QCOMPARE(lessons::numberOrComparison(sentence), found);
 }
 
 void TestLessonLoader::teacherNotesAreReadAndWritten()
