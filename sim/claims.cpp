@@ -303,7 +303,7 @@ const ClaimMeasure* findClaimMeasure(std::string_view name)
     return nullptr;
 }
 
-ClaimResult checkClaim(const Scene& scene, const Claim& claim)
+ClaimResult checkClaim(const Scene& scene, const Claim& claim, const ClaimProgress& progress)
 {
     const ClaimMeasure* row = findClaimMeasure(claim.measure);
     if (!row)
@@ -347,6 +347,11 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim)
         const Vec2 v0 = row->perBall ? Vec2(w.balls().velocity.col(claim.ball)) : Vec2::Zero();
         w.step();
         done = m.afterStep(w, t0, x0, v0);
+        if (progress && !progress(claim.at > 0.0 ? std::min(1.0, w.time() / claim.at) : 1.0)) {
+            ClaimResult stopped = refused("cancelled before the run reached the claim's time");
+            stopped.cancelled = true;
+            return stopped;
+        }
     }
     ClaimResult r;
     r.measured = m.finish(w);

@@ -7,6 +7,7 @@
 
 #include "scene.h"
 
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -66,6 +67,7 @@ const ClaimMeasure* findClaimMeasure(std::string_view name);
 
 struct ClaimResult {
     bool holds = false;
+    bool cancelled = false;  ///< the progress callback stopped the run; nothing was measured
     double measured = 0.0;   ///< NaN when it could not be measured (the event never came)
     std::string explanation; ///< "measured 191.8 px, stated 192 px ± 1 px" or why it could not be measured
 };
@@ -73,7 +75,12 @@ struct ClaimResult {
 /// Runs `scene` from t = 0 in a world of its own and checks the claim. A
 /// claim about a ball that does not exist, or an event that does not happen
 /// before `at`, does not hold (and the explanation says so).
-ClaimResult checkClaim(const Scene& scene, const Claim& claim);
+/// `progress`, when given, is called after every step with the share of the
+/// run done (0 to 1); returning false stops the run, and the result is
+/// `cancelled` (the workbench's Predict panel runs claims on a worker
+/// thread with a Cancel button).
+using ClaimProgress = std::function<bool(double done)>;
+ClaimResult checkClaim(const Scene& scene, const Claim& claim, const ClaimProgress& progress = {});
 
 /// The claim as a line of a report: "holds: <text> (measured …)".
 std::string describe(const Claim& claim, const ClaimResult& result);

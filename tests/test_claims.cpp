@@ -5,6 +5,7 @@
 
 #include "sim_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -318,4 +319,25 @@ TEST_CASE("TestClaims::contactsCountsAHeadOnMeetingOnce")
     s.settings.collisions.response = Response::None;
     r = checkClaim(s, near("contacts", 0.0, 0.0, 3.0));
     VERIFY2(r.holds, r.explanation.c_str());
+}
+
+// The progress callback sees the share of the run done, rising to 1, and
+// stops the run when it returns false: the result says so and holds nothing.
+TEST_CASE("TestClaims::progressReportsAndCancels")
+{
+    const Scene s = openScene({ballAt(100, 200, 120, 0)});
+    Claim c = near("position", 280.0, 1e-9, 1.5);
+    c.axis = 'x';
+    std::vector<double> seen;
+    ClaimResult r = checkClaim(s, c, [&](double done) {
+        seen.push_back(done);
+        return true;
+    });
+    VERIFY2(r.holds && !r.cancelled, r.explanation.c_str());
+    VERIFY(seen.size() == 90); // 1.5 s at dt = 1/60 s
+    VERIFY(std::is_sorted(seen.begin(), seen.end()) && seen.front() > 0.0);
+    VERIFY(std::abs(seen.back() - 1.0) < 1e-12);
+    int calls = 0;
+    r = checkClaim(s, c, [&](double) { return ++calls < 10; });
+    VERIFY(r.cancelled && !r.holds && std::isnan(r.measured) && calls == 10);
 }

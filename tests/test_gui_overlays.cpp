@@ -26,6 +26,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QPainter>
@@ -72,6 +73,7 @@ private slots:
     void openDialogStartsInTheLessonsFolder();
     void comparePanesRunTheirOwnWallModels();
     void predictionIsMeasuredByItsClaim();
+    void slowPredictionCanBeCancelled();
     void choiceQuestionNamesTheRightAnswer();
     void stopwatchTimesBounceToBounce();
     void rulerMeasuresInWorldPixels();
@@ -375,7 +377,8 @@ void GuiOverlaysTest::predictionIsMeasuredByItsClaim()
     QVERIFY(number && number->isEnabled());
     QTest::keyClicks(number, QStringLiteral("200"));
     QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("predictRun")), Qt::LeftButton);
-    QVERIFY(window.controller()->isPlaying());
+    // The answer is measured on a worker; the lesson runs when it is known.
+    QTRY_VERIFY(window.controller()->isPlaying());
     QCOMPARE(dock->predicted().value_or(-1), 200.0);
     QVERIFY(!dock->revealed());
     window.controller()->pause();
@@ -393,6 +396,41 @@ void GuiOverlaysTest::predictionIsMeasuredByItsClaim()
     QVERIFY(!dock->predicted() && number->isEnabled());
 }
 
+// A question whose claim takes long (a million sub-steps) is measured on a
+// worker thread: the window keeps answering, the progress bar moves, and
+// Cancel asks the question again without running the lesson.
+void GuiOverlaysTest::slowPredictionCanBeCancelled()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("slow.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": 1, "id": "slow", "time": {"dt": 0.00001}, "spawn": {"count": 40},
+        "models": {"collisions": {"response": "flag", "detection": "brute"}},
+        "claims": [{"says": "s", "measure": "speed", "at": 10, "below": 1e9}],
+        "predict": [{"ask": "How fast?", "claim": 0}]})");
+    file.close();
+    MainWindow window(path);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* dock = window.findChild<PredictDock*>(QStringLiteral("predictDock"));
+    QVERIFY(dock && dock->hasQuestions());
+    auto* number = dock->findChild<QLineEdit*>(QStringLiteral("predictNumber"));
+    auto* progress = dock->findChild<QProgressBar*>(QStringLiteral("predictProgress"));
+    auto* cancel = dock->findChild<QPushButton*>(QStringLiteral("predictCancel"));
+    QVERIFY(number && progress && cancel && !progress->isVisible());
+    QTest::keyClicks(number, QStringLiteral("5"));
+    QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("predictRun")), Qt::LeftButton);
+    QVERIFY(dock->measuring() && progress->isVisible() && cancel->isVisible() && !number->isEnabled());
+    QTRY_VERIFY(progress->value() > 0); // the event loop runs while the worker measures
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QTRY_VERIFY(!dock->measuring());
+    QTRY_VERIFY(!progress->isVisible());
+    QVERIFY(!dock->predicted() && !dock->measured() && number->isEnabled());
+    QVERIFY(!window.controller()->isPlaying());
+    QVERIFY(dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text().startsWith(QStringLiteral("Cancelled")));
+}
+
 // Lesson 09's question is a choice: clamp with e = 1 lifts the red ball
 // above its 330 px drop, and the dock names "higher" as the answer.
 void GuiOverlaysTest::choiceQuestionNamesTheRightAnswer()
@@ -404,6 +442,7 @@ void GuiOverlaysTest::choiceQuestionNamesTheRightAnswer()
     QVERIFY(exactly);
     exactly->setChecked(true);
     dock->lockIn();
+    QTRY_VERIFY(dock->measured().has_value());
     window.controller()->pause();
     dock->reveal();
     const QString shown = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();

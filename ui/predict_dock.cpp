@@ -11,9 +11,11 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -83,6 +85,19 @@ PredictDock::PredictDock(SimulationController* controller, QWidget* parent)
     buttons->addWidget(m_next);
     layout->addLayout(buttons);
 
+    // While the answer is measured: how far, and a way out.
+    auto* measuringRow = new QHBoxLayout;
+    m_progress = new QProgressBar(body);
+    m_progress->setObjectName(QStringLiteral("predictProgress"));
+    m_progress->setRange(0, 100);
+    m_cancel = new QPushButton(tr("Cancel"), body);
+    m_cancel->setObjectName(QStringLiteral("predictCancel"));
+    measuringRow->addWidget(m_progress, 1);
+    measuringRow->addWidget(m_cancel);
+    layout->addLayout(measuringRow);
+    m_progress->hide();
+    m_cancel->hide();
+
     m_result = new QLabel(body);
     m_result->setObjectName(QStringLiteral("predictResult"));
     m_result->setWordWrap(true);
@@ -94,11 +109,20 @@ PredictDock::PredictDock(SimulationController* controller, QWidget* parent)
     connect(m_run, &QPushButton::clicked, this, &PredictDock::lockIn);
     connect(m_number, &QLineEdit::returnPressed, this, &PredictDock::lockIn);
     connect(m_show, &QPushButton::clicked, this, &PredictDock::reveal);
+    connect(m_cancel, &QPushButton::clicked, this, &PredictDock::cancelMeasurement);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &PredictDock::measurementFinished);
     connect(m_next, &QPushButton::clicked, this, &PredictDock::nextQuestion);
     connect(m_controller, &SimulationController::stepped, this, &PredictDock::onStepped);
     // A reset or a new scene asks again.
     connect(m_controller, &SimulationController::sceneChanged, this, &PredictDock::showQuestion);
     showQuestion();
+}
+
+PredictDock::~PredictDock()
+{
+    // The worker reads its own copy of the scene but polls our flag.
+    m_cancelFlag = true;
+    m_watcher.waitForFinished();
 }
 
 void PredictDock::setLesson(const Lesson& lesson)
@@ -118,6 +142,12 @@ QString PredictDock::unitOf(const sim::Claim& claim) const
 
 void PredictDock::showQuestion()
 {
+    if (m_watcher.isRunning()) { // a new question or a reset: the running measurement is not wanted
+        m_cancelFlag = true;
+        m_discard = true;
+    }
+    m_progress->hide();
+    m_cancel->hide();
     m_predicted.reset();
     m_measured.reset();
     m_revealed = false;
@@ -183,17 +213,71 @@ void PredictDock::lockIn()
         }
         m_predicted = q.values[static_cast<std::size_t>(id)];
     }
-    // The claim's own rule, on the scene with the settings the student runs.
-    const sim::Claim& claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
+    // The claim's own rule, on the scene with the settings the student runs,
+    // measured on a worker thread: a claim may take seconds.
+    const sim::Claim claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
     sim::Scene scene = m_lesson.scene;
     scene.settings = m_controller->world().settings();
-    const sim::ClaimResult result = sim::checkClaim(scene, claim);
+    if (m_watcher.isRunning()) { // the last one is still stopping
+        m_predicted.reset();
+        m_result->setText(tr("Still stopping the last measurement; try again in a moment."));
+        return;
+    }
+    setAnswerEnabled(false);
+    m_run->setEnabled(false);
+    m_progress->setValue(0);
+    m_progress->show();
+    m_cancel->show();
+    m_cancel->setEnabled(true);
+    m_result->setText(tr("Locked in. Working out the answer…"));
+    m_cancelFlag = false;
+    m_discard = false;
+    auto progress = [this, flag = &m_cancelFlag, shown = -1](double done) mutable {
+        const int percent = static_cast<int>(100.0 * done);
+        if (percent != shown) {
+            shown = percent;
+            QMetaObject::invokeMethod(this, [this, percent] { m_progress->setValue(percent); }, Qt::QueuedConnection);
+        }
+        return !flag->load();
+    };
+    m_watcher.setFuture(QtConcurrent::run([scene, claim, progress]() mutable {
+        return sim::checkClaim(scene, claim, progress);
+    }));
+}
+
+void PredictDock::cancelMeasurement()
+{
+    m_cancelFlag = true;
+    m_cancel->setEnabled(false);
+}
+
+void PredictDock::setAnswerEnabled(bool enabled)
+{
+    m_number->setEnabled(enabled);
+    for (QAbstractButton* b : m_choices->buttons())
+        b->setEnabled(enabled);
+}
+
+void PredictDock::measurementFinished()
+{
+    m_progress->hide();
+    m_cancel->hide();
+    if (m_discard) { // showQuestion() has already asked again
+        m_discard = false;
+        return;
+    }
+    const sim::ClaimResult result = m_watcher.result();
+    if (result.cancelled) {
+        m_predicted.reset();
+        setAnswerEnabled(true);
+        m_run->setEnabled(true);
+        m_result->setText(tr("Cancelled. Change your answer or lock it in again."));
+        return;
+    }
+    const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
+    const sim::Claim& claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
     m_measured = result.measured;
     m_revealAt = m_controller->world().time() + claim.at;
-    m_number->setEnabled(false);
-    for (QAbstractButton* b : m_choices->buttons())
-        b->setEnabled(false);
-    m_run->setEnabled(false);
     m_show->setEnabled(true);
     m_result->setText(tr("Locked in. Watch: the answer comes at t = %1 s.").arg(number(m_revealAt)));
     m_controller->play();

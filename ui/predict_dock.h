@@ -6,16 +6,23 @@
 // prediction against the measurement. The measurement is the answering
 // claim's own (sim::checkClaim on the scene with the settings the student
 // ran), so the question, the lesson's text and the check can never disagree.
+// The measurement runs on a worker thread with a progress bar and a Cancel
+// button, so a lesson whose claim takes long never freezes the window.
 
 #include "lessons/lesson.h"
 
-#include <QDockWidget>
+#include "sim/claims.h"
 
+#include <QDockWidget>
+#include <QFutureWatcher>
+
+#include <atomic>
 #include <optional>
 
 class QButtonGroup;
 class QLabel;
 class QLineEdit;
+class QProgressBar;
 class QPushButton;
 class QVBoxLayout;
 
@@ -28,6 +35,7 @@ class PredictDock : public QDockWidget {
 public:
     /// `controller` is not owned and must outlive the dock.
     explicit PredictDock(SimulationController* controller, QWidget* parent = nullptr);
+    ~PredictDock() override;
 
     /// The lesson's questions (none: the dock says so).
     void setLesson(const Lesson& lesson);
@@ -41,10 +49,15 @@ public:
     std::optional<double> predicted() const { return m_predicted; }
     /// Whether the result is shown (the run has reached the question's time).
     bool revealed() const { return m_revealed; }
+    /// Whether the answer is being measured (the worker runs).
+    bool measuring() const { return m_watcher.isRunning(); }
 
 public slots:
-    /// Takes the answer, works out the measurement and runs the lesson.
+    /// Takes the answer and starts measuring it; the lesson runs when the
+    /// measurement is done.
     void lockIn();
+    /// Stops the measurement; the question is asked again.
+    void cancelMeasurement();
     /// Shows the result now, without waiting for the run.
     void reveal();
     void nextQuestion();
@@ -52,6 +65,8 @@ public slots:
 private:
     void showQuestion();
     void onStepped();
+    void measurementFinished();
+    void setAnswerEnabled(bool enabled);
     QString unitOf(const sim::Claim& claim) const;
 
     SimulationController* m_controller; // not owned
@@ -72,6 +87,11 @@ private:
     QPushButton* m_show = nullptr;
     QPushButton* m_next = nullptr;
     QLabel* m_result = nullptr;
+    QPushButton* m_cancel = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QFutureWatcher<sim::ClaimResult> m_watcher;
+    std::atomic<bool> m_cancelFlag{false};
+    bool m_discard = false; // the question changed while measuring: drop the result
 };
 
 } // namespace forcelab
