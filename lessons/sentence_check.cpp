@@ -219,13 +219,33 @@ QStringList piecesOf(const QString& says)
     return pieces;
 }
 
+bool isWordChar(QChar c)
+{
+    return c.isLetterOrNumber() || c == QLatin1Char('_');
+}
+
+/// The first place from `from` where `piece` stands as whole words: "s" is
+/// not found in "fast".
+qsizetype findWords(const QString& text, const QString& piece, qsizetype from)
+{
+    for (qsizetype at = text.indexOf(piece, from, Qt::CaseInsensitive); at >= 0;
+         at = text.indexOf(piece, at + 1, Qt::CaseInsensitive)) {
+        const qsizetype end = at + piece.size();
+        const bool startOk = at == 0 || !isWordChar(piece.front()) || !isWordChar(text[at - 1]);
+        const bool endOk = end == text.size() || !isWordChar(piece.back()) || !isWordChar(text[end]);
+        if (startOk && endOk)
+            return at;
+    }
+    return -1;
+}
+
 /// Where a quote's pieces are, in order, in one field.
 std::optional<std::vector<Span>> locate(const QStringList& pieces, const Field& f)
 {
     std::vector<Span> spans;
     qsizetype from = 0;
     for (const QString& piece : pieces) {
-        const qsizetype at = f.flat.indexOf(piece, from, Qt::CaseInsensitive);
+        const qsizetype at = findWords(f.flat, piece, from);
         if (at < 0)
             return std::nullopt;
         spans.emplace_back(at, at + piece.size());

@@ -329,6 +329,10 @@ void TestLessonLoader::sentencesWithNumbersNeedAClaimOrAReason_data()
     QTest::newRow("a quote that is not there")
         << ball + R"("claims": [{"says": "It rises to 192 px.", "measure": "speed", "at": 0, "below": 1}])"
         << QStringList{QStringLiteral("claims.0.says: \"It rises to 192 px.\" is not in the lesson")};
+    QTest::newRow("a quote is whole words")
+        << ball + R"("text": "How fast?", "not_measured": [{"says": "How fast?", "because": "question"}],
+                     "claims": [{"says": "s", "measure": "speed", "at": 0, "below": 1}])"
+        << QStringList{QStringLiteral("claims.0.says: \"s\" is not in the lesson")};
     QTest::newRow("a reason over two sentences")
         << QByteArray(R"("text": "Set dt to 1/60 s. Then 60 steps take 1 s.",
                          "not_measured": [{"says": "1/60 s. Then 60", "because": "instruction"}])")
