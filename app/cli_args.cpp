@@ -1,9 +1,17 @@
 #include "cli_args.h"
+#include "cli_commands.h"
+
+#include "lessons/message_text.h"
 
 #include <cmath>
 #include <stdexcept>
 
 namespace forcelab::cli {
+
+std::string echo(const std::string& value)
+{
+    return lessons::cutForMessage(QString::fromStdString(value)).toStdString();
+}
 
 std::optional<double> parseFiniteNumber(const std::string& text)
 {

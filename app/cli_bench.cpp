@@ -76,7 +76,7 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     if (has("runs")) {
         const auto n = parseSizes(valueOf(parser, "runs"));
         if (!n || n->size() != 1 || (*n)[0] < 1) {
-            err << "forcelab-cli bench: --runs: expected a positive integer, got '" << valueOf(parser, "runs") << "'\n";
+            err << "forcelab-cli bench: --runs: expected a positive integer, got '" << echo(valueOf(parser, "runs")) << "'\n";
             return 2;
         }
         o.runs = (*n)[0];
@@ -86,7 +86,7 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
             continue;
         const auto n = parseSizes(valueOf(parser, name));
         if (!n) {
-            err << "forcelab-cli bench: --" << name << ": expected a list like 1000,4000, got '" << valueOf(parser, name)
+            err << "forcelab-cli bench: --" << name << ": expected a list like 1000,4000, got '" << echo(valueOf(parser, name))
                 << "'\n";
             return 2;
         }
@@ -95,7 +95,7 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     if (has("brute-limit")) {
         const auto n = parseSizes(valueOf(parser, "brute-limit"));
         if (!n || n->size() != 1) {
-            err << "forcelab-cli bench: --brute-limit: expected an integer, got '" << valueOf(parser, "brute-limit")
+            err << "forcelab-cli bench: --brute-limit: expected an integer, got '" << echo(valueOf(parser, "brute-limit"))
                 << "'\n";
             return 2;
         }
@@ -107,7 +107,7 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         char* end = nullptr;
         o.speculative = std::strtod(v.c_str(), &end);
         if (v.empty() || *end != '\0' || !(o.speculative >= 0.0 && o.speculative <= 8.0)) {
-            err << "forcelab-cli bench: --speculative: expected a number in [0, 8], got '" << v << "'\n";
+            err << "forcelab-cli bench: --speculative: expected a number in [0, 8], got '" << echo(v) << "'\n";
             return 2;
         }
     }
@@ -122,7 +122,7 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         const auto t = parseSizes(valueOf(parser, "threads"));
         if (!t || t->size() != 1 || (*t)[0] < 1 || (*t)[0] > sim::kMostThreads) {
             err << "forcelab-cli bench: --threads: expected an integer in [1, " << sim::kMostThreads << "], got '"
-                << valueOf(parser, "threads") << "'\n";
+                << echo(valueOf(parser, "threads")) << "'\n";
             return 2;
         }
         limit = std::make_unique<sim::ThreadLimit>((*t)[0]);

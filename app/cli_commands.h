@@ -21,6 +21,11 @@ inline std::string valueOf(const QCommandLineParser& parser, const char* name)
     return parser.value(QString::fromLatin1(name)).toStdString();
 }
 
+/// A value the user typed, for a message: whole when short, else its start
+/// and its length (lessons/message_text.h), so a 100 KB argument is not
+/// echoed whole.
+std::string echo(const std::string& value);
+
 void declareRun(QCommandLineParser& parser);
 int runCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 

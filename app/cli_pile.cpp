@@ -91,7 +91,7 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
         const auto v = parseFiniteNumber(text);
         if (!v || *v < o.min || *v > o.max || (o.whole && std::floor(*v) != *v)) {
             err << "forcelab-cli pile: --" << o.name << ": expected " << (o.whole ? "a whole number" : "a number")
-                << " in [" << o.min << ", " << o.max << "], got '" << text << "'\n";
+                << " in [" << o.min << ", " << o.max << "], got '" << echo(text) << "'\n";
             return 2;
         }
         o.set(study, *v);

@@ -43,7 +43,7 @@ std::optional<RenderOptions> readOptions(const QCommandLineParser& p, std::ostre
     const std::string time = valueOf(p, "time");
     const auto t = parseFiniteNumber(time);
     if (!t || *t < 0)
-        return fail("--time: expects a number of seconds >= 0, got '" + time + "'");
+        return fail("--time: expects a number of seconds >= 0, got '" + echo(time) + "'");
     o.time = *t;
     o.out = p.value(QStringLiteral("out"));
     if (o.out.isEmpty())
@@ -55,7 +55,7 @@ std::optional<RenderOptions> readOptions(const QCommandLineParser& p, std::ostre
         const auto h = x == std::string::npos ? std::nullopt : parseFiniteNumber(v.substr(x + 1));
         if (!w || !h || *w < 1 || *h < 1 || *w > kMaxSide || *h > kMaxSide || std::floor(*w) != *w ||
             std::floor(*h) != *h)
-            return fail("--size: expects WIDTHxHEIGHT in pixels (1 to 8192 each), got '" + v + "'");
+            return fail("--size: expects WIDTHxHEIGHT in pixels (1 to 8192 each), got '" + echo(v) + "'");
         o.width = int(*w);
         o.height = int(*h);
     }

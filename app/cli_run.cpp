@@ -6,6 +6,7 @@
 #include "cli_args.h"
 
 #include "lessons/lesson_loader.h"
+#include "lessons/message_text.h"
 #include "sim/names.h"
 #include "sim/step_plan.h"
 #include "sim/world.h"
@@ -55,10 +56,11 @@ std::optional<RunOptions> readOptions(const QCommandLineParser& p, std::ostream&
         // Checked here so the message names the option the user typed; the
         // range checks are the lesson's own, through the override.
         const bool isName = std::string_view(name) == "integrator";
+        const std::string shown = lessons::cutForMessage(QString::fromStdString(v)).toStdString();
         if (isName && !sim::parseIntegrator(v))
-            return fail(flag + ": \"" + v + "\" is not one of " + sim::joinNames(sim::integratorNames()));
+            return fail(flag + ": \"" + shown + "\" is not one of " + sim::joinNames(sim::integratorNames()));
         if (!isName && !parseFiniteNumber(v))
-            return fail(flag + ": expects a number, got '" + v + "'");
+            return fail(flag + ": expects a number, got '" + shown + "'");
         o.overrides.append(Override{QString::fromLatin1(key),
                                     isName ? QString::fromStdString("\"" + v + "\"") : QString::fromStdString(v)});
     }
@@ -66,21 +68,21 @@ std::optional<RunOptions> readOptions(const QCommandLineParser& p, std::ostream&
         QString error;
         const auto override = LessonLoader::parseOverride(text, &error);
         if (!override)
-            return fail("--set " + text.toStdString() + ": " + error.toStdString());
+            return fail("--set " + lessons::cutForMessage(text).toStdString() + ": " + error.toStdString());
         o.overrides.append(*override);
     }
     if (p.isSet(QStringLiteral("steps"))) {
         const std::string v = valueOf(p, "steps");
         const auto n = parseFiniteNumber(v);
         if (!n || *n < 0 || *n > kMaxSteps || std::floor(*n) != *n)
-            return fail("--steps: expects a whole number from 0 to 1000000000, got '" + v + "'");
+            return fail("--steps: expects a whole number from 0 to 1000000000, got '" + echo(v) + "'");
         o.steps = static_cast<std::int64_t>(*n);
     }
     if (p.isSet(QStringLiteral("time"))) {
         const std::string v = valueOf(p, "time");
         const auto t = parseFiniteNumber(v);
         if (!t || !std::isfinite(*t) || *t < 0)
-            return fail("--time: expects a number of seconds >= 0, got '" + v + "'");
+            return fail("--time: expects a number of seconds >= 0, got '" + echo(v) + "'");
         o.time = *t;
     }
     const QStringList lessons = p.positionalArguments();

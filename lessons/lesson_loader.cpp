@@ -4,6 +4,7 @@
 #include "lesson_controls.h"
 #include "lesson_limits.h"
 #include "lesson_overrides.h"
+#include "message_text.h"
 #include "lesson_parser.h"
 #include "sim/world.h"
 
@@ -31,7 +32,7 @@ const QString kResourceDir = QStringLiteral(":/lessons");
 /// A problem with the input as a whole, or at a key path (no line known).
 sim::Error problem(const QString& source, const QString& message, const QString& keyPath = {})
 {
-    sim::Error e = sim::keyError(keyPath.toStdString(), message.toStdString());
+    sim::Error e = sim::keyError(cutKeyPath(keyPath).toStdString(), message.toStdString());
     e.source = source.toStdString();
     return e;
 }

@@ -1,6 +1,7 @@
 #include "lesson_overrides.h"
 
 #include "lesson_limits.h"
+#include "message_text.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,21 +12,12 @@
 
 namespace forcelab::lessons {
 
-// An override's value is echoed with every problem it causes; a long one (a
+// An override is echoed with every problem it causes; a long key or value (a
 // formula of thousands of characters) only by its start and its length. The
 // problem's own message shows the part around the error where it has one.
-constexpr qsizetype kEchoedCharacters = 60;
-
 QString overrideSource(const Override& o)
 {
-    QString value = o.value;
-    if (value.size() > kEchoedCharacters + 20) {
-        qsizetype cut = kEchoedCharacters;
-        if (value.at(cut).isLowSurrogate()) // not between the halves of one character
-            --cut;
-        value = value.left(cut) + QStringLiteral("… (%1 characters)").arg(o.value.size());
-    }
-    return QStringLiteral("--set ") + o.keyPath + QLatin1Char('=') + value;
+    return QStringLiteral("--set ") + cutKeyPath(o.keyPath) + QLatin1Char('=') + cutForMessage(o.value);
 }
 
 std::optional<QJsonValue> overrideValue(const Override& o, QString* problem)

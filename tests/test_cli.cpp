@@ -367,6 +367,13 @@ void TestCli::badInputExitsTwo_data()
                                       << "forcelab-cli pile: --balls: expected a whole number in [1, 1e+06], got '0'";
     QTest::newRow("pile correction NaN") << QStringList{"pile", "--correction", "nan"} << "--correction: expected a number";
     QTest::newRow("pile half a pass") << QStringList{"pile", "--position-passes", "2.5"} << "--position-passes";
+    // A stranger's 100,000-character argument is shown by its start and length.
+    const QString longText(100000, QLatin1Char('9'));
+    QTest::newRow("long --set key") << QStringList{"run", "@L", "--set", longText + "=3"} << "(100000 characters)";
+    QTest::newRow("long --set value") << QStringList{"run", "@L", "--set", "models.gravity.y=" + longText + "x"}
+                                      << "(100001 characters)";
+    QTest::newRow("long --dt") << QStringList{"run", "@L", "--dt", longText + "x"} << "(100001 characters)";
+    QTest::newRow("long bench --runs") << QStringList{"bench", "--runs", longText + "x"} << "(100001 characters)";
 }
 
 void TestCli::badInputExitsTwo()
@@ -378,7 +385,8 @@ void TestCli::badInputExitsTwo()
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.out.isEmpty());
     const QString err = r.err.trimmed();
-    QVERIFY2(!err.isEmpty() && err.count('\n') == 0, qPrintable(err)); // exactly one line
+    QVERIFY2(!err.isEmpty() && err.count('\n') == 0, qPrintable(err.left(400))); // exactly one line
+    QVERIFY2(err.size() < 1000, qPrintable(err.left(400))); // a long argument is not echoed whole
     QVERIFY2(err.contains(message), qPrintable(err));
 }
 

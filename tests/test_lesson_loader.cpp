@@ -175,6 +175,7 @@ class TestLessonLoader : public QObject {
 private slots:
     void claimsAreReadCheckedAndWritten();
     void teacherNotesAreReadAndWritten();
+    void longKeysAreCutInMessages();
     void claimSetNamesBallsAndRandomBalls();
     void notMeasuredIsReadAndWritten();
     void sentencesWithNumbersNeedAClaimOrAReason_data();
@@ -381,6 +382,23 @@ void TestLessonLoader::numbersAndComparisonsAreFound()
     QFETCH(QString, sentence);
     QFETCH(QString, found);
     QCOMPARE(lessons::numberOrComparison(sentence), found);
+}
+
+// A 100,000-character key, in the file or in --set, is named by its start
+// and its length in every message.
+void TestLessonLoader::longKeysAreCutInMessages()
+{
+    const QByteArray key(100000, 'k');
+    const LoadResult r = loadText(minimal("\"" + key + "\": 1, \"world\": {\"" + key + "\": 2}"));
+    QVERIFY(!r.ok());
+    const LoadResult o = loadText(minimal(), {Override{QString::fromLatin1(key), QStringLiteral("3")}});
+    QVERIFY(!o.ok());
+    const QStringList lines = r.errors() + o.errors();
+    QCOMPARE(lines.size(), 3);
+    for (const QString& line : lines) {
+        QVERIFY2(line.size() < 1000, qPrintable(line.left(400)));
+        QVERIFY2(line.contains(QStringLiteral("(100000 characters)")), qPrintable(line));
+    }
 }
 
 void TestLessonLoader::teacherNotesAreReadAndWritten()
