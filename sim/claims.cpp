@@ -35,7 +35,8 @@ constexpr std::array kMeasures{
     ClaimMeasure{"energy_drift", "1", W::OverRun, false,
                  "the largest |E − E₀| / |E₀| from 0 to `at`, E the total energy (kinetic plus potential)"},
     ClaimMeasure{"momentum_drift", "1", W::OverRun, false,
-                 "the largest |p − p₀| from 0 to `at`, as a fraction of Σ m|v| at the start"},
+                 "the largest |p − p₀| from 0 to `at`, as a fraction of Σ m|v| at the start (not measurable when nothing "
+                 "moves at the start: use `momentum`)"},
     ClaimMeasure{"min_gap", "px", W::OverRun, false,
                  "the smallest gap between the surfaces of two balls from 0 to `at` (below 0: they overlapped)"},
     ClaimMeasure{"max_height", "px", W::OverRun, true, "the greatest height of the ball above the floor from 0 to `at`"},
@@ -57,6 +58,9 @@ constexpr std::array kMeasures{
     ClaimMeasure{"acceleration_ratio", "1", W::At, true,
                  "the ball's acceleration along `axis` divided by that of ball `other` at the moment `at`, as the "
                  "acceleration arrows show them"},
+    ClaimMeasure{"momentum", "mass·px/s", W::At, false,
+                 "the size of the total momentum |Σ m v| at the moment `at` (0 for a system that starts at rest "
+                 "and is pushed only by its own pairs of forces)"},
     ClaimMeasure{"overlapping", "balls", W::At, false,
                  "how many balls overlap at least one other ball at the moment `at` (their centres are closer than "
                  "the sum of their radii)"},
@@ -192,6 +196,8 @@ public:
             return static_cast<double>(w.lastStep().pairsTested);
         if (name == "stopped")
             return w.halted() ? 1.0 : 0.0;
+        if (name == "momentum")
+            return w.momentum().norm();
         if (name == "ball_count")
             return b.size();
         if (name == "energy_ratio")
@@ -243,7 +249,9 @@ private:
         if (name == "energy_drift") {
             v = std::abs(w.energy().total() - m_e0) / std::max(std::abs(m_e0), 1e-300);
         } else if (name == "momentum_drift") {
-            v = (w.momentum() - m_p0).norm() / std::max(m_pScale, 1e-300);
+            if (!(m_pScale > 0.0)) // nothing moves at the start: no scale to measure against
+                return;
+            v = (w.momentum() - m_p0).norm() / m_pScale;
         } else if (name == "min_gap") {
             largest = false;
             v = std::numeric_limits<double>::infinity();

@@ -341,3 +341,18 @@ TEST_CASE("TestClaims::progressReportsAndCancels")
     r = checkClaim(s, c, [&](double) { return ++calls < 10; });
     VERIFY(r.cancelled && !r.holds && std::isnan(r.measured) && calls == 10);
 }
+
+// Two balls at rest pulled together by their own gravity: the total momentum
+// stays 0 (each pair of forces cancels), while momentum_drift, a share of
+// Σ m|v| at the start, has nothing to compare with and says so.
+TEST_CASE("TestClaims::momentumOfABoundPairStaysZero")
+{
+    Scene s = openScene({ballAt(200, 200), ballAt(400, 200, 0, 0, 20)});
+    s.settings.mutualGravity.enabled = true;
+    // At 0.3 s, before they meet (at 0.48 s the world stops itself: no softening).
+    const ClaimResult r = checkClaim(s, near("momentum", 0.0, 1e-6, 0.3));
+    VERIFY2(r.holds, r.explanation.c_str());
+    Claim drift = near("momentum_drift", 0.0, 1e-6, 0.3);
+    const ClaimResult d = checkClaim(s, drift);
+    VERIFY(!d.holds && std::isnan(d.measured));
+}
