@@ -253,7 +253,11 @@ QStringList LoadResult::errors() const
 
 LoadResult LessonLoader::load(const QString& pathOrId, const QList<Override>& overrides)
 {
-    if (QFileInfo(pathOrId).exists()) // a file, or a folder that loadFile names as one
+    // A file, a folder that loadFile names as one, or a link that leads
+    // nowhere (a loop, a missing target): loadFile says what the system says,
+    // as `validate` does.
+    const QFileInfo info(pathOrId);
+    if (info.exists() || info.isSymLink())
         return loadFile(pathOrId, overrides);
     // A built-in lesson by file stem ("07-gravity") or by id ("gravity").
     const QStringList builtIn = builtInFiles();

@@ -53,6 +53,7 @@ private slots:
     void everyCommandHasHelp_data();
     void everyCommandHasHelp();
     void aFolderIsNamedAsOne();
+    void aLinkLoopIsNamedAlikeByEveryCommand();
     void toleranceBelowRoundingIsSaid();
     void workbenchHelpNeedsNoDisplay();
     void pileSettlesToHexPacking();
@@ -343,6 +344,24 @@ void TestCli::shortSoakKeepsEnergy()
     const double change = r.out.mid(at + key.size()).section('\n', 0, 0).toDouble();
     QVERIFY2(change < 1e-12, qPrintable(QString::number(change)));
     QVERIFY(r.out.contains("no NaN"));
+}
+
+// Two links that point at each other: run, check and validate all say what
+// the system says about opening it (run and check used to say "no such file").
+void TestCli::aLinkLoopIsNamedAlikeByEveryCommand()
+{
+    QTemporaryDir dir;
+    const QString a = dir.filePath(QStringLiteral("a.json")), b = dir.filePath(QStringLiteral("b.json"));
+    QVERIFY(QFile::link(b, a) && QFile::link(a, b));
+    QStringList messages;
+    for (const char* command : {"run", "check", "validate"}) {
+        const CliResult r = runCli({QString::fromLatin1(command), a});
+        QCOMPARE(r.exitCode, 2);
+        messages << r.err.trimmed();
+    }
+    QVERIFY2(messages[0].startsWith(a + QStringLiteral(": cannot open")), qPrintable(messages[0]));
+    QCOMPARE(messages[1], messages[0]);
+    QCOMPARE(messages[2], messages[0]);
 }
 
 void TestCli::badInputExitsTwo_data()
