@@ -19,6 +19,10 @@
 #include "sim/parameters.h"
 #include "tests/sim_test_util.h"
 
+#include <QMessageBox>
+#include <QTimer>
+#include <QApplication>
+#include <QScreen>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -243,6 +247,7 @@ class GuiWorkbenchTest : public QObject {
 private slots:
     void initTestCase();
     void tableCoversEveryControl();
+    void manyLoadErrorsFitTheScreen();
     void eachControlEditsItsFieldAndUndoes_data();
     void eachControlEditsItsFieldAndUndoes();
     void everyRowRoundTripsThroughItsWidget();
@@ -269,6 +274,39 @@ void GuiWorkbenchTest::initTestCase()
     QCoreApplication::setOrganizationName(QStringLiteral("ForceLabTest"));
     QCoreApplication::setApplicationName(QStringLiteral("test_gui_workbench"));
     QSettings().clear();
+}
+
+// A lesson file with a hundred problems: the dialog shows the first few and
+// lists all of them under Show Details, so it never grows past the screen
+// and its OK button stays on it.
+void GuiWorkbenchTest::manyLoadErrorsFitTheScreen()
+{
+    QByteArray json = "{\"format\": 1, \"id\": \"t\"";
+    for (int k = 0; k < 150; ++k)
+        json += ", \"unknown_" + QByteArray::number(k) + "\": 1";
+    const LoadResult bad = LessonLoader::loadBytes(json + "}", QStringLiteral("many.json"));
+    QVERIFY(bad.errors().size() > 100);
+    MainWindow window(QStringLiteral("gravity"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    int height = 0, screenHeight = 0;
+    QString details;
+    bool seen = false;
+    QTimer::singleShot(0, &window, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        seen = true;
+        height = box->frameGeometry().height();
+        screenHeight = box->screen()->availableGeometry().height();
+        details = box->detailedText();
+        box->accept();
+    });
+    window.showLoadErrors(bad.errors());
+    QVERIFY(seen);
+    QVERIFY2(height <= screenHeight, qPrintable(QStringLiteral("%1 > %2").arg(height).arg(screenHeight)));
+    for (const QString& line : bad.errors())
+        QVERIFY2(details.contains(line), qPrintable(line));
 }
 
 void GuiWorkbenchTest::tableCoversEveryControl()

@@ -741,9 +741,16 @@ void MainWindow::faster()
 
 void MainWindow::showLoadErrors(const QStringList& errors)
 {
+    constexpr qsizetype kShown = 8;
     QMessageBox box(QMessageBox::Warning, tr("Cannot open lesson"),
                     tr("The lesson could not be opened; the running lesson goes on."), QMessageBox::Ok, this);
-    box.setInformativeText(errors.join(QLatin1Char('\n')));
+    box.setObjectName(QStringLiteral("loadErrors"));
+    QStringList shown = errors.mid(0, kShown);
+    if (errors.size() > kShown) {
+        shown << tr("… and %n more. Show Details… lists every problem.", nullptr, int(errors.size() - kShown));
+        box.setDetailedText(errors.join(QLatin1Char('\n')));
+    }
+    box.setInformativeText(shown.join(QLatin1Char('\n')));
     box.exec();
 }
 

@@ -88,6 +88,12 @@ protected:
     void hideEvent(QHideEvent* event) override;
     void changeEvent(QEvent* event) override;
 
+public:
+    /// Tells why a lesson could not be opened: the first problems in the
+    /// dialog, all of them under "Show Details…" (a scrolling list), so a
+    /// file with a hundred problems never makes a dialog taller than the screen.
+    void showLoadErrors(const QStringList& errors);
+
 private slots:
     void openLessonFile();
     void saveLessonFile();
@@ -128,7 +134,6 @@ private:
     void writeSettings() const;
     void openInitialLesson(const QString& requested);
     /// The loader's one-line errors in a dialog.
-    void showLoadErrors(const QStringList& errors);
     /// Multiplies the time scale by `factor` within the controller's limits (an undo step).
     void scaleTime(double factor);
     QString suggestedFileName(const QString& extension) const;
