@@ -58,6 +58,7 @@ QString teacherNotesHtml(const Lesson& lesson)
         QStringList claims;
         for (const sim::Claim& c : lesson.claims)
             claims << QString::fromStdString(c.text);
+        claims.removeDuplicates(); // several measurements may back one sentence
         html += QStringLiteral("<p><b>%1</b></p>").arg(QObject::tr("What the scene is checked to show")) + list(claims, "ul");
     }
     return html;
