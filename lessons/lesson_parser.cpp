@@ -623,15 +623,17 @@ void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<
         const QString key = it.key();
         if (scene && sim::isSceneKey(key.toStdString())) {
             const QJsonValue v = it.value();
-            if (!v.isDouble()) {
-                r.fail(join(sp, key), QStringLiteral("expected a number, got ") + describe(v));
+            if (!v.isDouble() && !v.isBool()) {
+                r.fail(join(sp, key), QStringLiteral("expected a number (or true or false for a switch), got ") +
+                                          describe(v));
                 continue;
             }
-            if (const auto problem = sim::checkSceneKey(*scene, key.toStdString(), v.toDouble())) {
+            const double value = v.isBool() ? (v.toBool() ? 1.0 : 0.0) : v.toDouble();
+            if (const auto problem = sim::checkSceneKey(*scene, key.toStdString(), value)) {
                 r.fail(join(sp, key), qs(*problem));
                 continue;
             }
-            out.emplace_back(key.toStdString(), v.toDouble());
+            out.emplace_back(key.toStdString(), value);
             continue;
         }
         const sim::Parameter* row = sim::findParameter(key.toStdString());
@@ -728,8 +730,15 @@ void parseClaim(Reader& r, const QJsonObject& o, const QString& p, const sim::Sc
         else
             r.number(o, p, "within", range::kClaimTolerance, c.tolerance);
     }
-    if (const auto set = r.object(o, p, "set"))
+    if (const auto set = r.object(o, p, "set")) {
         parseSet(r, *set, join(p, "set"), c.set, &scene);
+        sim::Scene changed = scene;
+        for (const auto& [key, value] : c.set)
+            if (sim::isSceneKey(key))
+                sim::setSceneKey(changed, key, value);
+        if (const auto problem = sim::checkSpawnRanges(changed.spawn))
+            r.fail(join(p, "set"), qs(*problem));
+    }
 }
 
 /// A list of objects with at most `most` entries (`unit` names them in the

@@ -330,6 +330,8 @@ ClaimResult checkClaim(const Scene& scene, const Claim& claim, const ClaimProgre
             return refused(cat({"no parameter called \"", key, "\" to set"}));
         p->set(changed.settings, value);
     }
+    if (const auto problem = checkSpawnRanges(changed.spawn))
+        return refused(cat({"cannot set the random balls so: ", *problem}));
     std::optional<World> world;
     try {
         world.emplace(changed);

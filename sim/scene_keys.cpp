@@ -12,6 +12,7 @@ struct Target {
     int* integer = nullptr;   ///< spawn.count
     std::uint64_t* seed = nullptr;
     double lo = 0.0, hi = 0.0;
+    bool* flag = nullptr;     ///< a switch: 0 or 1
 };
 
 std::optional<std::string> find(Scene& scene, std::string_view key, Target& t)
@@ -30,7 +31,24 @@ std::optional<std::string> find(Scene& scene, std::string_view key, Target& t)
             t.hi = 9007199254740992.0; // 2^53: exact as a double
             return std::nullopt;
         }
-        return "the random balls' keys are spawn.count and spawn.seed";
+        SpawnSettings& s = scene.spawn;
+        constexpr double kFastest = 1e7; // px/s, as the lesson file allows
+        if (field == "speed.0")
+            t = {&s.minSpeed, nullptr, nullptr, 0.0, kFastest};
+        else if (field == "speed.1")
+            t = {&s.maxSpeed, nullptr, nullptr, 0.0, kFastest};
+        else if (field == "radius.0")
+            t = {&s.minRadius, nullptr, nullptr, kMinRadius, kMaxRadius};
+        else if (field == "radius.1")
+            t = {&s.maxRadius, nullptr, nullptr, kMinRadius, kMaxRadius};
+        else if (field == "fully_inside")
+            t = {nullptr, nullptr, nullptr, 0.0, 1.0, &s.fullyInside};
+        else if (field == "horizontal")
+            t = {nullptr, nullptr, nullptr, 0.0, 1.0, &s.horizontal};
+        else
+            return "the random balls' keys are spawn.count, spawn.seed, spawn.speed.0 and .1 (slowest and fastest), "
+                   "spawn.radius.0 and .1, spawn.fully_inside and spawn.horizontal";
+        return std::nullopt;
     }
     if (!key.starts_with("balls."))
         return "not a scene key (balls.N.field or spawn.count)";
@@ -81,12 +99,16 @@ std::optional<std::string> apply(Scene& scene, std::string_view key, double valu
         return number(value) + " is outside " + number(t.lo) + " to " + number(t.hi);
     if ((t.integer || t.seed) && value != std::floor(value))
         return number(value) + " is not a whole number";
+    if (t.flag && value != 0.0 && value != 1.0)
+        return number(value) + " is not a switch (true or false)";
     if (!write)
         return std::nullopt;
     if (t.number)
         *t.number = value;
     else if (t.integer)
         *t.integer = int(value);
+    else if (t.flag)
+        *t.flag = value != 0.0;
     else
         *t.seed = std::uint64_t(value);
     return std::nullopt;
@@ -103,6 +125,17 @@ std::optional<std::string> checkSceneKey(const Scene& scene, std::string_view ke
 std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value)
 {
     return apply(scene, key, value, true);
+}
+
+std::optional<std::string> checkSpawnRanges(const SpawnSettings& spawn)
+{
+    if (spawn.minSpeed > spawn.maxSpeed)
+        return "the slowest speed, spawn.speed.0 = " + number(spawn.minSpeed) + " px/s, is above the fastest, " +
+               number(spawn.maxSpeed) + " px/s";
+    if (spawn.minRadius > spawn.maxRadius)
+        return "the smallest radius, spawn.radius.0 = " + number(spawn.minRadius) + " px, is above the largest, " +
+               number(spawn.maxRadius) + " px";
+    return std::nullopt;
 }
 
 bool isSceneKey(std::string_view key) { return key.starts_with("balls.") || key.starts_with("spawn."); }

@@ -1,7 +1,8 @@
 #pragma once
 // Key paths into a scene beyond its world settings, for a claim's "set": one
-// listed ball's start ("balls.2.vx") and the random balls' count and seed
-// ("spawn.count"). A claim such as "with the tip ball 200 px higher, …" runs
+// listed ball's start ("balls.2.vx") and the random balls' count, seed,
+// speed and radius ranges and switches ("spawn.count", "spawn.speed.1",
+// "spawn.fully_inside"), named as in the lesson file. A claim such as "with the tip ball 200 px higher, …" runs
 // the scene it describes. World settings are the rows of sim/parameters.h.
 
 #include "scene.h"
@@ -19,6 +20,12 @@ std::optional<std::string> checkSceneKey(const Scene& scene, std::string_view ke
 
 /// Sets it; the same explanation as checkSceneKey when it cannot.
 std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value);
+
+/// Why the random balls' ranges cannot be drawn from (a slowest speed above
+/// the fastest, a smallest radius above the largest), or nothing: checked
+/// once all of a claim's keys are set, since one key alone may pass through
+/// such a state.
+std::optional<std::string> checkSpawnRanges(const SpawnSettings& spawn);
 
 /// Whether `key` has the form of a scene key (it starts "balls." or "spawn."),
 /// whatever its ball or field.

@@ -356,3 +356,27 @@ TEST_CASE("TestClaims::momentumOfABoundPairStaysZero")
     const ClaimResult d = checkClaim(s, drift);
     VERIFY(!d.holds && std::isnan(d.measured));
 }
+
+// The random balls' speed range, set by a claim: with the slowest and the
+// fastest both 120 px/s every ball starts at exactly 120 px/s. A range
+// turned upside down is refused, whichever key did it.
+TEST_CASE("TestClaims::setChangesTheRandomBallsRanges")
+{
+    Scene s = openScene({});
+    s.spawn.count = 20;
+    Claim c = near("mean_speed", 120.0, 1e-9, 0.0);
+    c.set = {{"spawn.speed.1", 120.0}, {"spawn.speed.0", 120.0}};
+    ClaimResult r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    c.set = {{"spawn.horizontal", 1.0}, {"spawn.speed.0", 120.0}, {"spawn.speed.1", 120.0}, {"spawn.radius.1", 4.0}};
+    c.value = 0.0;
+    c.measure = "velocity"; // horizontal: no ball moves along y
+    r = checkClaim(s, c);
+    VERIFY2(r.holds, r.explanation.c_str());
+    c.set = {{"spawn.speed.0", 500.0}};
+    r = checkClaim(s, c);
+    VERIFY2(!r.holds && r.explanation.find("is above the fastest") != std::string::npos, r.explanation.c_str());
+    c.set = {{"spawn.fully_inside", 0.5}};
+    r = checkClaim(s, c);
+    VERIFY2(!r.holds && r.explanation.find("not a switch") != std::string::npos, r.explanation.c_str());
+}

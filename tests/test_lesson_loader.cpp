@@ -273,13 +273,14 @@ void TestLessonLoader::claimSetNamesBallsAndRandomBalls()
     // Each bad key or value is one line naming the key.
     const LoadResult bad = loadText(minimal(R"("balls": [{"x": 100, "y": 90}], "claims": [
         {"says": "s", "measure": "speed", "at": 0, "below": 1,
-         "set": {"balls.1.x": 5, "balls.0.r": -1, "balls.0.hue": 3, "spawn.count": 1.5, "balls.0.vx": "fast"}}])"));
+         "set": {"balls.1.x": 5, "balls.0.r": -1, "balls.0.hue": 3, "spawn.count": 1.5, "balls.0.vx": "fast"}},
+        {"says": "s", "measure": "speed", "at": 0, "below": 1, "set": {"spawn.speed.0": 500, "spawn.fully_inside": true}}])"));
     QVERIFY(!bad.ok());
     const QString all = bad.errors().join(" | ");
     for (const char* expected :
          {"claims.0.set.balls.1.x: the lesson lists 1 balls, so there is no listed ball 1", "claims.0.set.balls.0.r: -1 is outside",
           "claims.0.set.balls.0.hue: a ball's fields are", "claims.0.set.spawn.count: 1.5 is not a whole number",
-          "claims.0.set.balls.0.vx: expected a number"})
+          "claims.0.set.balls.0.vx: expected a number", "claims.1.set: the slowest speed, spawn.speed.0 = 500 px/s, is above"})
         QVERIFY2(all.contains(QLatin1String(expected)), qPrintable(QStringLiteral("%1 not in %2").arg(expected, all)));
 }
 
