@@ -54,6 +54,8 @@ private slots:
     void everyCommandHasHelp();
     void aFolderIsNamedAsOne();
     void aLinkLoopIsNamedAlikeByEveryCommand();
+    void hostileLessons_data();
+    void hostileLessons();
     void toleranceBelowRoundingIsSaid();
     void workbenchHelpNeedsNoDisplay();
     void pileSettlesToHexPacking();
@@ -362,6 +364,47 @@ void TestCli::aLinkLoopIsNamedAlikeByEveryCommand()
     QVERIFY2(messages[0].startsWith(a + QStringLiteral(": cannot open")), qPrintable(messages[0]));
     QCOMPARE(messages[1], messages[0]);
     QCOMPARE(messages[2], messages[0]);
+}
+
+// The hostile-lesson corpus (tests/hostile/expected.tsv): each file a
+// stranger might send, run as the table says, gives its exit code and its
+// message, in time and without echoing a long value whole.
+void TestCli::hostileLessons_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    const QDir dir(QStringLiteral(FORCELAB_HOSTILE_DIR));
+    QFile table(dir.filePath(QStringLiteral("expected.tsv")));
+    QVERIFY(table.open(QIODevice::ReadOnly | QIODevice::Text));
+    int cases = 0;
+    while (!table.atEnd()) {
+        const QString line = QString::fromUtf8(table.readLine()).chopped(1);
+        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
+            continue;
+        const QStringList cells = line.split(QLatin1Char('\t'));
+        QVERIFY2(cells.size() == 3, qPrintable(line));
+        QStringList args;
+        const QStringList words = cells[0].split(QLatin1Char(' '), Qt::SkipEmptyParts);
+        for (qsizetype i = 0; i < words.size(); ++i)
+            args << (words[i] == QLatin1String("@") ? dir.filePath(words[++i]) : words[i]);
+        QTest::newRow(qPrintable(cells[0])) << args << cells[1].toInt() << cells[2];
+        ++cases;
+    }
+    QVERIFY(cases >= 30);
+}
+
+void TestCli::hostileLessons()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    const CliResult r = runCli(args, 120000);
+    QCOMPARE(r.exitCode, exitCode);
+    const QString shown = exitCode == 0 ? r.out : r.err;
+    QVERIFY2(shown.contains(message), qPrintable(shown.left(600)));
+    for (const QString& line : (r.out + r.err).split(QLatin1Char('\n')))
+        QVERIFY2(line.size() < 1000, qPrintable(line.left(200)));
 }
 
 void TestCli::badInputExitsTwo_data()

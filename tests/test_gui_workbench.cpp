@@ -23,6 +23,7 @@
 #include <QTimer>
 #include <QApplication>
 #include <QScreen>
+#include <QDir>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -248,6 +249,7 @@ private slots:
     void initTestCase();
     void tableCoversEveryControl();
     void manyLoadErrorsFitTheScreen();
+    void hostileLessonsAreRefusedAndTheLessonStays();
     void eachControlEditsItsFieldAndUndoes_data();
     void eachControlEditsItsFieldAndUndoes();
     void everyRowRoundTripsThroughItsWidget();
@@ -307,6 +309,44 @@ void GuiWorkbenchTest::manyLoadErrorsFitTheScreen()
     QVERIFY2(height <= screenHeight, qPrintable(QStringLiteral("%1 > %2").arg(height).arg(screenHeight)));
     for (const QString& line : bad.errors())
         QVERIFY2(details.contains(line), qPrintable(line));
+}
+
+// Every file of the hostile-lesson corpus (tests/hostile), opened in the
+// workbench: each is refused with the Cannot-open dialog (a hang would be the
+// test's time-out) and the lesson that ran before runs on, unchanged. Before,
+// the dialog itself rendered the quoted <img src="/dev/zero"> and hung.
+void GuiWorkbenchTest::hostileLessonsAreRefusedAndTheLessonStays()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QString before = window.lesson().id;
+    const int balls = window.controller()->world().balls().size();
+    const QDir dir(QStringLiteral(FORCELAB_HOSTILE_DIR));
+    const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    QVERIFY(files.size() >= 25);
+    for (const QString& name : files) {
+        if (name == QLatin1String("ok.json"))
+            continue;
+        QString shown;
+        QTimer poll; // closes the dialog as soon as it is up
+        connect(&poll, &QTimer::timeout, &window, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                // What the reader sees: the file's quote as characters, never rendered.
+                if (auto* label = box->findChild<QLabel*>(QStringLiteral("qt_msgbox_informativelabel")))
+                    shown = label->text();
+                box->accept();
+            }
+        });
+        poll.start(5);
+        QVERIFY2(!window.openLesson(dir.filePath(name)), qPrintable(name));
+        poll.stop();
+        QVERIFY2(!shown.isEmpty(), qPrintable(name));
+        // A quoted tag reaches the label only escaped: the dialog loads no picture.
+        QVERIFY2(!shown.contains(QStringLiteral("<img")) && !shown.contains(QStringLiteral("<a ")), qPrintable(shown));
+        QCOMPARE(window.lesson().id, before);
+        QCOMPARE(window.controller()->world().balls().size(), balls);
+    }
 }
 
 void GuiWorkbenchTest::tableCoversEveryControl()

@@ -745,12 +745,18 @@ void MainWindow::showLoadErrors(const QStringList& errors)
     QMessageBox box(QMessageBox::Warning, tr("Cannot open lesson"),
                     tr("The lesson could not be opened; the running lesson goes on."), QMessageBox::Ok, this);
     box.setObjectName(QStringLiteral("loadErrors"));
-    QStringList shown = errors.mid(0, kShown);
+    // A message quotes the file ("<img src=\"/dev/zero\">"), and a label
+    // would render such a quote as rich text and load it: every line is
+    // escaped, so the dialog shows the characters and reads nothing.
+    QStringList shown;
+    for (const QString& line : errors.mid(0, kShown))
+        shown << line.toHtmlEscaped();
     if (errors.size() > kShown) {
         shown << tr("… and %n more. Show Details… lists every problem.", nullptr, int(errors.size() - kShown));
-        box.setDetailedText(errors.join(QLatin1Char('\n')));
+        box.setDetailedText(errors.join(QLatin1Char('\n'))); // shown as plain text
     }
-    box.setInformativeText(shown.join(QLatin1Char('\n')));
+    box.setTextFormat(Qt::RichText);
+    box.setInformativeText(QStringLiteral("<p>%1</p>").arg(shown.join(QStringLiteral("<br>"))));
     box.exec();
 }
 
