@@ -1,6 +1,7 @@
 #include "lesson_parser.h"
 
 #include "lesson_markup.h"
+#include "message_text.h"
 
 #include "lesson_controls.h"
 #include "lesson_limits.h"
@@ -55,7 +56,7 @@ namespace {
 
 QString quoted(const QString& s)
 {
-    const QString shown = s.size() > 60 ? s.left(57) + QStringLiteral("...") : s;
+    const QString shown = cutForMessage(s);
     return QLatin1Char('"') + shown + QLatin1Char('"');
 }
 

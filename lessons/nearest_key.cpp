@@ -1,4 +1,5 @@
 #include "nearest_key.h"
+#include "message_text.h"
 
 #include <algorithm>
 #include <vector>
@@ -51,7 +52,7 @@ std::optional<QString> nearestKey(const QString& key, const QStringList& known)
 
 QString unknownKeyMessage(const QString& key, const QStringList& known)
 {
-    const QString shown = key.size() > 60 ? key.left(57) + QStringLiteral("...") : key;
+    const QString shown = cutForMessage(key);
     if (const auto near = nearestKey(key, known))
         return QStringLiteral("unknown key \"%1\"; did you mean \"%2\"?").arg(shown, *near);
     return QStringLiteral("unknown key \"%1\"; known keys here: %2").arg(shown, known.join(QStringLiteral(", ")));
