@@ -1,11 +1,19 @@
 // libFuzzer target for everything a lesson file or a `--set` can feed the
-// loader. The first byte picks what the rest is:
-//   even: a whole lesson file; when it loads, its saved form must load too
-//         and give the same settings (a writer bug is a crash here);
-//   odd:  the text of a `--set KEY.PATH=VALUE` applied to a small lesson.
+// loader and the lesson pane. The first byte, modulo 3, picks what the rest is:
+//   0: a whole lesson file; when it loads, its saved form must load too and
+//      give the same settings (a writer bug is a crash here), and its
+//      sentences are checked as `forcelab-cli check` does;
+//   1: the text of a `--set KEY.PATH=VALUE` applied to a small lesson;
+//   2: a lesson's words, shown by the workbench's lesson pane (offscreen)
+//      when the markup subset allows them, and split into sentences.
 // Any crash, sanitizer report, leak or hang fails the run.
 
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_markup.h"
+#include "lessons/sentence_check.h"
+#include "ui/lesson_text_view.h"
+
+#include <QApplication>
 
 #include <QByteArray>
 #include <QString>
@@ -36,6 +44,26 @@ void checkRoundTrip(const Lesson& lesson)
         std::abort(); // the round trip changed the lesson
 }
 
+/// The lesson pane as the workbench shows a lesson's words: only text the
+/// loader would accept reaches it. No picture exists in the folder given,
+/// so every <img> must be refused by name without touching the disk.
+void showInPane(const QString& text)
+{
+    static int argc = 1;
+    static char name[] = "fuzz_lesson";
+    static char* argv[] = {name, nullptr};
+    static QApplication app(argc, argv);
+    static LessonTextView pane;
+    for (const QString& sentence : lessons::splitSentences(text))
+        (void)lessons::numberOrComparison(sentence);
+    if (lessons::checkMarkup(text, lessons::kMaxTextChars))
+        return; // the loader refuses it; the pane never sees it
+    const lessons::MarkupHtml html = lessons::markupToHtml(text);
+    pane.showLesson(html.html, html.images, QStringLiteral("/nonexistent-lesson-folder"));
+    pane.resize(400, 300);
+    (void)pane.grab(); // lay it out and paint it
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -43,12 +71,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size == 0)
         return 0;
     const QByteArray rest(reinterpret_cast<const char*>(data + 1), static_cast<qsizetype>(size - 1));
-    if (data[0] % 2 == 0) {
+    if (data[0] % 3 == 0) {
         const LoadResult r = LessonLoader::loadBytes(rest, QStringLiteral("fuzz.json"));
-        if (r.ok())
+        if (r.ok()) {
             checkRoundTrip(*r.lesson);
-        else if (r.errors().isEmpty())
+            (void)lessons::checkSentences(*r.lesson);
+        } else if (r.errors().isEmpty()) {
             std::abort(); // a refusal must say why
+        }
+        return 0;
+    }
+    if (data[0] % 3 == 2) {
+        showInPane(QString::fromUtf8(rest));
         return 0;
     }
     QString error;
