@@ -403,6 +403,28 @@ std::string describeCustomLaw(const CustomForceSettings& c)
     return "the custom force (F_x = " + cut(c.fx) + ", F_y = " + cut(c.fy) + ")";
 }
 
+int firstBallWithoutPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x)
+{
+    const CustomForceSettings& s = settings.custom;
+    if (!s.enabled || s.potential.empty())
+        return -1;
+    CompiledLaw& law = lawFor(s);
+    law.W = settings.box.width;
+    law.H = settings.box.height;
+    for (int i = 0; i < balls.size(); ++i) {
+        law.x = x(0, i);
+        law.y = x(1, i);
+        law.vx = balls.velocity(0, i);
+        law.vy = balls.velocity(1, i);
+        law.m = balls.mass[i];
+        law.r = balls.radius[i];
+        law.q = balls.charge[i];
+        if (!std::isfinite(law.potential.Eval()))
+            return i;
+    }
+    return -1;
+}
+
 double customPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x)
 {
     const CustomForceSettings& s = settings.custom;

@@ -36,4 +36,10 @@ std::string describeCustomLaw(const CustomForceSettings& custom);
 /// the law gives none.
 double customPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x);
 
+/// The first ball at x where the law's potential U is not a number (NaN or
+/// infinite), or -1. The load-time check samples U on a grid; a potential
+/// may still be undefined between the samples (0*sqrt((x-291)*(x-293))), so
+/// the world asks this after every step when the law has a U.
+int firstBallWithoutPotential(const WorldSettings& settings, const BallState& balls, const Matrix2X& x);
+
 } // namespace forcelab::sim

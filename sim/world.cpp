@@ -413,6 +413,17 @@ void World::step()
                 unresolved = "a force it cannot follow: " + describeSteepForce(*steep, m_settings, m_balls, h);
         }
     }
+    // A potential may be undefined between the points the load-time check
+    // samples: the energy would turn to NaN without a word.
+    if (!unresolved && !m_gaveUp && !blewUp()) {
+        if (const int k = firstBallWithoutPotential(m_settings, m_balls, m_balls.position); k >= 0) {
+            char where[96];
+            std::snprintf(where, sizeof where, "ball %d at (%.4g, %.4g) px", k, m_balls.position(0, k),
+                          m_balls.position(1, k));
+            unresolved = "a place where the potential U of " + describeCustomLaw(m_settings.custom) +
+                         " is not a number: " + where + "; a potential must have a value wherever its force does";
+        }
+    }
     if (m_gaveUp || blewUp() || unresolved) {
         // Undo the step and stop, with the cause found in the state and its fix.
         m_halted = explainBlowUp(h, unresolved);

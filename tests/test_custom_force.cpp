@@ -267,3 +267,30 @@ TEST_CASE("a potential that is not a number where the force is one is refused")
     CHECK(error->keyPath == "models.custom.potential");
     CHECK(error->message.find("U is not a number at (0, 0) px") != std::string::npos);
 }
+
+// U = 0·√((x − 291)(x − 293)) is 0 everywhere but between x = 291 and 293 px,
+// where it is not a number: the load-time grid does not sample there, so it
+// is accepted. A ball crossing at 100 px/s (1.67 px per step) ends a step
+// in that strip; the world stops one step before, names the ball and the
+// place, and the energy it reported was never NaN. Before, the energy read
+// null at step 55 and the run went on.
+TEST_CASE("a potential undefined between the sampled points stops the world where a ball meets it")
+{
+    Scene s;
+    s.settings.box = BoxSettings{600.0, 400.0};
+    s.settings.time.dt = 1.0 / 60.0;
+    s.settings.custom.enabled = true;
+    s.settings.custom.fx = "0";
+    s.settings.custom.fy = "0";
+    s.settings.custom.potential = "0*sqrt((x-291)*(x-293))";
+    s.balls = {ballAt(200.0, 200.0, 100.0, 0.0, 10.0)};
+    REQUIRE(!checkCustomForce(s.settings.custom, 600, 400));
+    World w(s);
+    for (int k = 0; k < 120 && !w.halted(); ++k) {
+        w.step();
+        CHECK(std::isfinite(w.energy().total()));
+    }
+    REQUIRE(w.halted().has_value());
+    CHECK(w.halted()->find("is not a number: ball 0 at (291.7, 200) px") != std::string::npos);
+    CHECK(w.balls().position(0, 0) < 291.0); // the step into the strip is undone
+}

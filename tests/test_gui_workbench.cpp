@@ -326,8 +326,8 @@ void GuiWorkbenchTest::hostileLessonsAreRefusedAndTheLessonStays()
     const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
     QVERIFY(files.size() >= 25);
     for (const QString& name : files) {
-        if (name == QLatin1String("ok.json"))
-            continue;
+        if (name == QLatin1String("ok.json") || name.startsWith(QLatin1String("runtime-")))
+            continue; // these load; they stop when run
         QString shown;
         QTimer poll; // closes the dialog as soon as it is up
         connect(&poll, &QTimer::timeout, &window, [&] {
