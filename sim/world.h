@@ -118,6 +118,7 @@ public:
     const std::vector<Contact>& contacts() const { return m_collisions.contacts(); }
     /// The collision stage itself, for its per-stage profile (bench --profile) and tuning.
     CollisionSystem& collisionSystem() { return m_collisions; }
+    const CollisionSystem& collisionSystem() const { return m_collisions; }
 
 private:
     void subStep(double h);

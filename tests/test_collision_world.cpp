@@ -1,6 +1,7 @@
 // Collisions inside a whole world: walls and balls together, energy and
 // momentum over long runs, and the same run whichever detector is chosen.
 
+#include "sim/broad_phase_geometry.h"
 #include "sim/peer_scene.h"
 #include "sim/world.h"
 
@@ -1117,4 +1118,38 @@ TEST_CASE("TestCollisionWorld::ballBouncesOnRestingPileWithEveryIntegrator")
         }
     VERIFY2(worst <= 0.05, Text(Text::number(worst)).c_str());
     VERIFY2(mostMoved < 1.0, Text(Text::number(mostMoved)).c_str());
+}
+
+// The broad-phase overlay draws the detector's own cells and rows: before the
+// first step the layout worked out for drawing is the one the detector then
+// uses (balls at rest, no margins), and after a step it is the detector's,
+// bit for bit. Before, the overlay drew rows as tall as the tallest ball
+// (20 px) where the detector's are 20.5 px, so lesson 25's picture showed
+// rows the search did not use.
+TEST_CASE("TestCollisionWorld::drawnBroadPhaseIsTheDetectors")
+{
+    std::vector<Ball> balls;
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> x(20.0, 580.0), y(20.0, 380.0), r(3.0, 12.0);
+    for (int i = 0; i < 60; ++i)
+        balls.push_back(ballAt(x(rng), y(rng), 0.0, 0.0, r(rng)));
+    for (const Detection detection : {Detection::Grid, Detection::Sweep}) {
+        Scene s = openScene(balls);
+        s.settings.collisions.response = Response::Flag;
+        s.settings.collisions.detection = detection;
+        World w(s);
+        const BroadPhaseGeometry before = broadPhaseGeometry(w);
+        w.step();
+        const CollisionSystem& system = w.collisionSystem();
+        const BroadPhaseGeometry after = broadPhaseGeometry(w);
+        if (detection == Detection::Grid) {
+            REQUIRE_SAME(before.cellSize, system.grid().cellSize());
+            REQUIRE_SAME(before.originX, system.grid().originX());
+            REQUIRE_SAME(before.originY, system.grid().originY());
+            REQUIRE_SAME(after.cellSize, system.grid().cellSize());
+        } else {
+            REQUIRE_SAME(before.rowHeight, system.sweepAndPrune().rowHeight());
+            REQUIRE_SAME(after.rowHeight, system.sweepAndPrune().rowHeight());
+        }
+    }
 }

@@ -6,6 +6,7 @@
 // per step and never while paused.
 
 #include "tests/sim_test_util.h"
+#include "sim/broad_phase_geometry.h"
 #include "ui/canvas.h"
 #include "ui/plots_dock.h"
 #include "ui/simulation_controller.h"
@@ -381,24 +382,29 @@ void GuiCanvasTest::broadPhaseShowsCellsAndIntervals()
     Canvas canvas(&controller);
     canvas.resize(900, 500);
     canvas.setOverlays(only([](Overlays& o) { o.broadphase = true; }));
-    // Cells 1.5 × 20 = 30 px from the smallest corner (290, 90): ball 0 fills
-    // cell [290, 320] × [190, 220]; cell [320, 350] × [190, 220] is empty.
+    // The detector's cells: 1.5 × 20 = 30 px (and a hair) from the smallest
+    // corner (290, 90), so ball 0 ([290, 310] × [190, 210]) lies in cell
+    // [290, 320] × [180, 210] only; cell [320, 350] × [180, 210] is empty.
+    const sim::BroadPhaseGeometry grid = sim::broadPhaseGeometry(controller.world());
+    QVERIFY(std::abs(grid.cellSize - 30.0) < 1e-6 && std::abs(grid.originX - 290.0) < 1e-6);
     QImage image = canvas.grab().toImage();
-    QVERIFY(colorDistance(pixelAt(image, canvas.worldToWidget({316, 215})), canvas_colors::kBackground) > 5);
-    QCOMPARE(colorDistance(pixelAt(image, canvas.worldToWidget({335, 205})), canvas_colors::kBackground), 0);
+    QVERIFY(colorDistance(pixelAt(image, canvas.worldToWidget({316, 195})), canvas_colors::kBackground) > 5);
+    QCOMPARE(colorDistance(pixelAt(image, canvas.worldToWidget({335, 195})), canvas_colors::kBackground), 0);
 
-    // Sweep: rows 20 px tall; ball 0's x-interval [290, 310] is a band in the
-    // row of its top edge, [180, 200]; outside it there is nothing.
+    // Sweep: rows of the detector's height, 20.5 px (20 px × 1.001 rounded up
+    // to 6 bits); ball 0's x-interval [290, 310] is a band in the row of its
+    // top edge, [184.5, 205]; outside it there is nothing.
     sim::WorldSettings settings = controller.world().settings();
     settings.collisions.detection = sim::Detection::Sweep;
     QVERIFY(controller.setSettings(settings));
+    QCOMPARE(sim::broadPhaseGeometry(controller.world()).rowHeight, 20.5);
     image = canvas.grab().toImage();
-    QVERIFY(colorDistance(pixelAt(image, canvas.worldToWidget({293, 185})), canvas_colors::kBackground) > 5);
-    QCOMPARE(colorDistance(pixelAt(image, canvas.worldToWidget({320, 185})), canvas_colors::kBackground), 0);
+    QVERIFY(colorDistance(pixelAt(image, canvas.worldToWidget({293, 188})), canvas_colors::kBackground) > 5);
+    QCOMPARE(colorDistance(pixelAt(image, canvas.worldToWidget({320, 188})), canvas_colors::kBackground), 0);
     // Brute force draws nothing: every pair is tested.
     settings.collisions.detection = sim::Detection::Brute;
     QVERIFY(controller.setSettings(settings));
-    QCOMPARE(colorDistance(pixelAt(canvas.grab().toImage(), canvas.worldToWidget({293, 185})),
+    QCOMPARE(colorDistance(pixelAt(canvas.grab().toImage(), canvas.worldToWidget({293, 188})),
                            canvas_colors::kBackground), 0);
 }
 

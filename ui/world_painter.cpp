@@ -3,6 +3,7 @@
 #include "theme.h"
 #include "trail_recorder.h"
 
+#include "sim/broad_phase_geometry.h"
 #include "sim/force_models.h"
 #include "sim/names.h"
 
@@ -756,18 +757,12 @@ void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const
     p.setRenderHint(QPainter::Antialiasing, false);
     const bool perBall = n <= kMaxBroadPhaseBalls;
 
+    // The detector's own cells and rows (sim/broad_phase_geometry.h), so the
+    // search drawn is the search the world runs.
+    const sim::BroadPhaseGeometry geometry = sim::broadPhaseGeometry(world);
     if (detection == sim::Detection::Grid) {
-        // The grid's cells, as the detector builds them: squares 1.5 ball
-        // sizes wide (the mean diameter), counted from the smallest corner of
-        // the balls' boxes. Two balls are tested only when they share a cell.
-        double minX = std::numeric_limits<double>::infinity(), minY = minX, sum = 0.0;
-        for (int i = 0; i < n; ++i) {
-            const double r = balls.radius[i];
-            minX = std::min(minX, balls.position(0, i) - r);
-            minY = std::min(minY, balls.position(1, i) - r);
-            sum += 2.0 * r;
-        }
-        const double cell = 1.5 * sum / n;
+        // Two balls are tested only when they share a cell.
+        const double cell = geometry.cellSize, minX = geometry.originX, minY = geometry.originY;
         if (!(cell * s >= 4.0) || !std::isfinite(minX) || !std::isfinite(minY)) {
             p.restore();
             return; // cells smaller than 4 px would only grey the picture
@@ -818,11 +813,11 @@ void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const
         p.setPen(QPen(line, 1.0));
         p.drawLines(lines);
     } else {
-        // Sort and sweep in rows as tall as the tallest ball: each ball's
-        // x-interval [x - r, x + r] is a band in the row of its top edge; a
-        // pair is tested only when the bands overlap in one row or the two
-        // rows next to each other.
-        const double row = 2.0 * balls.radius.maxCoeff();
+        // Sort and sweep in rows a little taller than the tallest ball: each
+        // ball's x-interval [x - r, x + r] is a band in the row of its top
+        // edge; a pair is tested only when the bands overlap in one row or
+        // the two rows next to each other.
+        const double row = geometry.rowHeight;
         if (!(row * s >= 4.0)) {
             p.restore();
             return;

@@ -107,6 +107,7 @@ public:
     /// The broad phases, for counters and tuning (bench, tests).
     const SweepAndPrune& sweepAndPrune() const { return m_sweep; }
     UniformGrid& grid() { return m_grid; }
+    const UniformGrid& grid() const { return m_grid; }
 
 private:
     void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats,

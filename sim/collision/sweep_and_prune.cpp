@@ -8,19 +8,6 @@
 namespace forcelab::sim {
 namespace {
 
-// Row height: a little above the tallest box, rounded up to 6 significant bits
-// so that it stays the same from step to step (a changed height moves every
-// ball to a new row and costs a full sort).
-double rowHeightFor(double tallest)
-{
-    const double h = tallest * 1.001;
-    if (!(h > 0.0) || !std::isfinite(h))
-        return 0.0;
-    int e = 0;
-    std::frexp(h, &e); // h = m · 2^e, m in [0.5, 1)
-    return std::ldexp(std::ceil(std::ldexp(h, 6 - e)), e - 6);
-}
-
 // Row of a box whose top edge is at y. Clamping far-away balls into the first
 // or last representable row only merges rows, which keeps every pair.
 std::int32_t rowOf(double y, double inverseHeight)
@@ -31,6 +18,20 @@ std::int32_t rowOf(double y, double inverseHeight)
 }
 
 } // namespace
+
+// Row height: a little above the tallest box, rounded up to 6 significant bits
+// so that it stays the same from step to step (a changed height moves every
+// ball to a new row and costs a full sort).
+
+double SweepAndPrune::rowHeightFor(double tallest)
+{
+    const double h = tallest * 1.001;
+    if (!(h > 0.0) || !std::isfinite(h))
+        return 0.0;
+    int e = 0;
+    std::frexp(h, &e); // h = m · 2^e, m in [0.5, 1)
+    return std::ldexp(std::ceil(std::ldexp(h, 6 - e)), e - 6);
+}
 
 void SweepAndPrune::refreshKeys(const BroadPhaseInput& in)
 {

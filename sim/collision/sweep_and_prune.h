@@ -40,6 +40,10 @@ public:
     bool lastFullSort() const { return m_lastFullSort; }
     /// px, height of a row in the last sweep.
     double rowHeight() const { return m_rowHeight; }
+    /// px, the row height for boxes at most `tallest` px tall: a little more,
+    /// rounded up to 6 significant bits so rows keep their edges while the
+    /// tallest box changes by a hair. Row k spans [k h, (k + 1) h).
+    static double rowHeightFor(double tallest);
 
 private:
     struct Key {

@@ -79,6 +79,8 @@ void UniformGrid::chooseCells(const BroadPhaseInput& in)
     while (!placeBalls(in, cell, minX, minY))
         cell *= 2.0;
     m_cellSize = cell;
+    m_originX = minX;
+    m_originY = minY;
 }
 
 // Slots: the dense array of cells when it is not mostly empty, a hash table

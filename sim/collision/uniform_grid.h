@@ -35,6 +35,14 @@ public:
     void setCellScale(double scale) { m_cellScale = scale; }
     /// px, cell side of the last call.
     double cellSize() const { return m_cellSize; }
+    /// px, the corner the cells of the last call are counted from (the
+    /// smallest corner of the balls' boxes): cell (i, j) starts at
+    /// (originX + i cellSize, originY + j cellSize).
+    double originX() const { return m_originX; }
+    double originY() const { return m_originY; }
+    /// Chooses the cells for these balls as findPairs does, without finding
+    /// pairs (for drawing them: ui's broad-phase overlay).
+    void layOut(const BroadPhaseInput& in) { chooseCells(in); }
     /// Whether the last call hashed its cells (balls far apart) instead of a dense array.
     bool hashed() const { return m_hashed; }
     /// (ball, cell) entries of the last call.
@@ -47,6 +55,7 @@ private:
 
     double m_cellScale = 1.5;
     double m_cellSize = 0.0;
+    double m_originX = 0.0, m_originY = 0.0;
     bool m_hashed = false;
     std::int64_t m_entries = 0;
     std::int64_t m_nx = 0, m_ny = 0;
