@@ -4,7 +4,7 @@
 #include "cli_commands.h"
 
 #include "lessons/atomic_file.h"
-#include "ui/handbook.h"
+#include "ui/drawing/handbook.h"
 
 #include <QFile>
 

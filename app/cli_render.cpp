@@ -8,8 +8,8 @@
 
 #include "lessons/lesson_loader.h"
 #include "sim/step_plan.h"
-#include "ui/png_file.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/png_file.h"
+#include "ui/drawing/world_painter.h"
 
 #include <QImage>
 #include <QPainter>

@@ -3,7 +3,7 @@
 // of tolerances for the adaptive ones); each run reports its error against the
 // closed form and its cost. This file prints the table, the fitted orders, the
 // long-run energy of the symplectic methods next to rk4's drift, and writes the
-// CSV; the chart is ui/sweep_chart.h.
+// CSV; the chart is ui/drawing/sweep_chart.h.
 
 #include "cli_commands.h"
 
@@ -13,7 +13,7 @@
 #include "sim/work_precision.h"
 #include "sim/world.h"
 #include "lessons/atomic_file.h"
-#include "ui/sweep_chart.h"
+#include "ui/drawing/sweep_chart.h"
 
 #include <QString>
 

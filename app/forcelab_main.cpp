@@ -4,8 +4,8 @@
 #include "lessons/lesson_loader.h"
 #include "ui/canvas.h"
 #include "ui/main_window.h"
-#include "ui/png_file.h"
-#include "ui/render_bench.h"
+#include "ui/drawing/png_file.h"
+#include "ui/drawing/render_bench.h"
 #include "ui/simulation_controller.h"
 
 #include <QApplication>

@@ -7,8 +7,8 @@
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/simulation_controller.h"
-#include "ui/view_transform.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/view_transform.h"
+#include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
 #include "sim/names.h"

@@ -10,9 +10,9 @@
 #include "ui/canvas.h"
 #include "ui/plots_dock.h"
 #include "ui/simulation_controller.h"
-#include "ui/trail_recorder.h"
+#include "ui/drawing/trail_recorder.h"
 #include "ui/trajectory_export.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
 

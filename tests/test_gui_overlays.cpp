@@ -11,7 +11,7 @@
 #include "ui/stopwatch_dock.h"
 #include "ui/simulation_controller.h"
 #include "ui/theme.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
 #include "sim/claims.h"

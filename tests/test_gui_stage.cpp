@@ -11,7 +11,7 @@
 #include "ui/stage_sliders.h"
 #include "ui/simulation_controller.h"
 #include "ui/stage_bar.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
 #include "sim/parameters.h"

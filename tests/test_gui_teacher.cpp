@@ -1,7 +1,7 @@
 // Teacher notes: hidden from the class until asked for, shown under the
 // lesson text, and gathered with every lesson into the printable handbook.
 
-#include "ui/handbook.h"
+#include "ui/drawing/handbook.h"
 #include "ui/lessons_dock.h"
 
 #include "lessons/lesson_loader.h"

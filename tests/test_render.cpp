@@ -2,7 +2,7 @@
 // the ball is drawn, in its colour, where the canvas's view puts it at time T.
 
 #include "sim/world.h"
-#include "ui/world_painter.h"
+#include "ui/drawing/world_painter.h"
 
 #include <QFile>
 #include <QImage>

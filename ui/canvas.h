@@ -8,9 +8,9 @@
 // it and holds it: it follows the pointer (velocity 0) until release, then
 // flies off with the pointer's velocity over the last kThrowWindowMs.
 
-#include "trail_recorder.h"
-#include "view_transform.h"
-#include "world_painter.h"
+#include "drawing/trail_recorder.h"
+#include "drawing/view_transform.h"
+#include "drawing/world_painter.h"
 
 #include "sim/types.h"
 

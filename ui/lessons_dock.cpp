@@ -2,7 +2,7 @@
 
 #include "lessons/lesson_markup.h"
 
-#include "handbook.h"
+#include "drawing/handbook.h"
 
 #include "lessons/lesson_loader.h"
 

@@ -2,14 +2,14 @@
 
 #include "lessons/atomic_file.h"
 #include "lessons/lesson_markup.h"
-#include "png_file.h"
+#include "drawing/png_file.h"
 
 #include "accuracy_dock.h"
 #include "canvas.h"
 #include "overlay_actions.h"
 #include "stage_bar.h"
 #include "stage_sliders.h"
-#include "handbook.h"
+#include "drawing/handbook.h"
 #include "code_dock.h"
 #include "parameter_commands.h"
 #include "inspector_dock.h"

@@ -5,7 +5,7 @@
 // lesson kept in QSettings.
 
 #include "lessons/lesson.h"
-#include "world_painter.h"
+#include "drawing/world_painter.h"
 
 #include <QElapsedTimer>
 #include <QFont>

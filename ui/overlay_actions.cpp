@@ -1,7 +1,7 @@
 #include "overlay_actions.h"
 
 #include "canvas.h"
-#include "world_painter.h"
+#include "drawing/world_painter.h"
 
 #include <QAction>
 #include <QActionGroup>

@@ -1,6 +1,6 @@
 #include "world_painter.h"
 
-#include "theme.h"
+#include "palette.h"
 #include "trail_recorder.h"
 
 #include "sim/broad_phase_geometry.h"
