@@ -34,6 +34,18 @@ struct CompiledLaw {
         potential.SetExpr(hasPotential ? s.potential : std::string("0"));
     }
 
+    /// The formulas' variables for ball i at position x and velocity v.
+    void setBall(const BallState& balls, const Matrix2X& xs, const Matrix2X& vs, int i)
+    {
+        x = xs(0, i);
+        y = xs(1, i);
+        vx = vs(0, i);
+        vy = vs(1, i);
+        m = balls.mass[i];
+        r = balls.radius[i];
+        q = balls.charge[i];
+    }
+
     void define(mu::Parser& p, const CustomForceSettings& s)
     {
         p.DefineVar("x", &x);
@@ -374,13 +386,7 @@ void addCustomAcceleration(const WorldSettings& settings, const BallState& balls
     law.H = settings.box.height;
     const int n = balls.size();
     for (int i = 0; i < n; ++i) {
-        law.x = x(0, i);
-        law.y = x(1, i);
-        law.vx = v(0, i);
-        law.vy = v(1, i);
-        law.m = balls.mass[i];
-        law.r = balls.radius[i];
-        law.q = balls.charge[i];
+        law.setBall(balls, x, v, i);
         const double fx = law.fx.Eval(), fy = law.fy.Eval();
         // a = F / m, unless the formulas already give the acceleration.
         const double scale = s.acceleration ? 1.0 : balls.inverseMass[i];
@@ -412,13 +418,7 @@ int firstBallWithoutPotential(const WorldSettings& settings, const BallState& ba
     law.W = settings.box.width;
     law.H = settings.box.height;
     for (int i = 0; i < balls.size(); ++i) {
-        law.x = x(0, i);
-        law.y = x(1, i);
-        law.vx = balls.velocity(0, i);
-        law.vy = balls.velocity(1, i);
-        law.m = balls.mass[i];
-        law.r = balls.radius[i];
-        law.q = balls.charge[i];
+        law.setBall(balls, x, balls.velocity, i);
         if (!std::isfinite(law.potential.Eval()))
             return i;
     }
@@ -435,13 +435,7 @@ double customPotential(const WorldSettings& settings, const BallState& balls, co
     law.H = settings.box.height;
     double sum = 0.0;
     for (int i = 0; i < balls.size(); ++i) {
-        law.x = x(0, i);
-        law.y = x(1, i);
-        law.vx = balls.velocity(0, i);
-        law.vy = balls.velocity(1, i);
-        law.m = balls.mass[i];
-        law.r = balls.radius[i];
-        law.q = balls.charge[i];
+        law.setBall(balls, x, balls.velocity, i);
         // With the formulas giving the acceleration, U is per unit mass.
         sum += s.acceleration ? law.m * law.potential.Eval() : law.potential.Eval();
     }
