@@ -262,7 +262,9 @@ void PredictDock::measurementFinished()
 {
     m_progress->hide();
     m_cancel->hide();
-    if (m_discard) { // showQuestion() has already asked again
+    // showQuestion() has already asked again (also when the result was on
+    // its way as the question reset: then nothing is predicted any more).
+    if (m_discard || !m_predicted) {
         m_discard = false;
         return;
     }
