@@ -616,10 +616,13 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
 /// {"key.path": value, …}: parameter rows and values allowed for them
 /// (choices by name, switches as true/false), as claims' and compare panes'
 /// "set". With `scene`, a claim's: its keys may also name a listed ball's
-/// start or the random balls' count (sim/scene_keys.h).
+/// start or the random balls' count and ranges (sim/scene_keys.h), which are
+/// applied to one copy of the scene, made at the first such key, so that
+/// the ranges are checked as the claim will run them.
 void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<std::pair<std::string, double>>& out,
               const sim::Scene* scene = nullptr)
 {
+    std::optional<sim::Scene> changed;
     for (auto it = set.begin(); it != set.end(); ++it) {
         const QString key = it.key();
         if (scene && sim::isSceneKey(key.toStdString())) {
@@ -630,7 +633,9 @@ void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<
                 continue;
             }
             const double value = v.isBool() ? (v.toBool() ? 1.0 : 0.0) : v.toDouble();
-            if (const auto problem = sim::checkSceneKey(*scene, key.toStdString(), value)) {
+            if (!changed)
+                changed = *scene;
+            if (const auto problem = sim::setSceneKey(*changed, key.toStdString(), value)) {
                 r.fail(join(sp, key), qs(*problem));
                 continue;
             }
@@ -672,6 +677,9 @@ void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<
         }
         out.emplace_back(key.toStdString(), value);
     }
+    if (changed)
+        if (const auto problem = sim::checkSpawnRanges(changed->spawn))
+            r.fail(sp, qs(*problem));
 }
 
 /// One claim: {"says": "…", "measure": "apex", "ball": 0, "n": 1, "at": 10,
@@ -731,15 +739,8 @@ void parseClaim(Reader& r, const QJsonObject& o, const QString& p, const sim::Sc
         else
             r.number(o, p, "within", range::kClaimTolerance, c.tolerance);
     }
-    if (const auto set = r.object(o, p, "set")) {
+    if (const auto set = r.object(o, p, "set"))
         parseSet(r, *set, join(p, "set"), c.set, &scene);
-        sim::Scene changed = scene;
-        for (const auto& [key, value] : c.set)
-            if (sim::isSceneKey(key))
-                sim::setSceneKey(changed, key, value);
-        if (const auto problem = sim::checkSpawnRanges(changed.spawn))
-            r.fail(join(p, "set"), qs(*problem));
-    }
 }
 
 /// A list of objects with at most `most` entries (`unit` names them in the

@@ -13,9 +13,9 @@ struct BroadPhaseGeometry {
     double rowHeight = 0.0;            ///< px, sweep row height; row k spans [k h, (k + 1) h) (0: no rows)
 };
 
-/// The geometry of the world's detection: the detector's own from its last
-/// step when it has run one on these balls' settings, else what it would lay
-/// out for the balls where they are now (a paused lesson at t = 0).
+/// The geometry of the world's detection: the detector's own from the last
+/// step, once the world has stepped with that detector, else what it would
+/// lay out for the balls where they are now (a paused lesson at t = 0).
 BroadPhaseGeometry broadPhaseGeometry(const World& world);
 
 } // namespace forcelab::sim

@@ -90,7 +90,9 @@ std::string number(double v)
     return std::string(buf, ec == std::errc() ? end : buf);
 }
 
-std::optional<std::string> apply(Scene& scene, std::string_view key, double value, bool write)
+} // namespace
+
+std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value)
 {
     Target t;
     if (auto problem = find(scene, key, t))
@@ -101,8 +103,6 @@ std::optional<std::string> apply(Scene& scene, std::string_view key, double valu
         return number(value) + " is not a whole number";
     if (t.flag && value != 0.0 && value != 1.0)
         return number(value) + " is not a switch (true or false)";
-    if (!write)
-        return std::nullopt;
     if (t.number)
         *t.number = value;
     else if (t.integer)
@@ -112,19 +112,6 @@ std::optional<std::string> apply(Scene& scene, std::string_view key, double valu
     else
         *t.seed = std::uint64_t(value);
     return std::nullopt;
-}
-
-} // namespace
-
-std::optional<std::string> checkSceneKey(const Scene& scene, std::string_view key, double value)
-{
-    Scene copy = scene; // find() hands out pointers into the scene it is given
-    return apply(copy, key, value, false);
-}
-
-std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value)
-{
-    return apply(scene, key, value, true);
 }
 
 std::optional<std::string> checkSpawnRanges(const SpawnSettings& spawn)

@@ -13,12 +13,9 @@
 
 namespace forcelab::sim {
 
-/// Why `value` cannot be set at `key` in `scene` (the key names nothing, the
-/// ball does not exist, the value is outside the field's range), or nothing
-/// when it can.
-std::optional<std::string> checkSceneKey(const Scene& scene, std::string_view key, double value);
-
-/// Sets it; the same explanation as checkSceneKey when it cannot.
+/// Sets `value` at `key` in `scene`; or, leaving the scene as it was, says
+/// why it cannot (the key names nothing, the ball does not exist, the value
+/// is outside the field's range).
 std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value);
 
 /// Why the random balls' ranges cannot be drawn from (a slowest speed above

@@ -22,7 +22,6 @@ std::int32_t rowOf(double y, double inverseHeight)
 // Row height: a little above the tallest box, rounded up to 6 significant bits
 // so that it stays the same from step to step (a changed height moves every
 // ball to a new row and costs a full sort).
-
 double SweepAndPrune::rowHeightFor(double tallest)
 {
     const double h = tallest * 1.001;
