@@ -2,7 +2,7 @@
 // Small helpers shared by the subcommands' argument parsing.
 
 #include "lessons/lesson_loader.h"
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <optional>
 #include <ostream>

@@ -1,11 +1,11 @@
 // forcelab-cli bench: the options of the collision benchmark
-// (sim/collision_bench.h), which does the measuring and prints the tables.
+// (sim/studies/collision_bench.h), which does the measuring and prints the tables.
 
 #include "cli_commands.h"
 
 #include "lessons/atomic_file.h"
-#include "sim/collision_bench.h"
-#include "sim/threads.h"
+#include "sim/studies/collision_bench.h"
+#include "sim/world/threads.h"
 
 #include <fstream>
 #include <memory>

@@ -3,7 +3,7 @@
 
 #include "cli_commands.h"
 
-#include "sim/parameter_reference.h"
+#include "sim/world/parameter_reference.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>

@@ -1,12 +1,12 @@
 // forcelab-cli pile: the peer scene's pile followed in time
-// (sim/pile_study.h), with the solver's knobs as options, so each figure of
+// (sim/studies/pile_study.h), with the solver's knobs as options, so each figure of
 // the jitter study in docs/performance.md can be run again.
 
 #include "cli_args.h"
 #include "cli_commands.h"
 
-#include "sim/pile_study.h"
-#include "sim/threads.h"
+#include "sim/studies/pile_study.h"
+#include "sim/world/threads.h"
 
 #include <cmath>
 #include <functional>

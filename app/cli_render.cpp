@@ -7,7 +7,7 @@
 #include "cli_args.h"
 
 #include "lessons/lesson_loader.h"
-#include "sim/step_plan.h"
+#include "sim/world/step_plan.h"
 #include "ui/drawing/png_file.h"
 #include "ui/drawing/world_painter.h"
 

@@ -7,9 +7,9 @@
 
 #include "lessons/lesson_loader.h"
 #include "lessons/message_text.h"
-#include "sim/names.h"
-#include "sim/step_plan.h"
-#include "sim/world.h"
+#include "sim/world/names.h"
+#include "sim/world/step_plan.h"
+#include "sim/world/world.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -5,7 +5,7 @@
 #include "cli_commands.h"
 
 #include "cli_args.h"
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <sys/resource.h>
 

@@ -1,5 +1,5 @@
 // forcelab-cli sweep: a work-precision study. Every integrator runs the
-// reference problems of sim/reference_study.h at a range of time steps (and
+// reference problems of sim/studies/reference_study.h at a range of time steps (and
 // of tolerances for the adaptive ones); each run reports its error against the
 // closed form and its cost. This file prints the table, the fitted orders, the
 // long-run energy of the symplectic methods next to rk4's drift, and writes the
@@ -7,11 +7,11 @@
 
 #include "cli_commands.h"
 
-#include "sim/integrator_info.h"
-#include "sim/names.h"
-#include "sim/reference_study.h"
-#include "sim/work_precision.h"
-#include "sim/world.h"
+#include "sim/integrators/integrator_info.h"
+#include "sim/world/names.h"
+#include "sim/studies/reference_study.h"
+#include "sim/studies/work_precision.h"
+#include "sim/world/world.h"
 #include "lessons/atomic_file.h"
 #include "ui/drawing/sweep_chart.h"
 
@@ -115,7 +115,7 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         }
     }
 
-    // The sweep: the plan of sim/reference_study.h, each run timed `repeats` times.
+    // The sweep: the plan of sim/studies/reference_study.h, each run timed `repeats` times.
     const int repeats = o.quick ? 1 : 5;
     const std::vector<SweepJob> jobs = planSweep(problems, o.quick);
     const auto started = std::chrono::steady_clock::now();

@@ -2,11 +2,11 @@
 // built-in lesson id; without one it opens the last lesson or the showcase.
 
 #include "lessons/lesson_loader.h"
-#include "ui/canvas.h"
-#include "ui/main_window.h"
+#include "ui/canvas/canvas.h"
+#include "ui/window/main_window.h"
 #include "ui/drawing/png_file.h"
 #include "ui/drawing/render_bench.h"
-#include "ui/simulation_controller.h"
+#include "ui/canvas/simulation_controller.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

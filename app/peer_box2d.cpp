@@ -7,7 +7,7 @@
 
 #include "peer_box2d.h"
 
-#include "sim/threads.h"
+#include "sim/world/threads.h"
 
 #include <chrono>
 #include <cstdio>

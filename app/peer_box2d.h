@@ -3,7 +3,7 @@
 // the rows; peer_box2d_v2.cpp or peer_box2d_v3.cpp (whichever Box2D CMake
 // found) runs the same scene in Box2D.
 
-#include "sim/peer_scene.h"
+#include "sim/studies/peer_scene.h"
 
 namespace forcelab::peer {
 

@@ -3,8 +3,8 @@
 // Plain data: the loader fills it from a lesson file, the writer turns it back
 // into one, the workbench and the CLI read it.
 
-#include "sim/claims.h"
-#include "sim/scene.h"
+#include "sim/studies/claims.h"
+#include "sim/world/scene.h"
 
 #include <QString>
 #include <QStringList>
@@ -74,7 +74,7 @@ struct Lesson {
     QStringList controls; ///< parameter names shown first in the Parameters dock
     QStringList overlays; ///< overlays switched on, e.g. "velocity", "readout"
     /// What the text says about the scene, as measurements `forcelab-cli
-    /// check` runs (sim/claims.h); each claim's text is the lesson's sentence.
+    /// check` runs (sim/studies/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;
     /// Sentences with numbers or comparisons that are not claims, and why.
     std::vector<NotMeasured> notMeasured;

@@ -1,6 +1,6 @@
 #include "lesson_controls.h"
 
-#include "sim/parameters.h"
+#include "sim/world/parameters.h"
 
 #include <QSet>
 

@@ -2,7 +2,7 @@
 // The names a lesson may list in "controls", and which rows of the
 // Parameters panel each one shows. The lesson reader checks names against
 // this table and the panel lays out its rows from it, so a control name is
-// defined once. A row is a parameter's `control` (sim/parameters.cpp) or one
+// defined once. A row is a parameter's `control` (sim/world/parameters.cpp) or one
 // of the panel's own rows (wall_sides, seed, ball_count, fully_inside,
 // time_scale).
 

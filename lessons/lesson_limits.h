@@ -2,9 +2,9 @@
 // The limits of a lesson file: sizes that keep a hostile file from exhausting
 // memory or time, and the allowed range of the numbers that are not world
 // settings (balls, spawning). The settings' ranges are the rows of
-// sim/parameters.cpp, which the reader walks.
+// sim/world/parameters.cpp, which the reader walks.
 
-#include "sim/ball_state.h"
+#include "sim/world/ball_state.h"
 
 #include <QString>
 

@@ -6,7 +6,7 @@
 #include "lesson_overrides.h"
 #include "message_text.h"
 #include "lesson_parser.h"
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <QDir>
 #include <QFile>

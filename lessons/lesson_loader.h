@@ -4,7 +4,7 @@
 // resources under ":/lessons/".
 
 #include "lesson.h"
-#include "sim/error.h"
+#include "sim/world/error.h"
 
 #include <QByteArray>
 #include <QList>

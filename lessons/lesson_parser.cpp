@@ -6,9 +6,9 @@
 #include "lesson_controls.h"
 #include "lesson_limits.h"
 #include "nearest_key.h"
-#include "sim/names.h"
-#include "sim/parameters.h"
-#include "sim/scene_keys.h"
+#include "sim/world/names.h"
+#include "sim/world/parameters.h"
+#include "sim/world/scene_keys.h"
 
 #include <QJsonArray>
 #include <QRegularExpression>
@@ -616,7 +616,7 @@ void parseSpawn(Reader& r, const QJsonObject& o, int listed, sim::SpawnSettings&
 /// {"key.path": value, …}: parameter rows and values allowed for them
 /// (choices by name, switches as true/false), as claims' and compare panes'
 /// "set". With `scene`, a claim's: its keys may also name a listed ball's
-/// start or the random balls' count and ranges (sim/scene_keys.h), which are
+/// start or the random balls' count and ranges (sim/world/scene_keys.h), which are
 /// applied to one copy of the scene, made at the first such key, so that
 /// the ranges are checked as the claim will run them.
 void parseSet(Reader& r, const QJsonObject& set, const QString& sp, std::vector<std::pair<std::string, double>>& out,

@@ -5,9 +5,9 @@
 
 #include "lesson_limits.h"
 #include "lesson_loader.h"
-#include "sim/names.h"
-#include "sim/parameters.h"
-#include "sim/scene_keys.h"
+#include "sim/world/names.h"
+#include "sim/world/parameters.h"
+#include "sim/world/scene_keys.h"
 
 #include <charconv>
 #include <algorithm>

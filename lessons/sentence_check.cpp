@@ -1,7 +1,7 @@
 #include "sentence_check.h"
 
 #include "lesson_markup.h"
-#include "sim/parameters.h"
+#include "sim/world/parameters.h"
 
 #include <QRegularExpression>
 

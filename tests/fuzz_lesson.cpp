@@ -11,7 +11,7 @@
 #include "lessons/lesson_loader.h"
 #include "lessons/lesson_markup.h"
 #include "lessons/sentence_check.h"
-#include "ui/lesson_text_view.h"
+#include "ui/docks/lesson_text_view.h"
 
 #include <QApplication>
 

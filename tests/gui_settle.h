@@ -11,7 +11,7 @@
 // geometry, font, visibility or text shape and no stage bar has a fit
 // waiting.
 
-#include "ui/stage_bar.h"
+#include "ui/stage/stage_bar.h"
 
 #include <QCoreApplication>
 #include <QLabel>

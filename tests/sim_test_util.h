@@ -1,9 +1,9 @@
 #pragma once
 // Small helpers shared by the simulation tests.
 
-#include "sim/parameters.h"
-#include "sim/work_precision.h"
-#include "sim/world.h"
+#include "sim/world/parameters.h"
+#include "sim/studies/work_precision.h"
+#include "sim/world/world.h"
 
 #include <cmath>
 #include <optional>
@@ -12,7 +12,7 @@
 
 namespace forcelab::test {
 
-// Scenes built in code: sim's own helpers (sim/scene.h).
+// Scenes built in code: sim's own helpers (sim/world/scene.h).
 using sim::ballAt;
 using sim::openScene;
 
@@ -57,7 +57,7 @@ inline double anotherValue(const sim::Parameter& p, double from)
 }
 
 /// Least-squares slope of log(err) against log(dt): the observed order
-/// (sim/work_precision.h, which the sweep and the Accuracy dock use too).
+/// (sim/studies/work_precision.h, which the sweep and the Accuracy dock use too).
 using sim::fittedOrder;
 
 } // namespace forcelab::test

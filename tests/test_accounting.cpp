@@ -4,7 +4,7 @@
 
 #include "sim_test_util.h"
 
-#include "sim/kepler.h"
+#include "sim/studies/kepler.h"
 
 #include "sim_check.h"
 

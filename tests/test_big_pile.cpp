@@ -4,8 +4,8 @@
 // out of the sanitizer build; test_collision_world runs the same solver on
 // the 5,000-ball pile there.
 
-#include "sim/peer_scene.h"
-#include "sim/world.h"
+#include "sim/studies/peer_scene.h"
+#include "sim/world/world.h"
 
 #include "sim_check.h"
 

@@ -1,7 +1,7 @@
-// Claims against closed forms: each measurement of sim/claims.h on a scene
+// Claims against closed forms: each measurement of sim/studies/claims.h on a scene
 // whose answer is known, and the verdicts (holds, fails, cannot be measured).
 
-#include "sim/claims.h"
+#include "sim/studies/claims.h"
 
 #include "sim_check.h"
 

@@ -1,9 +1,9 @@
 // Collisions inside a whole world: walls and balls together, energy and
 // momentum over long runs, and the same run whichever detector is chosen.
 
-#include "sim/broad_phase_geometry.h"
-#include "sim/peer_scene.h"
-#include "sim/world.h"
+#include "sim/collision/broad_phase/broad_phase_geometry.h"
+#include "sim/studies/peer_scene.h"
+#include "sim/world/world.h"
 
 #include "sim_check.h"
 

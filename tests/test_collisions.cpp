@@ -5,9 +5,9 @@
 // 10⁶ gave errors under 2e-15).
 
 #include "sim/collision/collision_system.h"
-#include "sim/collision/positional_correction.h"
-#include "sim/collision/response.h"
-#include "sim/scene.h"
+#include "sim/collision/response/positional_correction.h"
+#include "sim/collision/response/response.h"
+#include "sim/world/scene.h"
 
 #include "sim_check.h"
 

@@ -14,8 +14,8 @@
 #include "sim_check.h"
 #include "sim_test_util.h"
 
-#include "sim/custom_force.h"
-#include "sim/world.h"
+#include "sim/forces/custom_force.h"
+#include "sim/world/world.h"
 
 #include <cmath>
 #include <string>

@@ -7,8 +7,8 @@
 #include "sim_check.h"
 #include "sim_test_util.h"
 
-#include "sim/events.h"
-#include "sim/world.h"
+#include "sim/world/events.h"
+#include "sim/world/world.h"
 
 #include <cmath>
 #include <numbers>

@@ -9,8 +9,8 @@
 
 #include "sim_test_util.h"
 
-#include "sim/names.h"
-#include "sim/step_plan.h"
+#include "sim/world/names.h"
+#include "sim/world/step_plan.h"
 
 #include "sim_check.h"
 

@@ -3,7 +3,7 @@
 
 #include "sim_test_util.h"
 
-#include "sim/names.h"
+#include "sim/world/names.h"
 
 #include "sim_check.h"
 
@@ -338,7 +338,7 @@ std::vector<SettingsChecksRow> settingsChecksRows()
 {
     std::vector<SettingsChecksRow> rows;
     // The messages the lesson loader gives for the same values, units included
-    // (both come from the rows of sim/parameters.h).
+    // (both come from the rows of sim/world/parameters.h).
     rows.push_back({Text("dt zero"), 0, "time.dt: 0 is outside (0, 1] s"});
     rows.push_back({Text("NaN gravity"), 1, "models.gravity.y: nan is not a finite number"});
     rows.push_back({Text("restitution"), 2, "world.restitution: 1.5 is outside [0, 1]"});

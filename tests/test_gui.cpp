@@ -3,15 +3,15 @@
 // act, pointer events reach the world, and the frame loop takes whole steps.
 
 #include "tests/sim_test_util.h"
-#include "ui/canvas.h"
-#include "ui/main_window.h"
-#include "ui/parameter_panel.h"
-#include "ui/simulation_controller.h"
+#include "ui/canvas/canvas.h"
+#include "ui/window/main_window.h"
+#include "ui/controls/parameter_panel.h"
+#include "ui/canvas/simulation_controller.h"
 #include "ui/drawing/view_transform.h"
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
-#include "sim/names.h"
+#include "sim/world/names.h"
 
 #include <QApplication>
 #include <QComboBox>

@@ -6,12 +6,12 @@
 // background, can be cancelled, and report what theory predicts.
 
 #include "tests/sim_test_util.h"
-#include "ui/accuracy_dock.h"
-#include "ui/canvas.h"
-#include "ui/main_window.h"
-#include "ui/simulation_controller.h"
+#include "ui/docks/accuracy_dock.h"
+#include "ui/canvas/canvas.h"
+#include "ui/window/main_window.h"
+#include "ui/canvas/simulation_controller.h"
 
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <QAbstractSeries>
 #include <QAction>

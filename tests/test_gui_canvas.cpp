@@ -6,12 +6,12 @@
 // per step and never while paused.
 
 #include "tests/sim_test_util.h"
-#include "sim/broad_phase_geometry.h"
-#include "ui/canvas.h"
-#include "ui/plots_dock.h"
-#include "ui/simulation_controller.h"
+#include "sim/collision/broad_phase/broad_phase_geometry.h"
+#include "ui/canvas/canvas.h"
+#include "ui/docks/plots_dock.h"
+#include "ui/canvas/simulation_controller.h"
 #include "ui/drawing/trail_recorder.h"
-#include "ui/trajectory_export.h"
+#include "ui/docks/trajectory_export.h"
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"

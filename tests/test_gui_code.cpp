@@ -1,11 +1,11 @@
 // The Code panel: the marked regions of sim/ parse, match the source files
 // line for line, and the panel shows and highlights what the settings run.
 
-#include "ui/code_dock.h"
-#include "ui/code_snippets.h"
-#include "ui/simulation_controller.h"
+#include "ui/docks/code_dock.h"
+#include "ui/docks/code_snippets.h"
+#include "ui/canvas/simulation_controller.h"
 
-#include "sim/scene.h"
+#include "sim/world/scene.h"
 
 #include <QFile>
 #include <QTest>

@@ -5,8 +5,8 @@
 // twice: as is, and with QT_SCALE_FACTOR=2 (test_gui_layout_scale2), where
 // the same window sizes are logical pixels of a screen twice as dense.
 #include "gui_settle.h"
-#include "ui/main_window.h"
-#include "ui/parameter_panel.h"
+#include "ui/window/main_window.h"
+#include "ui/controls/parameter_panel.h"
 
 #include <QAbstractSpinBox>
 #include <QCheckBox>

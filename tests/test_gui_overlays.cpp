@@ -4,18 +4,18 @@
 // length menu scales arrows by its factor, and the path layer that is
 // appended to each frame gives the picture a whole redraw gives.
 // Real widgets, offscreen.
-#include "ui/canvas.h"
-#include "ui/force_editor_dock.h"
-#include "ui/main_window.h"
-#include "ui/predict_dock.h"
-#include "ui/stopwatch_dock.h"
-#include "ui/simulation_controller.h"
-#include "ui/theme.h"
+#include "ui/canvas/canvas.h"
+#include "ui/docks/force_editor_dock.h"
+#include "ui/window/main_window.h"
+#include "ui/docks/predict_dock.h"
+#include "ui/docks/stopwatch_dock.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/window/theme.h"
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
-#include "sim/claims.h"
-#include "sim/names.h"
+#include "sim/studies/claims.h"
+#include "sim/world/names.h"
 
 #include <QDir>
 #include <QImageReader>

@@ -3,11 +3,11 @@
 // axis, legends that say p_x and p_y, counts with the right plural, and
 // readout numbers without rounding noise.
 
-#include "ui/plots_dock.h"
-#include "ui/readable_numbers.h"
-#include "ui/simulation_controller.h"
+#include "ui/docks/plots_dock.h"
+#include "ui/controls/readable_numbers.h"
+#include "ui/canvas/simulation_controller.h"
 
-#include "sim/scene.h"
+#include "sim/world/scene.h"
 
 #include <QChart>
 #include <QChartView>

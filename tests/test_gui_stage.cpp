@@ -5,16 +5,16 @@
 // readouts never cover the box, and opening a dock does not shrink it.
 
 #include "gui_settle.h"
-#include "ui/canvas.h"
-#include "ui/main_window.h"
-#include "ui/number_control.h"
-#include "ui/stage_sliders.h"
-#include "ui/simulation_controller.h"
-#include "ui/stage_bar.h"
+#include "ui/canvas/canvas.h"
+#include "ui/window/main_window.h"
+#include "ui/controls/number_control.h"
+#include "ui/stage/stage_sliders.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/stage/stage_bar.h"
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
-#include "sim/parameters.h"
+#include "sim/world/parameters.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -2,7 +2,7 @@
 // lesson text, and gathered with every lesson into the printable handbook.
 
 #include "ui/drawing/handbook.h"
-#include "ui/lessons_dock.h"
+#include "ui/docks/lessons_dock.h"
 
 #include "lessons/lesson_loader.h"
 

@@ -5,18 +5,18 @@
 // scene, the Lessons tree follows the course, and the Inspector shows the
 // selected ball's numbers as the world has them.
 
-#include "ui/canvas.h"
-#include "ui/inspector_dock.h"
-#include "ui/lessons_dock.h"
-#include "ui/main_window.h"
-#include "ui/number_control.h"
-#include "ui/parameter_panel.h"
-#include "ui/simulation_controller.h"
-#include "ui/trajectory_export.h"
+#include "ui/canvas/canvas.h"
+#include "ui/docks/inspector_dock.h"
+#include "ui/docks/lessons_dock.h"
+#include "ui/window/main_window.h"
+#include "ui/controls/number_control.h"
+#include "ui/controls/parameter_panel.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/docks/trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
-#include "sim/names.h"
-#include "sim/parameters.h"
+#include "sim/world/names.h"
+#include "sim/world/parameters.h"
 #include "tests/sim_test_util.h"
 
 #include <QMessageBox>

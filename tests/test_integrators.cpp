@@ -3,12 +3,12 @@
 
 #include "sim_test_util.h"
 
-#include "sim/integrator_info.h"
-#include "sim/stability.h"
+#include "sim/integrators/integrator_info.h"
+#include "sim/integrators/stability.h"
 
-#include "sim/kepler.h"
+#include "sim/studies/kepler.h"
 
-#include "sim/names.h"
+#include "sim/world/names.h"
 
 #include "sim_check.h"
 
@@ -28,7 +28,7 @@ using forcelab::test::openScene;
 
 namespace {
 
-// The Kepler orbit of sim/kepler.h: a = 100 px, period 1 s, e = 0.5 unless
+// The Kepler orbit of sim/studies/kepler.h: a = 100 px, period 1 s, e = 0.5 unless
 // changed, starting at periapsis; its position at any time comes from
 // Kepler's equation.
 using Kepler = KeplerOrbit;
@@ -315,9 +315,9 @@ std::vector<RecordsAgreeWithTheMethodsRow> recordsAgreeWithTheMethodsRows()
 } // namespace
 
 
-// Each integrator's record (sim/integrator_info.h) against the method itself:
+// Each integrator's record (sim/integrators/integrator_info.h) against the method itself:
 // its name round-trips; its spring limit is where one step's growth on
-// x'' = −ω² x (sim/stability.h, the eigenvalues of the step matrix) crosses 1,
+// x'' = −ω² x (sim/integrators/stability.h, the eigenvalues of the step matrix) crosses 1,
 // within 1e-3 of ω h on either side; explicit Euler grows at any h; the
 // fitted Kepler orders (keplerOrder) match the recorded ones.
 TEST_CASE("TestIntegrators::recordsAgreeWithTheMethods")

@@ -7,8 +7,8 @@
 #include "lessons/lesson_loader.h"
 #include "lessons/lesson_markup.h"
 #include "lessons/sentence_check.h"
-#include "sim/names.h"
-#include "sim/world.h"
+#include "sim/world/names.h"
+#include "sim/world/world.h"
 
 #include <QFile>
 #include <QTemporaryDir>

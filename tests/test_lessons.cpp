@@ -3,7 +3,7 @@
 // `forcelab-cli validate` is driven as a process at the end.
 
 #include "lessons/lesson_loader.h"
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <QDir>
 #include <QFile>

@@ -4,9 +4,9 @@
 // an Override, exactly as the control (or `--set`) would change the file.
 
 #include "lessons/lesson_loader.h"
-#include "sim/force_model.h"
-#include "sim/names.h"
-#include "sim/world.h"
+#include "sim/forces/force_model.h"
+#include "sim/world/names.h"
+#include "sim/world/world.h"
 
 #include <QtTest>
 

@@ -1,14 +1,14 @@
-// The parameter table (sim/parameters.h) against the settings it describes:
+// The parameter table (sim/world/parameters.h) against the settings it describes:
 // each row reads and writes its own field and no other, its default is
 // allowed, its key and control are unique, and the world's validation refuses
 // exactly what the row's range refuses.
 
 #include "sim_test_util.h"
 
-#include "sim/names.h"
-#include "sim/parameter_reference.h"
-#include "sim/parameters.h"
-#include "sim/world.h"
+#include "sim/world/names.h"
+#include "sim/world/parameter_reference.h"
+#include "sim/world/parameters.h"
+#include "sim/world/world.h"
 
 #include "sim_check.h"
 

@@ -4,9 +4,9 @@
 
 #include "sim_test_util.h"
 
-#include "sim/kepler.h"
+#include "sim/studies/kepler.h"
 
-#include "sim/names.h"
+#include "sim/world/names.h"
 
 #include "sim_check.h"
 
@@ -25,7 +25,7 @@ using forcelab::test::openScene;
 
 namespace {
 
-// The Kepler orbit of sim/kepler.h: a = 100 px, period 1 s, e = 0.5 unless
+// The Kepler orbit of sim/studies/kepler.h: a = 100 px, period 1 s, e = 0.5 unless
 // changed, starting at periapsis; its position at any time comes from
 // Kepler's equation.
 using Kepler = KeplerOrbit;

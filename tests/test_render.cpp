@@ -1,7 +1,7 @@
 // forcelab-cli render, driven as a process: the PNG has the requested size and
 // the ball is drawn, in its colour, where the canvas's view puts it at time T.
 
-#include "sim/world.h"
+#include "sim/world/world.h"
 #include "ui/drawing/world_painter.h"
 
 #include <QFile>

@@ -4,10 +4,10 @@
 // (fused multiply-add contraction) are switched off in the top CMakeLists.
 
 #include "lessons/lesson_loader.h"
-#include "sim/collision/row_strips.h"
-#include "sim/peer_scene.h"
-#include "sim/threads.h"
-#include "sim/world.h"
+#include "sim/collision/resting/row_strips.h"
+#include "sim/studies/peer_scene.h"
+#include "sim/world/threads.h"
+#include "sim/world/world.h"
 
 #include <QTest>
 

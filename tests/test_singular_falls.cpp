@@ -13,7 +13,7 @@
 
 #include "sim_test_util.h"
 
-#include "sim/names.h"
+#include "sim/world/names.h"
 
 #include "sim_check.h"
 

@@ -3,7 +3,7 @@
 
 #include "sim_test_util.h"
 
-#include "sim/stability.h"
+#include "sim/integrators/stability.h"
 
 #include "sim_check.h"
 

@@ -2,8 +2,8 @@
 
 #include "sim_test_util.h"
 
-#include "sim/integrator_info.h"
-#include "sim/names.h"
+#include "sim/integrators/integrator_info.h"
+#include "sim/world/names.h"
 
 #include "sim_check.h"
 

@@ -1,14 +1,14 @@
-// The work-precision engine (sim/work_precision.h): on a spring, whose
+// The work-precision engine (sim/studies/work_precision.h): on a spring, whose
 // integrators' orders are known from theory, the fitted orders come out as
 // theory says; the reference measured against itself has no error; the
 // cancel flag stops a study early.
 
 #include "sim_test_util.h"
 
-#include "sim/names.h"
-#include "sim/reference_study.h"
-#include "sim/work_precision.h"
-#include "sim/world.h"
+#include "sim/world/names.h"
+#include "sim/studies/reference_study.h"
+#include "sim/studies/work_precision.h"
+#include "sim/world/world.h"
 
 #include "sim_check.h"
 

@@ -1,11 +1,11 @@
 #include "collision_system.h"
 
-#include "brute_force.h"
-#include "../integrator_info.h"
-#include "halved.h"
+#include "sim/collision/broad_phase/brute_force.h"
+#include "sim/integrators/integrator_info.h"
+#include "sim/collision/broad_phase/halved.h"
 #include "narrow_phase.h"
-#include "positional_correction.h"
-#include "response.h"
+#include "sim/collision/response/positional_correction.h"
+#include "sim/collision/response/response.h"
 #include <algorithm>
 #include <cmath>
 #include <iterator>

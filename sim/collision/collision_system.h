@@ -9,20 +9,20 @@
 // and the response walks them in that order, so the result of a step does not
 // depend on the detector, only its cost does.
 
-#include "../ball_state.h"
-#include "../world_settings.h"
-#include "broad_phase_input.h"
+#include "sim/world/ball_state.h"
+#include "sim/world/world_settings.h"
+#include "sim/collision/broad_phase/broad_phase_input.h"
 #include "collision_profile.h"
 #include "contact.h"
-#include "contact_solver.h"
-#include "contact_sort.h"
-#include "impact_events.h"
-#include "resting_solver.h"
-#include "sleep.h"
-#include "speculative_margin.h"
-#include "sub_step_context.h"
-#include "sweep_and_prune.h"
-#include "uniform_grid.h"
+#include "sim/collision/resting/contact_solver.h"
+#include "sim/collision/broad_phase/contact_sort.h"
+#include "sim/collision/response/impact_events.h"
+#include "sim/collision/resting/resting_solver.h"
+#include "sim/collision/resting/sleep.h"
+#include "sim/collision/resting/speculative_margin.h"
+#include "sim/collision/resting/sub_step_context.h"
+#include "sim/collision/broad_phase/sweep_and_prune.h"
+#include "sim/collision/broad_phase/uniform_grid.h"
 
 #include <vector>
 

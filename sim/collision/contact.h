@@ -2,7 +2,7 @@
 // What detection produces: the touching pairs of one step and the counters a
 // student watches to see why one broad phase beats another.
 
-#include "../types.h"
+#include "sim/world/types.h"
 
 #include <cstdint>
 

@@ -8,7 +8,7 @@
 // The test is symmetric bit for bit: swapping a and b negates dx and dy, which
 // is exact in floating point, and squares and sums do not see the sign.
 
-#include "time_of_impact.h"
+#include "sim/collision/response/time_of_impact.h"
 
 #include <cstddef>
 

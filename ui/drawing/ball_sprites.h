@@ -5,7 +5,7 @@
 // image costs a small copy; an antialiased drawEllipse per ball costs an order
 // of magnitude more at large counts.
 
-#include "sim/types.h"
+#include "sim/world/types.h"
 
 #include <QImage>
 #include <QtGlobal>

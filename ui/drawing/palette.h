@@ -6,7 +6,7 @@
 
 #include "world_painter.h"
 
-#include "sim/types.h"
+#include "sim/world/types.h"
 
 #include <array>
 

@@ -5,8 +5,8 @@
 
 #include "lessons/lesson_loader.h"
 
-#include "sim/scene.h"
-#include "sim/world.h"
+#include "sim/world/scene.h"
+#include "sim/world/world.h"
 
 #include <QElapsedTimer>
 #include <QImage>

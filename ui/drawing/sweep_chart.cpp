@@ -1,8 +1,8 @@
 #include "sweep_chart.h"
 #include "png_file.h"
 
-#include "sim/integrator_info.h"
-#include "sim/names.h"
+#include "sim/integrators/integrator_info.h"
+#include "sim/world/names.h"
 
 #include <QImage>
 #include <QPainter>

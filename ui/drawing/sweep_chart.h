@@ -3,7 +3,7 @@
 // evaluations, log-log, one panel per reference problem and one line per
 // integrator.
 
-#include "sim/reference_study.h"
+#include "sim/studies/reference_study.h"
 
 #include <QString>
 

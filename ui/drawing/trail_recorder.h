@@ -4,7 +4,7 @@
 // the same real time whatever dt is, and its memory is at most capacity ×
 // balls positions whatever the run's length. The canvas clears it on a new scene.
 
-#include "sim/ball_state.h"
+#include "sim/world/ball_state.h"
 
 #include <QPointF>
 

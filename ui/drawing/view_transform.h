@@ -4,8 +4,8 @@
 // centres the box, so the world keeps its aspect ratio and the spare space
 // becomes a letterbox.
 
-#include "sim/types.h"
-#include "sim/world_settings.h"
+#include "sim/world/types.h"
+#include "sim/world/world_settings.h"
 
 #include <QPointF>
 #include <QRectF>

@@ -3,9 +3,9 @@
 #include "palette.h"
 #include "trail_recorder.h"
 
-#include "sim/broad_phase_geometry.h"
-#include "sim/force_models.h"
-#include "sim/names.h"
+#include "sim/collision/broad_phase/broad_phase_geometry.h"
+#include "sim/forces/force_models.h"
+#include "sim/world/names.h"
 
 #include <QFontDatabase>
 #include <QFontMetricsF>
@@ -757,7 +757,7 @@ void WorldPainter::paintBroadPhase(QPainter& p, const ViewTransform& view, const
     p.setRenderHint(QPainter::Antialiasing, false);
     const bool perBall = n <= kMaxBroadPhaseBalls;
 
-    // The detector's own cells and rows (sim/broad_phase_geometry.h), so the
+    // The detector's own cells and rows (sim/collision/broad_phase/broad_phase_geometry.h), so the
     // search drawn is the search the world runs.
     const sim::BroadPhaseGeometry geometry = sim::broadPhaseGeometry(world);
     if (detection == sim::Detection::Grid) {

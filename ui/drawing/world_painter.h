@@ -7,7 +7,7 @@
 #include "ball_sprites.h"
 #include "view_transform.h"
 
-#include "sim/world.h"
+#include "sim/world/world.h"
 
 #include <QColor>
 #include <QImage>
@@ -85,7 +85,7 @@ struct PaintOptions {
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
-    const CanvasColors* colors = nullptr;     ///< the theme's colours (ui/theme.h); null: the plain ones; not owned
+    const CanvasColors* colors = nullptr;     ///< the theme's colours (ui/window/theme.h); null: the plain ones; not owned
     const std::vector<ApexMark>* apexes = nullptr; ///< the tops of the flights; drawn when overlays.apexes; not owned
     const std::vector<sim::Vec2>* centreOfMassPath = nullptr; ///< world px, oldest first; drawn when overlays.centreOfMass; not owned
     /// px, where to draw the balls instead of their positions (2×N, the
@@ -113,7 +113,7 @@ inline constexpr QRgb kForce = 0xff22262e;      ///< net force arrows and the mo
 inline constexpr QRgb kCentreOfMass = 0xff343a40;
 } // namespace canvas_colors
 
-/// The colours and marks a theme may change (ui/theme.h); the defaults are the plain theme.
+/// The colours and marks a theme may change (ui/window/theme.h); the defaults are the plain theme.
 struct CanvasColors {
     QRgb letterbox = canvas_colors::kLetterbox;
     QRgb background = canvas_colors::kBackground;

@@ -1,0 +1,30 @@
+#include "sim/collision/resting/row_strips.h"
+
+#include <oneapi/tbb/parallel_for.h>
+
+namespace forcelab::sim {
+
+void RowStrips::runStrips(StripJob job, void* context) const
+{
+    const int strips = static_cast<int>(stripCount()) - 1; // without the leftovers
+    auto strip = [&](int s) {
+        const int begin = m_start[static_cast<std::size_t>(s)], end = m_start[static_cast<std::size_t>(s) + 1];
+        if (begin < end)
+            job(context, s, begin, end);
+    };
+    const bool parallel = m_rows.size() >= kParallelRows && strips > 2;
+    for (int colour = 0; colour < 2; ++colour) {
+        const int count = (strips - colour + 1) / 2; // strips colour, colour + 2, ...
+        if (parallel) {
+            // One task per strip: the strips of a colour share no ball, so
+            // they may run in any order and on any thread.
+            oneapi::tbb::parallel_for(0, count, [&](int i) { strip(colour + 2 * i); });
+        } else {
+            for (int i = 0; i < count; ++i)
+                strip(colour + 2 * i);
+        }
+    }
+    strip(strips); // the leftovers, alone
+}
+
+} // namespace forcelab::sim

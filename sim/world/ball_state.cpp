@@ -1,0 +1,95 @@
+#include "sim/world/ball_state.h"
+
+#include <numbers>
+
+namespace forcelab::sim {
+
+double sphereMass(double radius)
+{
+    return kDefaultDensity * (4.0 / 3.0) * std::numbers::pi * radius * radius * radius;
+}
+
+void BallState::clear()
+{
+    position.resize(2, 0);
+    velocity.resize(2, 0);
+    radius.resize(0);
+    mass.resize(0);
+    inverseMass.resize(0);
+    charge.resize(0);
+    color.clear();
+    home.resize(2, 0);
+    colliding.clear();
+}
+
+void BallState::resize(int n)
+{
+    // conservativeResize keeps the existing columns; new ones are zeroed.
+    const int old = size();
+    position.conservativeResize(2, n);
+    velocity.conservativeResize(2, n);
+    home.conservativeResize(2, n);
+    radius.conservativeResize(n);
+    mass.conservativeResize(n);
+    inverseMass.conservativeResize(n);
+    charge.conservativeResize(n);
+    color.resize(static_cast<std::size_t>(n), 0);
+    colliding.resize(static_cast<std::size_t>(n), 0);
+    if (n > old) {
+        position.rightCols(n - old).setZero();
+        velocity.rightCols(n - old).setZero();
+        home.rightCols(n - old).setZero();
+        radius.tail(n - old).setZero();
+        mass.tail(n - old).setZero();
+        inverseMass.tail(n - old).setZero();
+        charge.tail(n - old).setZero();
+    }
+}
+
+void BallState::assign(std::span<const Ball> balls)
+{
+    clear();
+    resize(static_cast<int>(balls.size()));
+    for (int i = 0; i < size(); ++i)
+        set(i, balls[static_cast<std::size_t>(i)]);
+}
+
+void BallState::append(const Ball& b)
+{
+    const int n = size();
+    resize(n + 1);
+    set(n, b);
+}
+
+void BallState::set(int i, const Ball& b)
+{
+    position.col(i) = b.position;
+    velocity.col(i) = b.velocity;
+    home.col(i) = b.home;
+    radius[i] = b.radius;
+    charge[i] = b.charge;
+    color[static_cast<std::size_t>(i)] = b.color;
+    colliding[static_cast<std::size_t>(i)] = 0;
+    setMass(i, b.mass > 0.0 ? b.mass : sphereMass(b.radius));
+}
+
+void BallState::setMass(int i, double m)
+{
+    mass[i] = m;
+    inverseMass[i] = 1.0 / m;
+}
+
+Ball BallState::ball(int i) const
+{
+    Ball b;
+    b.position = position.col(i);
+    b.velocity = velocity.col(i);
+    b.radius = radius[i];
+    b.mass = mass[i];
+    b.charge = charge[i];
+    b.color = color[static_cast<std::size_t>(i)];
+    b.home = home.col(i);
+    return b;
+}
+
+} // namespace forcelab::sim

@@ -1,0 +1,639 @@
+#include "ui/canvas/canvas.h"
+
+#include "ui/canvas/simulation_controller.h"
+
+#include "sim/world/parameters.h"
+
+#include <QApplication>
+
+#include <QElapsedTimer>
+#include <QMouseEvent>
+#include <QFontMetricsF>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace forcelab {
+
+Canvas::Canvas(SimulationController* controller, QWidget* parent)
+    : QWidget(parent)
+    , m_controller(controller)
+{
+    setObjectName(QStringLiteral("canvas"));
+    setAccessibleName(tr("Simulation stage"));
+    setMouseTracking(true);
+    setFocusPolicy(Qt::ClickFocus); // a click on the canvas takes focus from a spin box, so Space plays again
+    setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel
+    m_options.trails = &m_trails;
+    m_options.collision = &m_collision;
+    m_options.centreOfMassPath = &m_centreOfMassPath;
+    m_options.apexes = &m_apexes;
+    m_options.colors = &m_colors;
+    connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
+    connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::framePassed, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::playingChanged, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::settingsChanged, this, qOverload<>(&QWidget::update));
+    connect(m_controller, &SimulationController::sceneChanged, this, &Canvas::onSceneChanged);
+    connect(m_controller, &SimulationController::ghostChanged, this, [this] {
+        m_options.ghost = m_controller->ghost();
+        update();
+    });
+}
+
+void Canvas::setOverlays(const Overlays& overlays)
+{
+    if (overlays.trails != m_options.overlays.trails)
+        m_trails.clear(); // a trail starts when it is switched on
+    if (overlays.impact != m_options.overlays.impact)
+        resetCollision();
+    if (overlays.centreOfMass != m_options.overlays.centreOfMass)
+        m_centreOfMassPath.clear(); // its path starts when it is switched on
+    const bool changed = !(overlays == m_options.overlays);
+    m_options.overlays = overlays;
+    if (m_options.overlays.trails)
+        m_trails.record(m_controller->world().balls(), m_controller->world().time());
+    if (m_options.overlays.centreOfMass)
+        recordCentreOfMass();
+    update();
+    if (changed)
+        emit overlaysChanged();
+}
+
+double Canvas::Ruler::angle() const
+{
+    const sim::Vec2 d = to - from;
+    return std::atan2(-d.y(), d.x()) * 180.0 / std::numbers::pi;
+}
+
+void Canvas::recordApexes()
+{
+    // The top of a flight: vy turns from up (−) to down (+) between frames.
+    const sim::BallState& balls = m_controller->world().balls();
+    const int n = std::min(balls.size(), kMaxApexBalls);
+    if (m_apexVy.size() == n) {
+        for (int i = 0; i < n; ++i)
+            if (m_apexVy[i] < 0.0 && balls.velocity(1, i) >= 0.0)
+                m_apexes.push_back({balls.position.col(i), balls.radius[i]});
+    }
+    m_apexVy = balls.velocity.row(1).head(n).transpose();
+    // Bounded: past 2,000 marks the older half goes.
+    if (m_apexes.size() > 2000)
+        m_apexes.erase(m_apexes.begin(), m_apexes.begin() + 1000);
+}
+
+void Canvas::paintRuler(QPainter& p) const
+{
+    const QPointF a = worldToWidget(m_ruler.from), b = worldToWidget(m_ruler.to);
+    const double k = m_options.lineScale;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 2.0 * k, Qt::SolidLine, Qt::FlatCap));
+    p.drawLine(a, b);
+    // End ticks at right angles to the ruler.
+    const QLineF line(a, b);
+    if (line.length() > 0.0) {
+        const QPointF n = QPointF(-line.dy(), line.dx()) / line.length() * (7.0 * k);
+        p.drawLine(a - n, a + n);
+        p.drawLine(b - n, b + n);
+    }
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
+    font.setBold(true);
+    p.setFont(font);
+    const QString text = tr("%1 px at %2°").arg(m_ruler.length(), 0, 'f', 1).arg(m_ruler.angle(), 0, 'f', 0);
+    const QFontMetricsF fm(font);
+    QRectF box(QPointF(0, 0), QSizeF(fm.horizontalAdvance(text) + 12 * k, fm.height() + 6 * k));
+    box.moveCenter(line.center() + QPointF(0, -box.height()));
+    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(box, 4, 4);
+    p.drawText(box, Qt::AlignCenter, text);
+    p.restore();
+}
+
+void Canvas::recordCentreOfMass()
+{
+    const sim::BallState& balls = m_controller->world().balls();
+    const double total = balls.mass.sum();
+    if (balls.empty() || !(total > 0.0))
+        return;
+    const sim::Vec2 centre = (balls.position * balls.mass.matrix()) / total;
+    if (!m_centreOfMassPath.empty() && m_centreOfMassPath.back() == centre)
+        return;
+    // A bounded path: past kMaxCentrePoints the older half goes.
+    if (m_centreOfMassPath.size() >= kMaxCentrePoints)
+        m_centreOfMassPath.erase(m_centreOfMassPath.begin(),
+                                 m_centreOfMassPath.begin() + static_cast<std::ptrdiff_t>(kMaxCentrePoints / 2));
+    m_centreOfMassPath.push_back(centre);
+}
+
+void Canvas::setTrailsEnabled(bool enabled)
+{
+    Overlays o = m_options.overlays;
+    o.trails = enabled;
+    setOverlays(o);
+}
+
+void Canvas::setTrailScope(TrailRecorder::Scope scope)
+{
+    m_trails.setScope(scope);
+    if (m_options.overlays.trails)
+        m_trails.record(m_controller->world().balls(), m_controller->world().time());
+    update();
+}
+
+void Canvas::setSelectedBall(int index)
+{
+    if (index < -1 || index >= m_controller->world().balls().size())
+        index = -1;
+    if (index == m_options.selected)
+        return;
+    m_options.selected = index;
+    m_trails.setSelected(index);
+    resetCollision();
+    update();
+    emit selectedBallChanged(index);
+}
+
+void Canvas::setMarkedColor(const QColor& color)
+{
+    m_painter.setMarkedColor(color.rgb() & 0xffffffu);
+    update();
+}
+
+QColor Canvas::markedColor() const
+{
+    return QColor::fromRgb(m_painter.markedColor());
+}
+
+void Canvas::setLineScale(double scale)
+{
+    m_options.lineScale = scale;
+    update();
+}
+
+void Canvas::setAutoArrows(bool on)
+{
+    m_options.autoArrows = on;
+    update();
+}
+
+void Canvas::setColors(const CanvasColors& colors)
+{
+    m_colors = colors;
+    update();
+}
+
+void Canvas::setArrowFactor(double factor)
+{
+    m_options.arrowFactor = factor;
+    update();
+}
+
+void Canvas::setBoxMargin(double pixels)
+{
+    m_options.margin = pixels;
+    update();
+}
+
+ViewTransform Canvas::viewTransform() const
+{
+    return WorldPainter::view(m_controller->world(), liveArea(), m_options);
+}
+
+QPointF Canvas::worldToWidget(const sim::Vec2& world) const
+{
+    return viewTransform().toWidget(world);
+}
+
+sim::Vec2 Canvas::widgetToWorld(const QPointF& widget) const
+{
+    return viewTransform().toWorld(widget);
+}
+
+int Canvas::ballAt(const QPointF& widget) const
+{
+    const sim::Vec2 p = widgetToWorld(widget);
+    const sim::BallState& balls = m_controller->world().balls();
+    // Later balls are drawn on top, so search from the end.
+    for (int i = balls.size() - 1; i >= 0; --i) {
+        const double r = balls.radius[i];
+        if ((balls.position.col(i) - p).squaredNorm() <= r * r)
+            return i;
+    }
+    return -1;
+}
+
+QSize Canvas::sizeHint() const
+{
+    return {900, 600};
+}
+
+QSize Canvas::minimumSizeHint() const
+{
+    return {240, 160};
+}
+
+QImage Canvas::renderImage() const
+{
+    return renderImage(size(), devicePixelRatioF());
+}
+
+QImage Canvas::renderImage(const QSize& size, qreal dpr) const
+{
+    QImage image((QSizeF(size) * dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(dpr);
+    // Its own painter (and sprite cache): a screenshot leaves the canvas as it was.
+    WorldPainter painter;
+    painter.setMarkedColor(m_painter.markedColor());
+    std::vector<WorldPainter> panes(m_panePainters.size());
+    QPainter p(&image);
+    paintRuns(p, QRectF(QPointF(0, 0), QSizeF(size)), painter, panes, dpr);
+    return image;
+}
+
+double Canvas::paneLabelHeight() const
+{
+    return m_controller->comparePanes().empty() ? 0.0 : 24.0 * m_options.lineScale;
+}
+
+QList<QRectF> Canvas::paneAreas(const QRectF& area) const
+{
+    const int n = 1 + static_cast<int>(m_controller->comparePanes().size());
+    if (n == 1)
+        return {area};
+    const sim::BoxSettings& box = m_controller->world().settings().box;
+    const double label = paneLabelHeight();
+    // Columns, rows or two by two: the grid whose cells fit the box largest.
+    std::vector<std::pair<int, int>> grids{{n, 1}, {1, n}};
+    if (n >= 3)
+        grids.emplace_back(2, (n + 1) / 2);
+    std::pair<int, int> best = grids.front();
+    double bestScale = -1.0;
+    for (const auto& [columns, rows] : grids) {
+        const QRectF cell(0, 0, area.width() / columns, area.height() / rows - label);
+        const double scale = ViewTransform::fit(box, cell, m_options.margin).scale();
+        if (scale > bestScale) {
+            bestScale = scale;
+            best = {columns, rows};
+        }
+    }
+    QList<QRectF> areas;
+    const double w = area.width() / best.first, h = area.height() / best.second;
+    for (int k = 0; k < n; ++k)
+        areas.append(QRectF(area.left() + (k % best.first) * w, area.top() + (k / best.first) * h, w, h));
+    return areas;
+}
+
+QRectF Canvas::liveArea() const
+{
+    return paneAreas(QRectF(rect())).front().adjusted(0, paneLabelHeight(), 0, 0);
+}
+
+void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std::vector<WorldPainter>& panes,
+                       qreal dpr) const
+{
+    const std::vector<SimulationController::Pane>& runs = m_controller->comparePanes();
+    if (runs.empty()) {
+        live.paint(p, area, m_controller->world(), m_options, dpr);
+        return;
+    }
+    const QList<QRectF> areas = paneAreas(area);
+    const double label = paneLabelHeight();
+    p.fillRect(area, QColor::fromRgb(m_colors.letterbox));
+    live.paint(p, areas[0].adjusted(0, label, 0, 0), m_controller->world(), m_options, dpr);
+    // The panes show the balls, the box and the paths; the panels (readout,
+    // totals, momenta) and the selection belong to the live run.
+    PaintOptions own = m_options;
+    own.overlays.readout = own.overlays.totals = own.overlays.momenta = own.overlays.forceSources = false;
+    own.overlays.impact = false;
+    own.selected = -1;
+    own.ghost = nullptr;
+    own.positions = nullptr;
+    own.collision = nullptr;
+    own.centreOfMassPath = nullptr;
+    panes.resize(runs.size());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        if (!runs[k].world)
+            continue;
+        own.trails = k < m_paneTrails.size() ? &m_paneTrails[k] : nullptr;
+        panes[k].setMarkedColor(live.markedColor());
+        panes[k].paint(p, areas[static_cast<qsizetype>(k) + 1].adjusted(0, label, 0, 0), *runs[k].world, own, dpr);
+    }
+    // The labels, over each run's strip.
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(15 * m_options.lineScale)));
+    font.setBold(true);
+    p.setFont(font);
+    p.setPen(QColor(0x1d, 0x22, 0x2c));
+    // The live run is named by its own values of what the panes change
+    // ("your run: clamp"), so the three labels read as one comparison.
+    QStringList liveValues;
+    std::vector<std::string> keys;
+    for (const SimulationController::Pane& pane : runs)
+        for (const auto& entry : pane.set)
+            if (std::find(keys.begin(), keys.end(), entry.first) == keys.end())
+                keys.push_back(entry.first);
+    for (const std::string& key : keys)
+        if (const sim::Parameter* row = sim::findParameter(key)) {
+            const double value = row->get(m_controller->world().settings());
+            if (row->type == sim::ParameterType::Choice) {
+                const auto names = row->choices();
+                const auto i = static_cast<std::size_t>(value);
+                if (i < names.size())
+                    liveValues << QString::fromLatin1(names[i].data(), static_cast<qsizetype>(names[i].size()));
+            } else if (row->type == sim::ParameterType::Boolean) {
+                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())),
+                                                   value != 0.0 ? tr("on") : tr("off"));
+            } else {
+                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())))
+                           .arg(value, 0, 'g', 4);
+            }
+        }
+    for (qsizetype k = 0; k < areas.size(); ++k) {
+        const QString text = k == 0 ? tr("your run: %1").arg(liveValues.join(QStringLiteral(", ")))
+                                    : runs[static_cast<std::size_t>(k - 1)].label;
+        p.drawText(QRectF(areas[k].left() + 10, areas[k].top(), areas[k].width() - 20, label),
+                   Qt::AlignLeft | Qt::AlignVCenter, text);
+    }
+}
+
+bool Canvas::showsStartHint() const
+{
+    return !m_controller->isPlaying() && m_controller->world().time() == 0.0;
+}
+
+// A lesson opens paused at t = 0: a banner at the bottom of the stage says
+// how to start it, large enough for the back of a classroom.
+void Canvas::paintStartHint(QPainter& p) const
+{
+    const QString text = tr("Paused at t = 0 · press Space to run");
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(18 * m_options.lineScale)));
+    font.setBold(true);
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double pad = 10.0 * m_options.lineScale;
+    const QSizeF size(fm.horizontalAdvance(text) + 2 * pad, fm.height() + pad);
+    const QRectF banner(QPointF(0.5 * (width() - size.width()), height() - size.height() - 2 * pad), size);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0x1d, 0x22, 0x2c, 220));
+    p.drawRoundedRect(banner, pad, pad);
+    p.setPen(Qt::white);
+    p.drawText(banner, Qt::AlignCenter, text);
+}
+
+void Canvas::paintEvent(QPaintEvent*)
+{
+    QElapsedTimer timer;
+    timer.start();
+    QPainter painter(this);
+    m_options.positions = m_controller->interpolatedPositions();
+    paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
+    if (m_ruler.shown)
+        paintRuler(painter);
+    if (showsStartHint())
+        paintStartHint(painter);
+    ++m_frames;
+    m_lastPaintMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+}
+
+void Canvas::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_measuring) {
+        m_ruler.to = widgetToWorld(event->position());
+        update();
+        return;
+    }
+    if (m_press.ball >= 0) { // pressed on a ball: taken once the pointer has moved far enough
+        if ((event->buttons() & Qt::LeftButton) &&
+            (event->position() - m_press.at).manhattanLength() >= QApplication::startDragDistance())
+            startDrag(event->position(), static_cast<qint64>(event->timestamp()));
+        return;
+    }
+    if (m_drag.ball >= 0) {
+        dragTo(event->position(), static_cast<qint64>(event->timestamp()));
+        return;
+    }
+    sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
+}
+
+void Canvas::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
+        // The ruler: measuring never touches the physics.
+        m_ruler.shown = true;
+        m_ruler.from = m_ruler.to = widgetToWorld(event->position());
+        m_measuring = true;
+        update();
+        return;
+    }
+    if (m_ruler.shown) {
+        m_ruler.shown = false; // a plain click puts the ruler away
+        update();
+    }
+    if (event->button() == Qt::LeftButton) {
+        const int ball = ballAt(event->position());
+        setSelectedBall(ball);
+        if (ball >= 0) {
+            // Select it and arm a grab; pointer forces stay off while the
+            // button is down on a ball, so only the hand may move it.
+            m_press = Press{ball, event->position(), static_cast<qint64>(event->timestamp())};
+            sendPointer(event->position(), false, false);
+            return;
+        }
+    }
+    sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
+}
+
+void Canvas::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (m_measuring && event->button() == Qt::LeftButton) {
+        m_ruler.to = widgetToWorld(event->position());
+        m_measuring = false;
+        update();
+        return;
+    }
+    if (event->button() == Qt::LeftButton && m_press.ball >= 0) { // a click: it selected, nothing else
+        m_press = Press();
+        sendPointer(event->position(), true, false);
+        return;
+    }
+    if (event->button() == Qt::LeftButton && m_drag.ball >= 0) {
+        const qint64 now = static_cast<qint64>(event->timestamp());
+        dragTo(event->position(), now);
+        // The throw: the pointer's mean velocity over the last kThrowWindowMs,
+        // from the last sample at or before the window's start (or the
+        // oldest) to the release. A pointer that stood still is a drop.
+        const auto& samples = m_drag.samples;
+        auto start = samples.begin();
+        for (auto it = samples.begin(); it != samples.end() && it->first <= now - kThrowWindowMs; ++it)
+            start = it;
+        const std::pair<qint64, sim::Vec2>& last = samples.back();
+        const double seconds = static_cast<double>(last.first - start->first) * 1e-3;
+        const sim::Vec2 velocity = seconds > 0.0 ? sim::Vec2((last.second - start->second) / seconds) : sim::Vec2(0, 0);
+        const int ball = m_drag.ball;
+        m_drag = Drag();
+        sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+        if (ball < balls.size())
+            balls.velocity.col(ball) = velocity;
+        m_previousVelocity.resize(0, 0); // the hand changed a velocity: no collision "before" from it
+        m_controller->notifyBallsChanged();
+    }
+    sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
+}
+
+void Canvas::leaveEvent(QEvent*)
+{
+    // Pointer wind and pointer forces stop when the pointer leaves (a held
+    // ball stays held: the pointer is grabbed while a button is down).
+    sendPointer(QPointF(), false, false);
+}
+
+void Canvas::startDrag(const QPointF& widget, qint64 timestampMs)
+{
+    // Take the ball where it was pressed: it keeps its offset from that point
+    // and catches up with the pointer.
+    const Press press = m_press;
+    m_press = Press();
+    if (press.ball >= m_controller->world().balls().size())
+        return;
+    m_drag.ball = press.ball;
+    m_drag.offset = sim::Vec2(m_controller->world().balls().position.col(press.ball)) - widgetToWorld(press.at);
+    m_drag.samples.clear();
+    dragTo(press.at, press.ms);
+    dragTo(widget, timestampMs);
+}
+
+void Canvas::dragTo(const QPointF& widget, qint64 timestampMs)
+{
+    const sim::Vec2 at = widgetToWorld(widget);
+    auto& samples = m_drag.samples;
+    if (!samples.empty() && timestampMs < samples.back().first)
+        timestampMs = samples.back().first; // timestamps never run backwards
+    samples.emplace_back(timestampMs, at);
+    // Keep one sample older than the throw window, for its start.
+    while (samples.size() > 2 && samples[1].first <= timestampMs - kThrowWindowMs)
+        samples.pop_front();
+    m_drag.target = at + m_drag.offset;
+    holdDraggedBall();
+    if (m_controller->isPlaying())
+        update(); // the next frame shows it to everyone
+    else
+        m_controller->notifyBallsChanged();
+}
+
+void Canvas::holdDraggedBall()
+{
+    sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+    if (m_drag.ball < 0 || m_drag.ball >= balls.size())
+        return;
+    balls.position.col(m_drag.ball) = m_drag.target;
+    balls.velocity.col(m_drag.ball).setZero();
+}
+
+void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
+{
+    sim::PointerInput input;
+    input.inside = inside;
+    input.pressed = inside && pressed;
+    input.position = inside ? widgetToWorld(widget) : m_controller->world().pointer().position;
+    m_controller->setPointer(input);
+    if (!m_controller->isPlaying() && m_controller->world().settings().pointer.enabled)
+        update();
+}
+
+void Canvas::onSceneChanged()
+{
+    m_drag = Drag();
+    m_press = Press();
+    m_trails.clear();
+    m_paneTrails.clear();
+    m_centreOfMassPath.clear();
+    m_apexes.clear();
+    m_apexVy.resize(0);
+    resetCollision();
+    if (m_options.selected >= m_controller->world().balls().size())
+        setSelectedBall(-1);
+    update();
+}
+
+void Canvas::resetCollision()
+{
+    m_collision = CollisionView();
+    m_previousVelocity.resize(0, 0);
+    m_previousTime = -1.0;
+    m_previousPartner = -1;
+}
+
+void Canvas::onStepped()
+{
+    const sim::World& world = m_controller->world();
+    if (m_drag.ball >= 0 && world.time() != m_previousTime)
+        holdDraggedBall(); // the steps of this frame moved it; the hand holds it
+    if (m_options.overlays.trails)
+        m_trails.record(world.balls(), world.time());
+    if (m_options.overlays.centreOfMass)
+        recordCentreOfMass();
+    if (m_options.overlays.apexes)
+        recordApexes();
+    if (m_options.overlays.trails) {
+        const auto& panes = m_controller->comparePanes();
+        m_paneTrails.resize(panes.size());
+        for (std::size_t k = 0; k < panes.size(); ++k)
+            if (panes[k].world)
+                m_paneTrails[k].record(panes[k].world->balls(), panes[k].world->time());
+    }
+    if (m_options.overlays.impact)
+        trackCollision();
+    m_previousTime = world.time();
+}
+
+void Canvas::trackCollision()
+{
+    const sim::World& world = m_controller->world();
+    const sim::BallState& balls = world.balls();
+    // Nothing selected: ball 0, as the readout does (a lesson on one
+    // collision shows it without a click).
+    const int i = m_options.selected >= 0 ? m_options.selected : 0;
+    if (i >= balls.size()) {
+        m_previousVelocity.resize(0, 0);
+        return;
+    }
+    if (world.time() == m_previousTime) { // no step (an edit while paused): only the state moved
+        m_previousVelocity = balls.velocity;
+        return;
+    }
+    // The selected ball's partner in this step's contacts (sorted by (a, b)).
+    int partner = -1;
+    for (const sim::Contact& c : world.contacts()) {
+        if (c.a == i || c.b == i) {
+            partner = c.a == i ? c.b : c.a;
+            break;
+        }
+    }
+    // A new contact, not one that lasts from the frame before (resting balls).
+    if (partner >= 0 && partner != m_previousPartner && m_previousVelocity.cols() == balls.size()) {
+        CollisionView v;
+        v.a = i;
+        v.b = partner;
+        v.positionA = balls.position.col(i);
+        v.positionB = balls.position.col(partner);
+        v.radiusA = balls.radius[i];
+        v.radiusB = balls.radius[partner];
+        v.beforeA = m_previousVelocity.col(i);
+        v.beforeB = m_previousVelocity.col(partner);
+        v.afterA = balls.velocity.col(i);
+        v.afterB = balls.velocity.col(partner);
+        v.time = world.time();
+        m_collision = v;
+    }
+    m_previousPartner = partner;
+    m_previousVelocity = balls.velocity;
+}
+
+} // namespace forcelab

@@ -1,0 +1,196 @@
+#pragma once
+// The central canvas: shows the controller's world (through WorldPainter) and
+// turns pointer events into the world's PointerInput. Setters store and call
+// update(); all drawing happens in paintEvent.
+//
+// Pointer: hovering attracts and pressing on empty space repels (when the
+// lesson has pointer forces), leaving stops both. Pressing on a ball selects
+// it and holds it: it follows the pointer (velocity 0) until release, then
+// flies off with the pointer's velocity over the last kThrowWindowMs.
+
+#include "ui/drawing/trail_recorder.h"
+#include "ui/drawing/view_transform.h"
+#include "ui/drawing/world_painter.h"
+
+#include "sim/world/types.h"
+
+#include <QImage>
+#include <QPainter>
+#include <QWidget>
+
+#include <deque>
+#include <vector>
+
+namespace forcelab {
+
+class SimulationController;
+
+class Canvas : public QWidget {
+    Q_OBJECT
+public:
+    /// `controller` is not owned and must outlive the canvas.
+    explicit Canvas(SimulationController* controller, QWidget* parent = nullptr);
+
+    void setOverlays(const Overlays& overlays);
+    const Overlays& overlays() const { return m_options.overlays; }
+    /// The ball the readout and arrows describe; -1 for none.
+    void setSelectedBall(int index);
+    int selectedBall() const { return m_options.selected; }
+    /// Colour of balls touching another ball (when the "colliding" overlay is on).
+    void setMarkedColor(const QColor& color);
+    QColor markedColor() const;
+    /// Thicker lines and larger text (presentation mode).
+    void setLineScale(double scale);
+    /// px of free space kept around the box (10; the stage view uses 4).
+    void setBoxMargin(double pixels);
+    /// Arrows scaled so a typical one is readable (WorldPainter::kArrowPixels).
+    void setAutoArrows(bool on);
+    /// Without auto arrows: the lesson's arrow scales times `factor`.
+    void setArrowFactor(double factor);
+    /// The theme's colours and marks (ui/window/theme.h).
+    void setColors(const CanvasColors& colors);
+    const CanvasColors& colors() const { return m_colors; }
+    /// The painter (what its last frame drew, for tests).
+    const WorldPainter& painter() const { return m_painter; }
+    /// The centre of mass's recorded path (world px, oldest first).
+    const std::vector<sim::Vec2>& centreOfMassPath() const { return m_centreOfMassPath; }
+    /// Points the centre-of-mass path keeps at most (then the older half goes).
+    static constexpr std::size_t kMaxCentrePoints = 4000;
+    const PaintOptions& paintOptions() const { return m_options; }
+
+    /// Switches the trails overlay (same as setOverlays with overlays.trails).
+    void setTrailsEnabled(bool enabled);
+    bool trailsEnabled() const { return m_options.overlays.trails; }
+    /// Trails behind every ball (up to TrailRecorder::kMaxBalls) or the selected ball only.
+    void setTrailScope(TrailRecorder::Scope scope);
+    TrailRecorder::Scope trailScope() const { return m_trails.scope(); }
+    const TrailRecorder& trails() const { return m_trails; }
+
+    /// The selected ball's (or, with none selected, ball 0's) most recent
+    /// collision for the "impact" overlay, or an invalid view. Tracked only
+    /// while that overlay is on; "before" is the state at the end of the
+    /// previous frame, so it is exactly the state before the step when a frame
+    /// takes one step (a new contact, not one lasting from the frame before).
+    const CollisionView& collisionView() const { return m_collision; }
+
+    /// The picture the canvas shows now, at its size and device pixel ratio
+    /// (for screenshots).
+    QImage renderImage() const;
+    /// The same picture laid out for `size` (logical px) at `devicePixelRatio`.
+    QImage renderImage(const QSize& size, qreal devicePixelRatio) const;
+
+    /// The ball held by the pointer, or -1.
+    int draggedBall() const { return m_drag.ball; }
+    /// A thrown ball gets the pointer's mean velocity over this many ms before release.
+    static constexpr qint64 kThrowWindowMs = 50;
+
+    /// Where the live run and each of the controller's compare panes are
+    /// drawn in `area` (widget px), the live run first: side by side, one
+    /// above the other or two by two, whichever gives the boxes the most
+    /// room. Each area has its label strip at the top. One area without panes.
+    QList<QRectF> paneAreas(const QRectF& area) const;
+    /// Height of a pane's label strip (px; 0 without panes).
+    double paneLabelHeight() const;
+
+    /// The current map between widget and world coordinates (letterboxed)
+    /// of the live run.
+    ViewTransform viewTransform() const;
+    QPointF worldToWidget(const sim::Vec2& world) const;
+    sim::Vec2 widgetToWorld(const QPointF& widget) const;
+    /// The ball under a widget point (the topmost one drawn), or -1.
+    int ballAt(const QPointF& widget) const;
+
+    /// The ruler: Shift + drag on the canvas measures a distance in the
+    /// world's px (and its angle); a plain click clears it.
+    struct Ruler {
+        bool shown = false;
+        sim::Vec2 from{0, 0}, to{0, 0}; ///< world px
+        double length() const { return (to - from).norm(); }
+        /// Degrees from the +x axis, counted anticlockwise as seen (y grows downwards).
+        double angle() const;
+    };
+    const Ruler& ruler() const { return m_ruler; }
+    /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
+    const std::vector<ApexMark>& apexes() const { return m_apexes; }
+    /// Balls whose tops are marked (the first ones of the world).
+    static constexpr int kMaxApexBalls = 50;
+
+    /// Frames painted so far and the cost of the last one (for the status bar).
+    qint64 framesPainted() const { return m_frames; }
+    double lastPaintMs() const { return m_lastPaintMs; }
+
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+    /// Whether the "press Space to run" banner is shown (paused at t = 0).
+    bool showsStartHint() const;
+
+signals:
+    void selectedBallChanged(int index);
+    /// The overlays changed (by a lesson, an action or a panel).
+    void overlaysChanged();
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    void paintStartHint(QPainter& p) const;
+    /// The live run and the compare panes into `area`.
+    void paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std::vector<WorldPainter>& panes,
+                   qreal dpr) const;
+    /// The live run's area of the widget (below its label strip when there are panes).
+    QRectF liveArea() const;
+    // A press on a ball selects it and only arms a grab: the ball is taken
+    // (held, then thrown or dropped) once the pointer has moved the platform's
+    // drag distance, so a click never touches the physics.
+    struct Press {
+        int ball = -1;     // the ball under the press, or −1
+        QPointF at;        // widget px
+        qint64 ms = 0;     // event time
+    };
+    struct Drag {
+        int ball = -1;
+        sim::Vec2 offset{0, 0}; // ball centre minus pointer, world px
+        sim::Vec2 target{0, 0}; // where the held ball is kept, world px
+        std::deque<std::pair<qint64, sim::Vec2>> samples; // (event ms, pointer world px)
+    };
+
+    void sendPointer(const QPointF& widget, bool inside, bool pressed);
+    void onSceneChanged();
+    void onStepped();
+    void trackCollision();
+    void holdDraggedBall();
+    void dragTo(const QPointF& widget, qint64 timestampMs);
+    void startDrag(const QPointF& widget, qint64 timestampMs);
+    void resetCollision();
+    void recordCentreOfMass();
+
+    SimulationController* m_controller; // not owned
+    WorldPainter m_painter;
+    PaintOptions m_options;
+    TrailRecorder m_trails;
+    std::vector<sim::Vec2> m_centreOfMassPath;
+    std::vector<ApexMark> m_apexes;
+    sim::VectorX m_apexVy; // each watched ball's vy at the last frame (px/s)
+    Ruler m_ruler;
+    bool m_measuring = false;
+    void recordApexes();
+    void paintRuler(QPainter& p) const;
+    CanvasColors m_colors;
+    std::vector<WorldPainter> m_panePainters; // one per compare pane (own sprite caches and path layers)
+    std::vector<TrailRecorder> m_paneTrails;  // the panes' paths, when the live run shows paths
+    CollisionView m_collision;
+    sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
+    double m_previousTime = -1.0;
+    int m_previousPartner = -1;
+    Drag m_drag;
+    Press m_press;
+    qint64 m_frames = 0;
+    double m_lastPaintMs = 0.0;
+};
+
+} // namespace forcelab

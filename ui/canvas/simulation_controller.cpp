@@ -1,0 +1,362 @@
+#include "ui/canvas/simulation_controller.h"
+
+#include "sim/world/parameters.h"
+
+#include "lessons/lesson_loader.h"
+#include "sim/studies/work_precision.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab {
+
+SimulationController::SimulationController(QObject* parent)
+    : QObject(parent)
+{
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(kFrameIntervalMs);
+    connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
+    m_clock.start();
+}
+
+std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
+{
+    if (auto error = m_world.reset(scene)) {
+        const QString message = errorLine(*error);
+        emit errorOccurred(message);
+        return message;
+    }
+    m_scene = scene;
+    startedScene();
+    return std::nullopt;
+}
+
+bool SimulationController::setSettings(const sim::WorldSettings& settings)
+{
+    if (auto error = m_world.setSettings(settings)) {
+        emit errorOccurred(errorLine(*error));
+        return false;
+    }
+    if (m_ghost && m_ghost->setSettings(ghostSettings(settings))) {
+        // The ghost cannot take them (e.g. exact with a changing force): it goes.
+        m_ghost.reset();
+        m_ghostMode = GhostMode::Off;
+        emit ghostChanged();
+    }
+    // The panes follow every live change but their own settings.
+    for (Pane& pane : m_panes)
+        if (pane.world)
+            if (auto error = pane.world->setSettings(paneSettings(settings, pane))) {
+                emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
+                pane.world.reset();
+            }
+    emit settingsChanged();
+    emit stepped(); // a paused canvas shows the change (walls, markers)
+    checkHalted();
+    return true;
+}
+
+// The world refuses to step while its motion would blow up. The controller
+// pauses, so the play button tells the truth, and reports the reason once.
+void SimulationController::checkHalted()
+{
+    const QString reason = m_world.halted() ? QString::fromStdString(*m_world.halted()) : QString();
+    if (reason == m_haltReason)
+        return;
+    m_haltReason = reason;
+    if (!reason.isEmpty())
+        pause();
+    emit haltedChanged(reason);
+}
+
+void SimulationController::setPointer(const sim::PointerInput& pointer)
+{
+    m_world.setPointer(pointer);
+    if (m_ghost)
+        m_ghost->setPointer(pointer);
+}
+
+void SimulationController::setMaxStepsPerFrame(int steps)
+{
+    m_maxStepsPerFrame = std::max(1, steps);
+}
+
+int SimulationController::advance(double elapsedSeconds)
+{
+    const double dt = m_world.settings().time.dt;
+    if (!(elapsedSeconds > 0.0) || !(dt > 0.0))
+        return 0;
+    m_accumulator += elapsedSeconds * m_timeScale;
+    // Whole steps that fit; what is left (< dt) waits for the next frame.
+    const double wanted = std::floor(m_accumulator / dt);
+    int steps = static_cast<int>(std::min(wanted, static_cast<double>(m_maxStepsPerFrame)));
+    m_accumulator -= steps * dt;
+    if (wanted > steps) {
+        // More than the cap: drop the whole steps that did not fit, keep the fraction.
+        const double dropped = (wanted - steps) * dt;
+        m_accumulator = std::max(0.0, m_accumulator - dropped);
+        m_droppedTime += dropped;
+        emit timeDropped(dropped);
+    }
+    // Slow motion draws between the last two steps: keep where the last one started.
+    const bool slow = m_timeScale < 1.0;
+    for (int k = 0; k < steps && !m_world.halted(); ++k) {
+        if (slow && k == steps - 1)
+            m_previous = m_world.balls().position;
+        m_world.step();
+    }
+    stepGhost();
+    if (steps > 0)
+        emit stepped();
+    else if (m_playing && m_timeScale < 1.0)
+        emit framePassed();
+    checkHalted();
+    return steps;
+}
+
+void SimulationController::tick()
+{
+    // Real time since the last frame, measured, not assumed from the interval.
+    const double elapsed = static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+    m_clock.restart();
+    advance(elapsed);
+}
+
+void SimulationController::play()
+{
+    setPlaying(true);
+}
+
+void SimulationController::pause()
+{
+    setPlaying(false);
+}
+
+void SimulationController::togglePlay()
+{
+    setPlaying(!m_playing);
+}
+
+void SimulationController::setPlaying(bool playing)
+{
+    if (playing == m_playing)
+        return;
+    m_playing = playing;
+    updateTimer();
+    emit playingChanged(m_playing);
+}
+
+const sim::Matrix2X* SimulationController::interpolatedPositions()
+{
+    const sim::Matrix2X& now = m_world.balls().position;
+    const double dt = m_world.settings().time.dt;
+    if (!m_playing || !(m_timeScale < 1.0) || m_previous.cols() != now.cols() || !(dt > 0.0))
+        return nullptr;
+    const double alpha = std::clamp(m_accumulator / dt, 0.0, 1.0);
+    m_interpolated = m_previous + alpha * (now - m_previous);
+    return &m_interpolated;
+}
+
+void SimulationController::stepOnce()
+{
+    pause();
+    m_accumulator = 0.0;
+    m_previous.resize(2, 0);
+    m_world.step();
+    stepGhost();
+    emit stepped();
+    checkHalted();
+}
+
+bool SimulationController::respawn(const sim::SpawnSettings& spawn)
+{
+    sim::Scene scene = m_scene;
+    scene.settings = m_world.settings();
+    scene.spawn = spawn;
+    if (static_cast<double>(scene.balls.size()) + spawn.count > sim::kMaxBalls) {
+        emit errorOccurred(tr("spawn.count: %1 listed + %2 random balls is more than the limit of %3")
+                               .arg(scene.balls.size()).arg(spawn.count).arg(sim::kMaxBalls));
+        return false;
+    }
+    if (auto error = m_world.reset(scene)) {
+        emit errorOccurred(errorLine(*error));
+        return false;
+    }
+    m_spawn = spawn;
+    m_accumulator = 0.0;
+    m_clock.restart();
+    restartGhost();
+    restartPanes();
+    emit sceneChanged();
+    emit stepped();
+    return true;
+}
+
+void SimulationController::reset()
+{
+    if (auto error = m_world.reset(m_scene)) {
+        emit errorOccurred(errorLine(*error));
+        return;
+    }
+    startedScene();
+}
+
+// The world has just been started on m_scene (a new scene or a reset): the
+// frame clock, the ghost and the views start over, and a scene that is
+// unstable from its first step is reported at once.
+void SimulationController::startedScene()
+{
+    m_spawn = m_scene.spawn;
+    m_accumulator = 0.0;
+    m_previous.resize(2, 0);
+    m_droppedTime = 0.0;
+    m_clock.restart();
+    restartGhost();
+    restartPanes();
+    emit sceneChanged();
+    emit settingsChanged();
+    emit stepped();
+    checkHalted();
+}
+
+void SimulationController::setTimeScale(double scale)
+{
+    if (!(scale >= kMinTimeScale && scale <= kMaxTimeScale)) {
+        emit errorOccurred(tr("time scale: %1 is outside %2 to %3").arg(scale).arg(kMinTimeScale).arg(kMaxTimeScale));
+        emit timeScaleChanged(m_timeScale);
+        return;
+    }
+    if (scale == m_timeScale)
+        return;
+    m_timeScale = scale;
+    m_previous.resize(2, 0); // kept only in slow motion: what is there may be from an earlier slow run
+    emit timeScaleChanged(m_timeScale);
+}
+
+void SimulationController::setSuspended(bool suspended)
+{
+    if (suspended == m_suspended)
+        return;
+    m_suspended = suspended;
+    updateTimer();
+}
+
+void SimulationController::updateTimer()
+{
+    const bool run = m_playing && !m_suspended;
+    if (run && !m_timer.isActive()) {
+        // Time spent paused or hidden is not simulated.
+        m_clock.restart();
+        m_accumulator = 0.0;
+        m_timer.start();
+    } else if (!run && m_timer.isActive()) {
+        m_timer.stop();
+    }
+}
+
+void SimulationController::setComparePanes(const std::vector<ComparePane>& panes)
+{
+    m_panes.clear();
+    for (const ComparePane& p : panes)
+        m_panes.push_back({p.label, p.set, nullptr});
+    restartPanes();
+    emit ghostChanged();
+}
+
+sim::WorldSettings SimulationController::paneSettings(const sim::WorldSettings& live, const Pane& pane)
+{
+    sim::WorldSettings s = live;
+    for (const auto& [key, value] : pane.set)
+        if (const sim::Parameter* row = sim::findParameter(key))
+            row->set(s, value);
+    return s;
+}
+
+// The panes start from the live world's state now (its balls and time 0 of
+// their own), like the twin ghost.
+void SimulationController::restartPanes()
+{
+    for (Pane& pane : m_panes) {
+        pane.world.reset();
+        sim::Scene scene = m_scene;
+        scene.settings = paneSettings(m_world.settings(), pane);
+        auto world = std::make_unique<sim::World>();
+        if (auto error = world->reset(scene)) {
+            emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
+            continue;
+        }
+        world->mutableBalls() = m_world.balls();
+        pane.world = std::move(world);
+    }
+    m_paneOffset = m_world.time();
+}
+
+void SimulationController::setGhost(GhostMode mode, sim::IntegratorKind integrator, int divider)
+{
+    m_ghostMode = mode;
+    m_ghostIntegrator = integrator;
+    m_ghostDivider = std::max(1, divider);
+    restartGhost();
+}
+
+sim::WorldSettings SimulationController::ghostSettings(const sim::WorldSettings& live) const
+{
+    sim::WorldSettings s = live;
+    if (m_ghostMode == GhostMode::Compare) {
+        s.time.integrator = m_ghostIntegrator;
+        s.time.dt = live.time.dt / m_ghostDivider;
+    }
+    return s;
+}
+
+// The ghost starts from the live world's state now: the same balls (the twin's
+// nudged), the same settings but its own integrator, its own clock at 0.
+void SimulationController::restartGhost()
+{
+    m_ghost.reset();
+    if (m_ghostMode != GhostMode::Off) {
+        sim::Scene scene;
+        scene.settings = ghostSettings(m_world.settings());
+        auto ghost = std::make_unique<sim::World>();
+        if (auto error = ghost->reset(scene)) {
+            emit errorOccurred(tr("ghost: %1").arg(errorLine(*error)));
+            m_ghostMode = GhostMode::Off;
+        } else {
+            sim::BallState& balls = ghost->mutableBalls();
+            balls = m_world.balls();
+            if (m_ghostMode == GhostMode::Twin)
+                balls.position.row(0).array() += kTwinOffset;
+            ghost->setPointer(m_world.pointer());
+            m_ghost = std::move(ghost);
+            m_ghostOffset = m_world.time();
+        }
+    }
+    emit ghostChanged();
+}
+
+// Steps the ghost until it has reached the live world's time (within half of
+// its step: with a step of dt / divider it lands on it exactly).
+void SimulationController::stepGhost()
+{
+    for (Pane& pane : m_panes) {
+        if (!pane.world)
+            continue;
+        const double target = m_world.time() - m_paneOffset;
+        const double h = pane.world->settings().time.dt;
+        while (!pane.world->halted() && pane.world->time() < target - 0.5 * h)
+            pane.world->step();
+    }
+    if (!m_ghost)
+        return;
+    const double target = m_world.time() - m_ghostOffset;
+    const double h = m_ghost->settings().time.dt;
+    while (!m_ghost->halted() && m_ghost->time() < target - 0.5 * h)
+        m_ghost->step();
+}
+
+double SimulationController::ghostSeparation() const
+{
+    return m_ghost ? sim::largestSeparation(m_world, *m_ghost) : 0.0;
+}
+
+} // namespace forcelab

@@ -1,0 +1,103 @@
+#include "ui/controls/parameter_commands.h"
+
+#include "ui/canvas/simulation_controller.h"
+
+namespace forcelab {
+
+SettingsCommand::SettingsCommand(SimulationController* controller, const QString& text,
+                                 const sim::WorldSettings& before, const sim::WorldSettings& after, int mergeId,
+                                 int session)
+    : QUndoCommand(text)
+    , m_controller(controller)
+    , m_before(before)
+    , m_after(after)
+    , m_mergeId(mergeId)
+    , m_session(session)
+{
+}
+
+void SettingsCommand::undo()
+{
+    m_controller->setSettings(m_before);
+}
+
+void SettingsCommand::redo()
+{
+    if (m_applied) {
+        m_applied = false;
+        return;
+    }
+    m_controller->setSettings(m_after);
+}
+
+bool SettingsCommand::mergeWith(const QUndoCommand* other)
+{
+    const auto* o = static_cast<const SettingsCommand*>(other);
+    if (o->m_mergeId != m_mergeId || o->m_session != m_session)
+        return false;
+    m_after = o->m_after;
+    return true;
+}
+
+SpawnCommand::SpawnCommand(SimulationController* controller, const QString& text, const sim::SpawnSettings& before,
+                           const sim::SpawnSettings& after)
+    : QUndoCommand(text)
+    , m_controller(controller)
+    , m_before(before)
+    , m_after(after)
+{
+}
+
+void SpawnCommand::undo()
+{
+    m_controller->respawn(m_before);
+}
+
+void SpawnCommand::redo()
+{
+    if (m_applied) {
+        m_applied = false;
+        return;
+    }
+    m_controller->respawn(m_after);
+}
+
+TimeScaleCommand::TimeScaleCommand(SimulationController* controller, double before, double after, int session)
+    : QUndoCommand(QObject::tr("Change speed to %1×").arg(after))
+    , m_controller(controller)
+    , m_before(before)
+    , m_after(after)
+    , m_session(session)
+{
+}
+
+void TimeScaleCommand::undo()
+{
+    m_controller->setTimeScale(m_before);
+}
+
+void TimeScaleCommand::redo()
+{
+    if (m_applied) {
+        m_applied = false;
+        return;
+    }
+    m_controller->setTimeScale(m_after);
+}
+
+int TimeScaleCommand::id() const
+{
+    return m_session >= 0 ? kId : -1;
+}
+
+bool TimeScaleCommand::mergeWith(const QUndoCommand* other)
+{
+    const auto* o = static_cast<const TimeScaleCommand*>(other);
+    if (o->m_session != m_session)
+        return false;
+    m_after = o->m_after;
+    setText(o->text());
+    return true;
+}
+
+} // namespace forcelab

@@ -1,0 +1,78 @@
+#pragma once
+// Undo steps of the Parameters panel. Each holds the whole state before and
+// after one edit (the settings struct, the spawn settings or the time scale)
+// and pushes it through the controller, so undo and redo go through the same
+// checks as the edit itself. Consecutive moves of one slider during one drag
+// merge into a single step.
+
+#include "sim/world/scene.h"
+#include "sim/world/world_settings.h"
+
+#include <QUndoCommand>
+
+namespace forcelab {
+
+class SimulationController;
+
+/// A change of the world's settings.
+class SettingsCommand : public QUndoCommand {
+public:
+    /// `mergeId` ≥ 0 merges with the previous command of the same id and
+    /// `session` (one slider drag); -1 never merges. The edit has already been
+    /// applied: the first redo (from QUndoStack::push) does nothing.
+    SettingsCommand(SimulationController* controller, const QString& text, const sim::WorldSettings& before,
+                    const sim::WorldSettings& after, int mergeId = -1, int session = 0);
+
+    void undo() override;
+    void redo() override;
+    int id() const override { return m_mergeId; }
+    bool mergeWith(const QUndoCommand* other) override;
+
+    const sim::WorldSettings& before() const { return m_before; }
+    const sim::WorldSettings& after() const { return m_after; }
+
+private:
+    SimulationController* m_controller; // not owned
+    sim::WorldSettings m_before;
+    sim::WorldSettings m_after;
+    int m_mergeId;
+    int m_session;
+    bool m_applied = true;
+};
+
+/// A new number of random balls (or other spawn settings): the world restarts.
+class SpawnCommand : public QUndoCommand {
+public:
+    SpawnCommand(SimulationController* controller, const QString& text, const sim::SpawnSettings& before,
+                 const sim::SpawnSettings& after);
+    void undo() override;
+    void redo() override;
+
+private:
+    SimulationController* m_controller; // not owned
+    sim::SpawnSettings m_before;
+    sim::SpawnSettings m_after;
+    bool m_applied = true;
+};
+
+/// A new time scale (slow motion, fast forward).
+class TimeScaleCommand : public QUndoCommand {
+public:
+    TimeScaleCommand(SimulationController* controller, double before, double after, int session = -1);
+    void undo() override;
+    void redo() override;
+    int id() const override;
+    bool mergeWith(const QUndoCommand* other) override;
+
+    /// The merge id of time-scale changes (distinct from every settings control).
+    static constexpr int kId = 1'000'000;
+
+private:
+    SimulationController* m_controller; // not owned
+    double m_before;
+    double m_after;
+    int m_session;
+    bool m_applied = true;
+};
+
+} // namespace forcelab

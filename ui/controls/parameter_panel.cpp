@@ -1,0 +1,658 @@
+#include "ui/controls/parameter_panel.h"
+
+#include "ui/controls/number_control.h"
+#include "ui/controls/parameter_commands.h"
+#include "ui/canvas/simulation_controller.h"
+
+#include "lessons/lesson_controls.h"
+#include "sim/world/names.h"
+#include "sim/world/parameters.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpressionValidator>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtDebug>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace forcelab {
+
+namespace {
+
+// Shown whatever the lesson lists: how fast the film runs.
+const QStringList kAlwaysShown{QStringLiteral("time_scale")};
+
+QString qs(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+} // namespace
+
+ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent)
+    : QWidget(parent)
+    , m_controller(controller)
+{
+    setObjectName(QStringLiteral("parameterPanel"));
+    m_undoStack = new QUndoStack(this);
+    m_undoStack->setObjectName(QStringLiteral("parameterUndoStack"));
+
+    auto* outer = new QVBoxLayout(this);
+    m_showAllBox = new QCheckBox(tr("Show all parameters"), this);
+    m_showAllBox->setObjectName(QStringLiteral("showAllCheck"));
+    m_showAllBox->setToolTip(tr("Besides the lesson's own controls, show every setting of the world"));
+    connect(m_showAllBox, &QCheckBox::toggled, this, &ParameterPanel::setShowAll);
+    outer->addWidget(m_showAllBox);
+    m_sectionsLayout = new QVBoxLayout;
+    m_sectionsLayout->setContentsMargins(0, 0, 0, 0);
+    outer->addLayout(m_sectionsLayout);
+    m_hiddenNote = new QLabel(this);
+    m_hiddenNote->setObjectName(QStringLiteral("hiddenNote"));
+    m_hiddenNote->setWordWrap(true);
+    m_hiddenNote->setStyleSheet(QStringLiteral("color: #5a6270"));
+    outer->addWidget(m_hiddenNote);
+    outer->addStretch(1);
+
+    // Every setting is a row of sim/world/parameters.h: its label, unit, range,
+    // slider, help and accessors come from there. A section's tick box is its
+    // model's "enabled" row.
+    addModelSection(QStringLiteral("gravity"), tr("Gravity"));
+    addParameter("models.gravity.x");
+    addParameter("models.gravity.y");
+
+    addSection(QStringLiteral("walls"), tr("Box and walls"));
+    addParameter("world.width");
+    addParameter("world.height");
+    addWallSides();
+    addParameter("world.wall_model");
+    addParameter("world.restitution");
+    addParameter("world.middle_wall");
+    addParameter("world.centre_only");
+
+    addModelSection(QStringLiteral("drag"), tr("Drag"));
+    addParameter("models.drag.law");
+    NumberControl* k = addParameter<NumberControl>("models.drag.k");
+    addParameter("models.drag.scale");
+    // The unit of k follows the law: a = -k v (1/s) or a = -k |v| v (1/px).
+    m_refreshers.push_back([this, k] {
+        const bool linear = m_controller->world().settings().drag.law == sim::DragLaw::Linear;
+        k->spinBox()->setSuffix(linear ? QStringLiteral(" 1/s") : QStringLiteral(" 1/px"));
+    });
+
+    addSection(QStringLiteral("wind"), tr("Wind"));
+    for (const char* key : {"models.wind.mode", "models.wind.strength", "models.wind.scale", "models.wind.smoothed_step",
+                            "models.wind.frequency", "models.wind.compare"})
+        addParameter(key);
+
+    addModelSection(QStringLiteral("random_accel"), tr("Random acceleration"));
+    addParameter("models.random_accel.fixed");
+    addParameter("models.random_accel.strength");
+
+    addModelSection(QStringLiteral("point"), tr("Point force"));
+    for (const char* key : {"models.point.kind", "models.point.x", "models.point.y", "models.point.strength",
+                            "models.point.max_accel", "models.point.scale"})
+        addParameter(key);
+
+    addModelSection(QStringLiteral("spring"), tr("Spring"));
+    addParameter("models.spring.k");
+    addParameter("models.spring.x");
+    addParameter("models.spring.y");
+
+    addModelSection(QStringLiteral("mutual_gravity"), tr("Gravity between balls"));
+    addParameter("models.mutual_gravity.G");
+    addParameter("models.mutual_gravity.softening");
+
+    addModelSection(QStringLiteral("homing"), tr("Homing"));
+    addParameter("models.homing.strength");
+
+    addModelSection(QStringLiteral("pointer"), tr("Pointer force"));
+    addParameter("models.pointer.strength");
+    addParameter("models.pointer.max_accel");
+
+    addModelSection(QStringLiteral("speed_limit"), tr("Speed limit"));
+    addParameter("models.speed_limit.max");
+
+    addSection(QStringLiteral("collisions"), tr("Collisions"));
+    for (const char* key : {"models.collisions.detection", "models.collisions.response",
+                            "models.collisions.restitution", "models.collisions.continuous",
+                            "models.collisions.resting"})
+        addParameter(key);
+
+    addSection(QStringLiteral("time"), tr("Time"));
+    addTimeScale();
+    for (const char* key : {"time.integrator", "time.dt", "time.substeps", "time.tolerance", "time.per_frame",
+                            "time.step_past_close_passes"})
+        addParameter(key);
+    addSeed();
+
+    // A model the panel does not place above gets a section of its own, with
+    // its rows in table order: a new model needs nothing here.
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = qs(p.key);
+        if (!key.startsWith(QStringLiteral("models.")))
+            continue;
+        const QString model = key.section(QLatin1Char('.'), 1, 1);
+        const bool placed = std::any_of(m_sections.begin(), m_sections.end(),
+                                        [&](const Section& section) { return section.key == model; });
+        if (key.endsWith(QStringLiteral(".enabled"))) {
+            if (!placed)
+                addModelSection(model, qs(p.label));
+        } else if (m_sections.back().key == model && rowIndex(qs(p.control)) < 0) {
+            addParameter(p.key);
+        }
+    }
+
+    addSection(QStringLiteral("balls"), tr("Balls"));
+    addBallCount();
+    addFullyInside();
+
+    connect(m_controller, &SimulationController::settingsChanged, this, &ParameterPanel::refresh);
+    connect(m_controller, &SimulationController::sceneChanged, this, &ParameterPanel::refresh);
+    connect(m_controller, &SimulationController::timeScaleChanged, this, &ParameterPanel::refresh);
+    updateVisibility();
+    refresh();
+}
+
+void ParameterPanel::refresh()
+{
+    m_refreshing = true;
+    for (const auto& refresher : m_refreshers)
+        refresher();
+    m_refreshing = false;
+}
+
+QStringList ParameterPanel::rowsForControl(const QString& control)
+{
+    return lessons::controlRows().value(control);
+}
+
+void ParameterPanel::setLessonControls(const QStringList& controls)
+{
+    m_controls.clear();
+    for (const QString& name : controls) {
+        if (!lessons::controlRows().contains(name)) {
+            qWarning("Parameters: the lesson control \"%s\" has no widgets here; ignored", qPrintable(name));
+            continue;
+        }
+        m_controls.append(name);
+    }
+    updateVisibility();
+}
+
+void ParameterPanel::setShowAll(bool on)
+{
+    m_showAll = on;
+    {
+        const QSignalBlocker block(m_showAllBox);
+        m_showAllBox->setChecked(on);
+    }
+    updateVisibility();
+}
+
+int ParameterPanel::rowIndex(const QString& key) const
+{
+    for (std::size_t i = 0; i < m_rows.size(); ++i)
+        if (m_rows[i].key == key)
+            return static_cast<int>(i);
+    return -1;
+}
+
+void ParameterPanel::updateVisibility()
+{
+    // The lesson's rows, in the order its controls name them; then the rest.
+    QStringList lessonRows;
+    for (const QString& control : m_controls)
+        for (const QString& row : lessons::controlRows().value(control))
+            if (!lessonRows.contains(row))
+                lessonRows.append(row);
+    const bool everything = m_showAll || m_controls.isEmpty();
+
+    // Sections in order of their first lesson row, then the others in panel order.
+    QStringList sectionOrder;
+    for (const QString& row : lessonRows)
+        if (const int i = rowIndex(row); i >= 0 && !sectionOrder.contains(m_rows[std::size_t(i)].section))
+            sectionOrder.append(m_rows[std::size_t(i)].section);
+    for (const QString& always : kAlwaysShown)
+        if (const int i = rowIndex(always); i >= 0 && !sectionOrder.contains(m_rows[std::size_t(i)].section))
+            sectionOrder.append(m_rows[std::size_t(i)].section);
+    for (const Section& section : m_sections)
+        if (!sectionOrder.contains(section.key))
+            sectionOrder.append(section.key);
+
+    int hidden = 0;
+    for (const Row& row : m_rows) {
+        const bool shown = everything || lessonRows.contains(row.key) || kAlwaysShown.contains(row.key);
+        hidden += shown ? 0 : 1;
+        for (const Section& section : m_sections)
+            if (section.key == row.section)
+                section.form->setRowVisible(row.field, shown);
+    }
+    for (const Section& section : m_sections) {
+        bool any = false;
+        for (const Row& row : m_rows)
+            any = any || (row.section == section.key &&
+                          (everything || lessonRows.contains(row.key) || kAlwaysShown.contains(row.key)));
+        section.box->setVisible(any);
+        m_sectionsLayout->removeWidget(section.box);
+    }
+    for (const QString& key : sectionOrder)
+        for (const Section& section : m_sections)
+            if (section.key == key)
+                m_sectionsLayout->addWidget(section.box);
+
+    m_showAllBox->setVisible(!m_controls.isEmpty());
+    m_hiddenNote->setText(hidden > 0 ? tr("%n more setting(s) under \"Show all parameters\".", nullptr, hidden)
+                                     : QString());
+    m_hiddenNote->setVisible(hidden > 0);
+}
+
+QStringList ParameterPanel::rowKeys() const
+{
+    QStringList keys;
+    for (const Row& row : m_rows)
+        keys.append(row.key);
+    return keys;
+}
+
+QStringList ParameterPanel::visibleRows() const
+{
+    // In the order shown: by section position in the layout, then row order.
+    QStringList keys;
+    for (int i = 0; i < m_sectionsLayout->count(); ++i) {
+        QWidget* box = m_sectionsLayout->itemAt(i)->widget();
+        for (const Section& section : m_sections) {
+            if (section.box != box || box->isHidden())
+                continue;
+            for (const Row& row : m_rows)
+                if (row.section == section.key && section.form->isRowVisible(row.field))
+                    keys.append(row.key);
+        }
+    }
+    return keys;
+}
+
+QStringList ParameterPanel::visibleSections() const
+{
+    QStringList keys;
+    for (int i = 0; i < m_sectionsLayout->count(); ++i) {
+        QWidget* box = m_sectionsLayout->itemAt(i)->widget();
+        for (const Section& section : m_sections)
+            if (section.box == box && !box->isHidden())
+                keys.append(section.key);
+    }
+    return keys;
+}
+
+void ParameterPanel::edit(const QString& key, const std::function<void(Settings&)>& change, bool dragging)
+{
+    if (m_refreshing)
+        return;
+    const Settings before = m_controller->world().settings();
+    Settings after = before;
+    change(after);
+    // On success the controller's settingsChanged refreshes every control;
+    // on failure the error is signalled and the control goes back.
+    if (!m_controller->setSettings(after)) {
+        refresh();
+        return;
+    }
+    const int index = rowIndex(key);
+    const QString label = index >= 0 ? m_rows[std::size_t(index)].label : key;
+    m_undoStack->push(new SettingsCommand(m_controller, tr("Change %1").arg(label), before, after,
+                                          dragging ? index : -1, m_dragSession));
+}
+
+void ParameterPanel::editSpawn(const QString& text, const sim::SpawnSettings& spawn)
+{
+    if (m_refreshing)
+        return;
+    const sim::SpawnSettings before = m_controller->spawn();
+    if (!m_controller->respawn(spawn)) {
+        refresh();
+        return;
+    }
+    m_undoStack->push(new SpawnCommand(m_controller, text, before, spawn));
+}
+
+QGroupBox* ParameterPanel::addSection(const QString& key, const QString& title,
+                                      std::function<bool(const Settings&)> enabled,
+                                      std::function<void(Settings&, bool)> setEnabled)
+{
+    auto* box = new QGroupBox(title, this);
+    box->setObjectName(key == QStringLiteral("mutual_gravity") ? QStringLiteral("mutualGravityGroup")
+                       : key == QStringLiteral("speed_limit")  ? QStringLiteral("speedLimitGroup")
+                       : key == QStringLiteral("random_accel") ? QStringLiteral("randomAccelGroup")
+                                                               : key + QStringLiteral("Group"));
+    auto* form = new QFormLayout(box);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // In a narrow dock a label goes above its field rather than cutting it.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    if (enabled && setEnabled) {
+        // A checkable section: the model is on when ticked; its fields are
+        // greyed out while it is off.
+        box->setCheckable(true);
+        box->setToolTip(tr("Tick to switch %1 on").arg(title.toLower()));
+        connect(box, &QGroupBox::toggled, this,
+                [this, key, setEnabled](bool on) { edit(key, [&](Settings& s) { setEnabled(s, on); }); });
+        m_refreshers.push_back([this, box, enabled] {
+            const QSignalBlocker block(box);
+            box->setChecked(enabled(m_controller->world().settings()));
+        });
+    }
+    m_sections.push_back(Section{key, box, form});
+    m_sectionsLayout->addWidget(box);
+    m_currentSection = key;
+    return box;
+}
+
+void ParameterPanel::addRow(const QString& key, const QString& label, QWidget* field, const QString& tip)
+{
+    Section& section = m_sections.back();
+    auto* text = new QLabel(label, section.box);
+    text->setBuddy(field);
+    if (!tip.isEmpty()) {
+        text->setToolTip(tip);
+        field->setToolTip(tip);
+    }
+    section.form->addRow(text, field);
+    QString plain = label;
+    plain.remove(QStringLiteral("<sub>")).remove(QStringLiteral("</sub>"));
+    // A screen reader names each part of the row after its label.
+    field->setAccessibleName(plain);
+    if (auto* number = qobject_cast<NumberControl*>(field)) {
+        number->slider()->setAccessibleName(tr("%1, slider").arg(plain));
+        number->spinBox()->setAccessibleName(tr("%1, value").arg(plain));
+    }
+    m_rows.push_back(Row{key, section.key, section.box->title() + QLatin1Char(' ') + plain.toLower(), field});
+}
+
+QGroupBox* ParameterPanel::addModelSection(const QString& model, const QString& title)
+{
+    const sim::Parameter* on = sim::findParameter("models." + model.toStdString() + ".enabled");
+    Q_ASSERT(on);
+    return addSection(model, title, [on](const Settings& s) { return on->get(s) != 0.0; },
+                      [on](Settings& s, bool enabled) { on->set(s, enabled ? 1.0 : 0.0); });
+}
+
+QString ParameterPanel::objectStem(std::string_view control)
+{
+    QString out;
+    bool upper = false;
+    for (const char c : control) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        out += upper ? QChar(c).toUpper() : QChar(c);
+        upper = false;
+    }
+    return out;
+}
+
+QWidget* ParameterPanel::addParameterWidget(std::string_view key)
+{
+    const sim::Parameter* row = sim::findParameter(key);
+    Q_ASSERT_X(row, "ParameterPanel", "a key that is not in sim/world/parameters.cpp");
+    const sim::Parameter& p = *row;
+    const QString control = qs(p.control);
+    const QString stem = objectStem(p.control);
+    const QString label = qs(p.label);
+    auto get = [&p](const Settings& s) { return p.get(s); };
+    switch (p.type) {
+    case sim::ParameterType::Boolean:
+        return addSwitch(control, stem + QStringLiteral("Check"), label, qs(p.help),
+                         [get](const Settings& s) { return get(s) != 0.0; },
+                         [&p](Settings& s, bool on) { p.set(s, on ? 1.0 : 0.0); });
+    case sim::ParameterType::Choice: {
+        QComboBox* combo = addChoice(control, stem + QStringLiteral("Combo"), label, p.choices(),
+                                     [get](const Settings& s) { return static_cast<int>(get(s)); },
+                                     [&p](Settings& s, int i) { p.set(s, i); });
+        combo->setToolTip(qs(p.help));
+        return combo;
+    }
+    case sim::ParameterType::Number:
+    case sim::ParameterType::Integer:
+        break;
+    }
+    // dt reads better in ms; everything else in the row's own unit.
+    const bool ms = key == "time.dt";
+    const double toShown = ms ? 1e3 : 1.0;
+    Number spec;
+    spec.min = p.lo * toShown;
+    spec.max = p.hi * toShown;
+    spec.sliderMin = p.sliderLo * toShown;
+    spec.sliderMax = p.sliderHi * toShown;
+    spec.log = p.scale == sim::SliderScale::Log;
+    // Whole numbers; four significant figures across decades; otherwise
+    // decimals that suit the slider's span.
+    spec.decimals = p.type == sim::ParameterType::Integer ? 0 : spec.log ? 4 : p.sliderHi - p.sliderLo <= 1.0 ? 3 : 1;
+    spec.significant = p.type == sim::ParameterType::Number && spec.log ? 4 : 0;
+    spec.suffix = ms ? QStringLiteral(" ms") : p.unit.empty() ? QString() : QLatin1Char(' ') + qs(p.unit);
+    spec.toShown = toShown;
+    const bool whole = p.type == sim::ParameterType::Integer;
+    NumberControl* number = addNumber(control, stem, label, spec, get, [&p, whole](Settings& s, double v) {
+        p.set(s, whole ? static_cast<double>(std::lround(v)) : v);
+    });
+    number->setToolTip(qs(p.help));
+    return number;
+}
+
+NumberControl* ParameterPanel::addNumber(const QString& key, const QString& objectName, const QString& label,
+                                         const Number& spec, std::function<double(const Settings&)> get,
+                                         std::function<void(Settings&, double)> set)
+{
+    NumberControl::Spec s;
+    s.min = spec.min;
+    s.max = spec.max;
+    s.sliderMin = spec.sliderMin;
+    s.sliderMax = spec.sliderMax;
+    s.scale = spec.log ? NumberControl::Scale::Log : NumberControl::Scale::Linear;
+    s.decimals = spec.decimals;
+    s.significant = spec.significant;
+    s.suffix = spec.suffix;
+    auto* control = new NumberControl(objectName, s, m_sections.back().box);
+    const double toShown = spec.toShown;
+    auto apply = [this, key, set, toShown](double shown, bool dragging) {
+        edit(key, [&](Settings& st) { set(st, shown / toShown); }, dragging);
+    };
+    connect(control, &NumberControl::valueEdited, this, apply);
+    // Typed outside the range: passed on, so the world refuses it with its message.
+    connect(control, &NumberControl::outOfRange, this, [apply](double shown) { apply(shown, false); });
+    connect(control, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
+    m_refreshers.push_back([this, control, get, toShown] {
+        control->setValue(get(m_controller->world().settings()) * toShown);
+    });
+    addRow(key, label, control,
+           tr("%1 to %2%3").arg(QLocale().toString(spec.min, 'g', 4), QLocale().toString(spec.max, 'g', 4),
+                                spec.suffix));
+    return control;
+}
+
+QComboBox* ParameterPanel::addChoice(const QString& key, const QString& objectName, const QString& label,
+                                     std::span<const std::string_view> names, std::function<int(const Settings&)> get,
+                                     std::function<void(Settings&, int)> set)
+{
+    auto* combo = new QComboBox(m_sections.back().box);
+    combo->setObjectName(objectName);
+    for (std::string_view name : names)
+        combo->addItem(qs(name));
+    connect(combo, &QComboBox::currentIndexChanged, this, [this, key, set](int index) {
+        if (index >= 0)
+            edit(key, [&](Settings& s) { set(s, index); });
+    });
+    m_refreshers.push_back([this, combo, get] {
+        const QSignalBlocker block(combo);
+        combo->setCurrentIndex(get(m_controller->world().settings()));
+    });
+    addRow(key, label, combo);
+    return combo;
+}
+
+QCheckBox* ParameterPanel::addSwitch(const QString& key, const QString& objectName, const QString& label,
+                                     const QString& tip, std::function<bool(const Settings&)> get,
+                                     std::function<void(Settings&, bool)> set)
+{
+    auto* box = new QCheckBox(m_sections.back().box);
+    box->setObjectName(objectName);
+    connect(box, &QCheckBox::toggled, this,
+            [this, key, set](bool on) { edit(key, [&](Settings& s) { set(s, on); }); });
+    m_refreshers.push_back([this, box, get] {
+        const QSignalBlocker block(box);
+        box->setChecked(get(m_controller->world().settings()));
+    });
+    addRow(key, label, box, tip);
+    return box;
+}
+
+void ParameterPanel::addWallSides()
+{
+    auto* field = new QWidget(m_sections.back().box);
+    field->setObjectName(QStringLiteral("wallSides"));
+    auto* layout = new QHBoxLayout(field);
+    layout->setContentsMargins(0, 0, 0, 0);
+    struct Side {
+        const char* name;
+        QString text;
+        bool sim::WallSettings::*member;
+    };
+    const Side sides[] = {{"Left", tr("left"), &sim::WallSettings::left},
+                          {"Right", tr("right"), &sim::WallSettings::right},
+                          {"Top", tr("top"), &sim::WallSettings::top},
+                          {"Bottom", tr("bottom"), &sim::WallSettings::bottom}};
+    for (const Side& side : sides) {
+        auto* box = new QCheckBox(side.text, field);
+        box->setObjectName(QStringLiteral("wall%1Check").arg(QLatin1String(side.name)));
+        const auto member = side.member;
+        connect(box, &QCheckBox::toggled, this, [this, member](bool on) {
+            edit(QStringLiteral("wall_sides"), [&](Settings& s) { s.walls.*member = on; });
+        });
+        m_refreshers.push_back([this, box, member] {
+            const QSignalBlocker block(box);
+            box->setChecked(m_controller->world().settings().walls.*member);
+        });
+        layout->addWidget(box);
+    }
+    layout->addStretch(1);
+    addRow(QStringLiteral("wall_sides"), tr("Walls"), field, tr("A wall that is not ticked is open"));
+}
+
+void ParameterPanel::addSeed()
+{
+    auto* edit = new QLineEdit(m_sections.back().box);
+    edit->setObjectName(QStringLiteral("seedEdit"));
+    edit->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[0-9]{1,20}")), edit));
+    connect(edit, &QLineEdit::editingFinished, this, [this, edit] {
+        bool ok = false;
+        const qulonglong seed = edit->text().toULongLong(&ok);
+        if (!ok) {
+            emit m_controller->errorOccurred(
+                tr("time.seed: \"%1\" is not a whole number from 0 to 18446744073709551615").arg(edit->text()));
+            refresh();
+            return;
+        }
+        if (seed != m_controller->world().settings().time.seed)
+            this->edit(QStringLiteral("seed"), [&](Settings& s) { s.time.seed = seed; });
+    });
+    m_refreshers.push_back([this, edit] {
+        const QSignalBlocker block(edit);
+        edit->setText(QString::number(static_cast<qulonglong>(m_controller->world().settings().time.seed)));
+    });
+    addRow(QStringLiteral("seed"), tr("Seed"), edit,
+           tr("Random numbers (wind, random acceleration) start from this seed when the balls are placed again"));
+}
+
+void ParameterPanel::addBallCount()
+{
+    NumberControl::Spec s;
+    s.min = 0.0;
+    s.max = static_cast<double>(sim::kMaxBalls);
+    s.sliderMin = 1.0;
+    s.sliderMax = 50000.0;
+    s.scale = NumberControl::Scale::Log;
+    s.decimals = 0;
+    auto* control = new NumberControl(QStringLiteral("ballCount"), s, m_sections.back().box);
+    // Placing balls restarts the world: only when the value is final (not at
+    // every pixel of a drag).
+    auto apply = [this](double v) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        spawn.count = static_cast<int>(std::lround(v));
+        if (spawn.count != m_controller->spawn().count)
+            editSpawn(tr("Place %n random ball(s)", nullptr, spawn.count), spawn);
+    };
+    connect(control, &NumberControl::valueEdited, this, [apply](double v, bool dragging) {
+        if (!dragging)
+            apply(v);
+    });
+    connect(control->slider(), &QSlider::sliderReleased, this, [apply, control] { apply(control->value()); });
+    connect(control, &NumberControl::outOfRange, this, [this](double v) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        spawn.count = v < 0 ? -1 : static_cast<int>(std::min(v, 1e9));
+        editSpawn(tr("Place random balls"), spawn);
+    });
+    m_refreshers.push_back([this, control] { control->setValue(m_controller->spawn().count); });
+    addRow(QStringLiteral("ball_count"), tr("Random balls"), control,
+           tr("How many balls are placed at random (besides the lesson's own); changing it starts again"));
+}
+
+void ParameterPanel::addFullyInside()
+{
+    auto* box = new QCheckBox(m_sections.back().box);
+    box->setObjectName(QStringLiteral("fullyInsideCheck"));
+    connect(box, &QCheckBox::toggled, this, [this](bool on) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        spawn.fullyInside = on;
+        editSpawn(on ? tr("Place balls fully inside") : tr("Let balls start partly outside"), spawn);
+    });
+    m_refreshers.push_back([this, box] {
+        const QSignalBlocker block(box);
+        box->setChecked(m_controller->spawn().fullyInside);
+    });
+    addRow(QStringLiteral("fully_inside"), tr("Start fully inside"), box,
+           tr("Off: a ball's centre may be anywhere in the box, so it can start partly outside a wall "
+              "(stage 4's bug). Changing it places the balls again"));
+}
+
+void ParameterPanel::addTimeScale()
+{
+    // Not a world setting: how fast real time drives simulated time.
+    NumberControl::Spec s;
+    s.min = SimulationController::kMinTimeScale;
+    s.max = SimulationController::kMaxTimeScale;
+    s.sliderMin = SimulationController::kMinTimeScale;
+    s.sliderMax = SimulationController::kMaxTimeScale;
+    s.scale = NumberControl::Scale::Log;
+    s.decimals = 2;
+    s.suffix = QStringLiteral(" ×");
+    auto* control = new NumberControl(QStringLiteral("timeScale"), s, m_sections.back().box);
+    auto apply = [this](double v, bool dragging) {
+        if (m_refreshing)
+            return;
+        const double before = m_controller->timeScale();
+        m_controller->setTimeScale(v);
+        if (m_controller->timeScale() != before)
+            m_undoStack->push(new TimeScaleCommand(m_controller, before, m_controller->timeScale(),
+                                                   dragging ? m_dragSession : -1));
+    };
+    connect(control, &NumberControl::valueEdited, this, apply);
+    connect(control, &NumberControl::outOfRange, this, [apply](double v) { apply(v, false); });
+    connect(control, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
+    m_refreshers.push_back([this, control] { control->setValue(m_controller->timeScale()); });
+    addRow(QStringLiteral("time_scale"), tr("Speed"), control,
+           tr("Simulated seconds per real second: below 1 is slow motion (%1× to %2×)")
+               .arg(SimulationController::kMinTimeScale)
+               .arg(SimulationController::kMaxTimeScale));
+}
+
+} // namespace forcelab

@@ -1,0 +1,209 @@
+#pragma once
+// The workbench window: the canvas in the middle and four docks around it
+// (Lessons, Parameters, Plots, Inspector), one QAction per command shared by
+// menu and toolbar, a status bar with the step's numbers, and layout plus last
+// lesson kept in QSettings.
+
+#include "lessons/lesson.h"
+#include "ui/drawing/world_painter.h"
+
+#include <QElapsedTimer>
+#include <QFont>
+#include <QMainWindow>
+#include <QString>
+
+#include <optional>
+
+class QAction;
+class QBoxLayout;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QTimer;
+class QToolBar;
+
+namespace forcelab {
+
+class AccuracyDock;
+class CodeDock;
+class StageBar;
+class StageSliders;
+class OverlayActions;
+class Canvas;
+class InspectorDock;
+class LessonsDock;
+class ParameterPanel;
+class PlotsDock;
+class PredictDock;
+class StopwatchDock;
+class ForceEditorDock;
+class SimulationController;
+class TrajectoryExport;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// Opens `lesson` (a file path or a built-in id) when given; otherwise
+    /// the last lesson from the settings, otherwise the first built-in one.
+    explicit MainWindow(const QString& lesson = {}, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Loads and starts a lesson. On errors shows them in a dialog, keeps the
+    /// running lesson and returns false.
+    bool openLesson(const QString& pathOrId);
+    /// Starts a lesson already in memory. Returns false (with the error in the
+    /// status bar) when its scene is refused.
+    bool setLesson(const Lesson& lesson);
+    const Lesson& lesson() const { return m_lesson; }
+
+    /// The running scene as a lesson: the lesson's text with the live
+    /// settings, every current ball listed and no random spawning.
+    Lesson currentSceneAsLesson() const;
+    /// Writes currentSceneAsLesson() to `path`. On failure shows the error in
+    /// the status bar and returns false.
+    bool saveLessonTo(const QString& path);
+    /// Writes a picture of the stage to `path` (PNG): laid out as large as
+    /// the screen would show it, at the screen's device pixel ratio times `scale`.
+    bool saveScreenshotTo(const QString& path, double scale = 1.0);
+    /// Logical size of that picture: the canvas grown to fill the screen.
+    QSize pictureSize() const;
+    /// Where the Open dialog starts: the installed lessons, or the source tree's.
+    static QString lessonsFolder();
+    /// The projector theme (View menu; always on in the stage view).
+    void setProjectorTheme(bool on);
+
+    SimulationController* controller() const { return m_controller; }
+    Canvas* canvas() const { return m_canvas; }
+    ParameterPanel* parameterPanel() const { return m_parameters; }
+    LessonsDock* lessonsDock() const { return m_lessonsDock; }
+    InspectorDock* inspectorDock() const { return m_inspectorDock; }
+    PlotsDock* plotsDock() const { return m_plotsDock; }
+    AccuracyDock* accuracyDock() const { return m_accuracyDock; }
+    CodeDock* codeDock() const { return m_codeDock; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+public:
+    /// Tells why a lesson could not be opened: the first problems in the
+    /// dialog, all of them under "Show Details…" (a scrolling list), so a
+    /// file with a hundred problems never makes a dialog taller than the screen.
+    void showLoadErrors(const QStringList& errors);
+
+private slots:
+    void openLessonFile();
+    void saveLessonFile();
+    void saveScreenshot(double scale);
+    void exportTrajectory();
+    void exportHandbook();
+    void chooseLesson(const QString& source);
+    void previousLesson();
+    void nextLesson();
+    void resetLesson();
+    void slower();
+    void faster();
+    void updateStatus();
+    void updatePlayAction(bool playing);
+    void showError(const QString& message);
+    void showTimeDropped(double seconds);
+    void showHalted(const QString& reason);
+    void setPresentationMode(bool on);
+    void applyCanvasLook();
+    void useCompactDocks();
+    void updateStageCaption();
+    void updateStageReadout();
+    Overlays readoutsToStageBar(Overlays overlays);
+    void layoutStage();
+    void about();
+
+private:
+    struct StageReadout {
+        QString wide, narrow; // the readout and totals in long lines, and in short ones
+    };
+    StageReadout stageReadoutText() const;
+    void createActions();
+    void createMenus();
+    void createToolBars();
+    void createDocks();
+    void createStatusBar();
+    void readSettings();
+    void writeSettings() const;
+    void openInitialLesson(const QString& requested);
+    /// The loader's one-line errors in a dialog.
+    /// Multiplies the time scale by `factor` within the controller's limits (an undo step).
+    void scaleTime(double factor);
+    QString suggestedFileName(const QString& extension) const;
+
+    SimulationController* m_controller = nullptr;
+    Canvas* m_canvas = nullptr;
+    ParameterPanel* m_parameters = nullptr;
+    LessonsDock* m_lessonsDock = nullptr;
+    InspectorDock* m_inspectorDock = nullptr;
+    QDockWidget* m_parametersDock = nullptr;
+    PlotsDock* m_plotsDock = nullptr;
+    PredictDock* m_predictDock = nullptr;
+    StopwatchDock* m_stopwatchDock = nullptr;
+    ForceEditorDock* m_forceEditorDock = nullptr;
+    AccuracyDock* m_accuracyDock = nullptr;
+    CodeDock* m_codeDock = nullptr;
+    StageBar* m_stageBar = nullptr;
+    StageSliders* m_stageSliders = nullptr;
+    OverlayActions* m_overlayActions = nullptr;
+    QBoxLayout* m_stageLayout = nullptr;
+    QByteArray m_normalGeometry; // before the stage view
+    QByteArray m_normalDocks;
+    Overlays m_stageOverlays; // the canvas's overlays before the stage view took its readouts
+    QAction* m_handbookAction = nullptr;
+    TrajectoryExport* m_trajectory = nullptr;
+    Lesson m_lesson;
+
+    QAction* m_playAction = nullptr;
+    QAction* m_stepAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QAction* m_slowerAction = nullptr;
+    QAction* m_fasterAction = nullptr;
+    QAction* m_stageSlidersAction = nullptr; // shows a row bar's sliders when they do not fit
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QAction* m_openAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_screenshotAction = nullptr;
+    QAction* m_recordAction = nullptr;
+    QAction* m_exportAction = nullptr;
+    QAction* m_previousAction = nullptr;
+    QAction* m_nextAction = nullptr;
+    QAction* m_quitAction = nullptr;
+    QAction* m_presentationAction = nullptr;
+    QAction* m_themeAction = nullptr;
+    /// Below this window width (px) the first layout puts the lesson in a tab beside the Parameters.
+    static constexpr int kCompactWidth = 1400;
+    bool m_dockLayoutChosen = false; // a saved layout was restored, or the first show chose one
+    QAction* m_screenshotDoubleAction = nullptr;
+    QAction* m_aboutAction = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_accuracyMenu = nullptr; // filled by createDocks with the Accuracy dock's actions
+    QToolBar* m_simulationToolBar = nullptr;
+    QToolBar* m_fileToolBar = nullptr;
+
+    QLabel* m_timeLabel = nullptr;
+    QLabel* m_speedLabel = nullptr;
+    QLabel* m_fpsLabel = nullptr;
+    QLabel* m_costLabel = nullptr;
+    QLabel* m_ballsLabel = nullptr;
+    QLabel* m_pairsLabel = nullptr;
+    QLabel* m_droppedLabel = nullptr;
+    QLabel* m_haltBanner = nullptr; // above the canvas while the world refuses to step
+    QTimer* m_statusTimer = nullptr;
+    QTimer* m_droppedTimer = nullptr;
+    QElapsedTimer m_statusClock;
+    qint64 m_lastFrames = 0;
+    QString m_lastLesson;    // from the settings
+    QStringList m_settingsProblems; // values in the settings file that were refused, for the status bar
+    QString m_lastDirectory; // of Open / Save lesson, screenshots and exports
+};
+
+} // namespace forcelab
