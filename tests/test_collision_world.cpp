@@ -877,7 +877,7 @@ TEST_CASE("TestCollisionWorld::ballBouncesOnRestingPile")
 }
 
 // The passes a bounce adds go only to the rows within bounceLayers balls of
-// it (soft_stages.cpp, step 7), and the ball rises as high as when every row
+// it (staged_solve.cpp, finalPasses), and the ball rises as high as when every row
 // gets them (to 2%; measured 0.4%). With 4 layers instead of 12 it rose 20%
 // less: the pile under it gave way.
 TEST_CASE("TestCollisionWorld::bounceOnPileNeedsOnlyTheRowsNearIt")

@@ -1,3 +1,5 @@
+// The collision step: detection, then the path the settings choose (collision_system.h).
+
 #include "collision_system.h"
 
 #include "sim/collision/broad_phase/brute_force.h"
@@ -14,9 +16,10 @@ namespace forcelab::sim {
 namespace {
 
 // The pass over all contacts for one response model (a template, so the
-// model's few lines are inlined into the loop). Same maths as the general
-// path in resolve(): normal from the detection-time positions, response,
-// then positional correction on the current positions.
+// model's few lines are inlined into the loop; respond() is the same choice
+// at run time, for the impacts in time order): per contact, in (a, b) order,
+// the line of impact from the detection-time positions, the response, then
+// positional correction on the current positions.
 template <Response Model>
 void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detected, BallState& balls, double e,
                      const BoxSettings& box, const WallSettings& walls)
@@ -32,19 +35,9 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
         const double ra = radius[a], rb = radius[b], s = ra + rb;
         const double wa = inverseMass[a], wb = inverseMass[b];
         const Vec2 d(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
-        const double len = d.norm();
-        const Vec2 n = (len > 1e-12 * s && std::isfinite(len)) ? Vec2(d / len) : lineOfImpact(d, s, c.a, c.b);
+        const Vec2 n = lineOfImpact(d, s, c.a, c.b);
         Vec2 va(v[2 * a], v[2 * a + 1]), vb(v[2 * b], v[2 * b + 1]);
-        bool changed = false;
-        if constexpr (Model == Response::Reverse1D)
-            changed = reverse1D(d, va, vb);
-        else if constexpr (Model == Response::Elastic1D)
-            changed = elastic1D(e, d, wa, wb, va, vb);
-        else if constexpr (Model == Response::Axis2D)
-            changed = axis2D(e, d, wa, wb, va, vb);
-        else
-            changed = impulse2D(e, n, wa, wb, va, vb);
-        if (changed) {
+        if (respondAs<Model>(e, d, n, wa, wb, va, vb)) {
             v[2 * a] = va.x();
             v[2 * a + 1] = va.y();
             v[2 * b] = vb.x();
@@ -54,16 +47,7 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
         const double depth = s - (pb - pa).norm();
         if (!(depth > 0.0))
             continue;
-        const double w = wa + wb;
-        const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
-        const double moveA = depth * shareA;
-        const Vec2 qa = pa - moveA * n, qb = pb + (depth - moveA) * n;
-        if (check.inside(qa.x(), qa.y(), ra) && check.inside(qb.x(), qb.y(), rb)) {
-            pa = qa;
-            pb = qb;
-        } else {
-            separate(pa, pb, {ra, rb, n, wa, wb}, box, walls); // stops at the walls
-        }
+        pushApartWithin(pa, pb, {ra, rb, n, wa, wb}, depth, check, box, walls);
         x[2 * a] = pa.x();
         x[2 * a + 1] = pa.y();
         x[2 * b] = pb.x();
@@ -164,6 +148,36 @@ CollisionStats CollisionSystem::detectMoving(const BallState& balls, const Matri
     return stats;
 }
 
+// The step picks one of its paths once (StepPath), then runs it.
+CollisionSystem::StepPlan CollisionSystem::planStep(const CollisionSettings& settings, bool continuous,
+                                                    const Vec2& gravity, double dt) const
+{
+    StepPlan plan;
+    if (settings.response == Response::None)
+        return plan; // StepPath::Nothing
+    if (continuous && settings.response != Response::Flag) {
+        plan.path = StepPath::InTimeOrder;
+        return plan;
+    }
+    plan.restingSpeed = m_solver.restingFactor * gravity.norm() * dt;
+    const bool resting = settings.resting && settings.response == Response::Impulse2D && !continuous &&
+                         plan.restingSpeed > 0.0 && std::isfinite(plan.restingSpeed);
+    // Sleeping needs the staged solve with speculative contacts; any other
+    // step wakes every ball.
+    plan.sleeping = resting && m_solver.speculative > 0.0 && m_solver.stages > 1 && m_sleepAllowed &&
+                    m_solver.sleepTime > 0.0;
+    plan.swept = continuous;
+    if (resting && m_solver.speculative > 0.0)
+        plan.path = StepPath::Speculative;
+    else if (settings.response == Response::Flag)
+        plan.path = StepPath::Flag;
+    else if (resting)
+        plan.path = StepPath::Resting;
+    else
+        plan.path = StepPath::OnePass;
+    return plan;
+}
+
 CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPositions,
                                      const CollisionSettings& settings, const BoxSettings& box,
                                      const WallSettings& walls, double dt, const Vec2& gravity,
@@ -179,95 +193,134 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
         ++m_profile.calls;
     const int n = balls.size();
     balls.colliding.assign(static_cast<std::size_t>(n), 0);
-    if (settings.response == Response::None) {
+    const StepPlan plan = planStep(settings, settings.continuous && startPositions.cols() == n, gravity, dt);
+    // Only the speculative path lets balls sleep; every other step (but one
+    // that does nothing) wakes them all.
+    if (plan.path == StepPath::InTimeOrder || (plan.path != StepPath::Nothing && !plan.sleeping))
+        m_sleep.wakeAll();
+    switch (plan.path) {
+    case StepPath::Nothing:
         m_contacts.clear();
-        return stats;
+        break;
+    case StepPath::InTimeOrder:
+        stats = stepInTimeOrder(balls, startPositions, settings, box, walls, dt, motion, clock);
+        break;
+    case StepPath::Speculative:
+        stepSpeculative(balls, settings, box, walls, dt, gravity, motion, plan, stats, clock);
+        break;
+    case StepPath::Flag:
+        stepFlag(balls, startPositions, settings, plan, stats, clock);
+        break;
+    case StepPath::Resting:
+        stepResting(balls, settings, box, walls, dt, gravity, motion, plan, stats, clock);
+        break;
+    case StepPath::OnePass:
+        stepOnePass(balls, settings, box, walls, stats, clock);
+        break;
     }
-    const bool continuous = settings.continuous && startPositions.cols() == n;
-    if (continuous && settings.response != Response::Flag) {
-        m_sleep.wakeAll();
-        return stepInTimeOrder(balls, startPositions, settings, box, walls, dt, motion, clock);
-    }
-    const double g = gravity.norm();
-    const double restingSpeed = m_solver.restingFactor * g * dt;
-    const bool resting = settings.resting && settings.response == Response::Impulse2D && !continuous &&
-                         restingSpeed > 0.0 && std::isfinite(restingSpeed);
-    // Sleeping needs the staged solve with speculative contacts; any other
-    // step wakes every ball.
-    const bool sleeping = resting && m_solver.speculative > 0.0 && m_solver.stages > 1 && m_sleepAllowed &&
-                          m_solver.sleepTime > 0.0;
-    if (!sleeping)
-        m_sleep.wakeAll();
-    if (resting && m_solver.speculative > 0.0) {
-        if (sleeping) {
-            m_sleep.hold(balls); // the sleepers back where they sleep, before anything reads them
-            clock.lap(m_profile.sleep);
-        }
-        // Speculative contacts: every ball grown by the distance one sub-step
-        // can bring it closer to a neighbour, |v − u|·h + |g|·h² with u the
-        // mean velocity around it, at most `speculative` of its radius
-        // (speculative_margin.h). The grown pairs include every overlapping
-        // pair (a sum of larger numbers is never smaller in floating point),
-        // and all four detectors find the same grown pairs in the same order.
-        m_margin.compute(balls, dt, g * dt * dt, m_solver.speculative, m_grow);
-        m_input.loadStatic(balls, m_grow.data());
-        clock.lap(m_profile.load);
-        findContacts(settings.detection, false, m_speculative, stats, clock);
-        const double stillSpeed = m_solver.stillShare * restingSpeed;
-        if (sleeping) {
-            m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, startLag(motion.integrator), stillSpeed,
-                             m_solver.wakeShare * restingSpeed, m_solver.wakeLayers);
-            clock.lap(m_profile.sleep);
-        }
-        // The solver puts the pairs that overlap now back into m_contacts
-        // (what contacts(), the flags and the counters report) as it builds
-        // its rows.
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity, motion), m_speculative, &m_contacts, clock,
-                        m_profile, sleeping ? m_sleep.asleep() : nullptr);
-        if (sleeping) {
-            m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
-            clock.lap(m_profile.sleep);
-        }
-        m_lastPasses = m_resting.lastPasses();
-        m_lastBounceRows = m_resting.lastBounceRows();
-        m_lastBounced = m_resting.lastBounced();
-        stats.contacts = static_cast<std::int64_t>(m_contacts.size());
-        if (m_profiling)
-            m_profile.passes += m_lastPasses;
-        return stats;
-    } else {
-        if (continuous)
-            m_input.loadSwept(balls, startPositions);
-        else
-            m_input.loadStatic(balls);
-        clock.lap(m_profile.load);
-        findContacts(settings.detection, continuous, m_contacts, stats, clock);
-    }
+    return stats;
+}
 
+// Resting contact with speculative contacts (and sleep, when allowed): the
+// solver finds the touching pairs among the grown ones as it builds its rows.
+void CollisionSystem::stepSpeculative(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                                      const WallSettings& walls, double dt, const Vec2& gravity,
+                                      const StepMotion& motion, const StepPlan& plan, CollisionStats& stats,
+                                      StageClock& clock)
+{
+    const double g = gravity.norm();
+    const bool sleeping = plan.sleeping;
+    if (sleeping) {
+        m_sleep.hold(balls); // the sleepers back where they sleep, before anything reads them
+        clock.lap(m_profile.sleep);
+    }
+    // Speculative contacts: every ball grown by the distance one sub-step
+    // can bring it closer to a neighbour, |v − u|·h + |g|·h² with u the
+    // mean velocity around it, at most `speculative` of its radius
+    // (speculative_margin.h). The grown pairs include every overlapping
+    // pair (a sum of larger numbers is never smaller in floating point),
+    // and all four detectors find the same grown pairs in the same order.
+    m_margin.compute(balls, dt, g * dt * dt, m_solver.speculative, m_grow);
+    m_input.loadStatic(balls, m_grow.data());
+    clock.lap(m_profile.load);
+    findContacts(settings.detection, false, m_speculative, stats, clock);
+    const double stillSpeed = m_solver.stillShare * plan.restingSpeed;
+    if (sleeping) {
+        m_sleep.wakeNear(balls, m_speculative, gravity * dt, dt, startLag(motion.integrator), stillSpeed,
+                         m_solver.wakeShare * plan.restingSpeed, m_solver.wakeLayers);
+        clock.lap(m_profile.sleep);
+    }
+    // The solver puts the pairs that overlap now back into m_contacts
+    // (what contacts(), the flags and the counters report) as it builds
+    // its rows.
+    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion), m_speculative,
+                    &m_contacts, clock, m_profile, sleeping ? m_sleep.asleep() : nullptr);
+    if (sleeping) {
+        m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
+        clock.lap(m_profile.sleep);
+    }
+    noteRestingSolve();
+    stats.contacts = static_cast<std::int64_t>(m_contacts.size());
+}
+
+// The touching pairs at the end of the (sub-)step into m_contacts, flagged
+// in balls.colliding; with `startPositions`, also the pairs whose straight
+// paths from there met during it.
+void CollisionSystem::detectTouching(BallState& balls, const Matrix2X* startPositions,
+                                     const CollisionSettings& settings, CollisionStats& stats, StageClock& clock)
+{
+    if (startPositions)
+        m_input.loadSwept(balls, *startPositions);
+    else
+        m_input.loadStatic(balls);
+    clock.lap(m_profile.load);
+    findContacts(settings.detection, startPositions != nullptr, m_contacts, stats, clock);
     for (const Contact& c : m_contacts) {
         balls.colliding[static_cast<std::size_t>(c.a)] = 1;
         balls.colliding[static_cast<std::size_t>(c.b)] = 1;
     }
     clock.lap(m_profile.build);
-    if (settings.response == Response::Flag) {
-        m_resting.forget();
-        return stats;
-    }
-    if (resting) {
-        m_resting.solve(balls, subStep(settings, box, walls, dt, restingSpeed, gravity, motion), m_contacts, nullptr, clock,
-                        m_profile);
-        m_lastPasses = m_resting.lastPasses();
-        m_lastBounceRows = m_resting.lastBounceRows();
-        m_lastBounced = m_resting.lastBounced();
-        if (m_profiling)
-            m_profile.passes += m_lastPasses;
-        return stats;
-    }
+}
+
+// The resting solver's counters of the solve that just ran.
+void CollisionSystem::noteRestingSolve()
+{
+    m_lastPasses = m_resting.lastPasses();
+    m_lastBounceRows = m_resting.lastBounceRows();
+    m_lastBounced = m_resting.lastBounced();
+    if (m_profiling)
+        m_profile.passes += m_lastPasses;
+}
+
+// The touching pairs marked, nothing else.
+void CollisionSystem::stepFlag(BallState& balls, const Matrix2X& startPositions, const CollisionSettings& settings,
+                               const StepPlan& plan, CollisionStats& stats, StageClock& clock)
+{
+    detectTouching(balls, plan.swept ? &startPositions : nullptr, settings, stats, clock);
+    m_resting.forget(); // no resting solve: nothing to warm-start from next time
+}
+
+// Resting contact on the touching pairs alone (no speculative contacts).
+void CollisionSystem::stepResting(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                                  const WallSettings& walls, double dt, const Vec2& gravity, const StepMotion& motion,
+                                  const StepPlan& plan, CollisionStats& stats, StageClock& clock)
+{
+    detectTouching(balls, nullptr, settings, stats, clock);
+    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion), m_contacts, nullptr,
+                    clock, m_profile);
+    noteRestingSolve();
+}
+
+// One pass of the response over the touching pairs, then positional
+// correction (resolve()).
+void CollisionSystem::stepOnePass(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                                  const WallSettings& walls, CollisionStats& stats, StageClock& clock)
+{
+    detectTouching(balls, nullptr, settings, stats, clock);
     m_resting.forget(); // no resting solve: nothing to warm-start from next time
     if (!m_contacts.empty())
         resolve(balls, settings, box, walls);
     clock.lap(m_profile.correction);
-    return stats;
 }
 
 void CollisionSystem::resolve(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,

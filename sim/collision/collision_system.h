@@ -110,6 +110,35 @@ public:
     const UniformGrid& grid() const { return m_grid; }
 
 private:
+    // The paths a step can take, chosen once per step by planStep.
+    enum class StepPath {
+        Nothing,     // response None: no detection
+        InTimeOrder, // continuous detection with a response (impact_events.h)
+        Speculative, // resting contact on speculative contacts, maybe with sleep
+        Flag,        // the touching pairs marked, nothing else
+        Resting,     // resting contact on the touching pairs
+        OnePass,     // one pass of the response, then positional correction
+    };
+    struct StepPlan {
+        StepPath path = StepPath::Nothing;
+        bool swept = false;        // detection on the paths from the start positions
+        bool sleeping = false;     // balls at rest may sleep (Speculative only)
+        double restingSpeed = 0.0; // px/s, v_rest of the resting paths
+    };
+    StepPlan planStep(const CollisionSettings& settings, bool continuous, const Vec2& gravity, double dt) const;
+    void stepSpeculative(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                         const WallSettings& walls, double dt, const Vec2& gravity, const StepMotion& motion,
+                         const StepPlan& plan, CollisionStats& stats, StageClock& clock);
+    void detectTouching(BallState& balls, const Matrix2X* startPositions, const CollisionSettings& settings,
+                        CollisionStats& stats, StageClock& clock);
+    void stepFlag(BallState& balls, const Matrix2X& startPositions, const CollisionSettings& settings,
+                  const StepPlan& plan, CollisionStats& stats, StageClock& clock);
+    void stepResting(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                     const WallSettings& walls, double dt, const Vec2& gravity, const StepMotion& motion,
+                     const StepPlan& plan, CollisionStats& stats, StageClock& clock);
+    void stepOnePass(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
+                     const WallSettings& walls, CollisionStats& stats, StageClock& clock);
+    void noteRestingSolve();
     void findContacts(Detection method, bool swept, std::vector<Contact>& out, CollisionStats& stats,
                       StageClock& clock);
     void resolve(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,

@@ -1,3 +1,5 @@
+// The broad phase's geometry for drawing it: grid cells, sweep rows (broad_phase_geometry.h).
+
 #include "sim/collision/broad_phase/broad_phase_geometry.h"
 
 #include "sim/collision/broad_phase/broad_phase_input.h"

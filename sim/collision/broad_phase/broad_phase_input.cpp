@@ -1,3 +1,5 @@
+// The ball arrays the broad phases read (broad_phase_input.h).
+
 #include "sim/collision/broad_phase/broad_phase_input.h"
 
 #include <algorithm>

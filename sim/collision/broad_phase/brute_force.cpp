@@ -1,3 +1,5 @@
+// The brute-force broad phase: every pair tested (brute_force.h).
+
 #include "sim/collision/broad_phase/brute_force.h"
 
 #include "sim/collision/narrow_phase.h"

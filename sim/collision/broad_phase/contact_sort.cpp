@@ -1,3 +1,5 @@
+// Contacts sorted into (a, b) order (contact_sort.h).
+
 #include "sim/collision/broad_phase/contact_sort.h"
 
 namespace forcelab::sim {

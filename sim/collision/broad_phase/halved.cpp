@@ -1,3 +1,5 @@
+// The halved broad phase: each pair tested once (halved.h).
+
 #include "sim/collision/broad_phase/halved.h"
 
 #include "sim/collision/narrow_phase.h"

@@ -1,3 +1,5 @@
+// The sort-and-sweep broad phase (sweep_and_prune.h).
+
 #include "sim/collision/broad_phase/sweep_and_prune.h"
 
 #include "sim/collision/narrow_phase.h"

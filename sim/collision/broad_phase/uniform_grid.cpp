@@ -1,3 +1,5 @@
+// The uniform-grid broad phase (uniform_grid.h).
+
 #include "sim/collision/broad_phase/uniform_grid.h"
 
 #include "sim/collision/narrow_phase.h"

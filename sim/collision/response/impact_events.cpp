@@ -1,3 +1,5 @@
+// Continuous detection: every impact of a step in time order (impact_events.h).
+
 #include "sim/collision/response/impact_events.h"
 
 #include "sim/integrators/integrator_info.h"
@@ -313,6 +315,47 @@ ImpactCounts ImpactEvents::run(BallState& balls, const std::vector<Contact>& can
     m_hi0.assign(count, 0.0);
     m_lo1.assign(count, 0.0);
     m_hi1.assign(count, 0.0);
+    startPaths(balls, box, wallSettings, walls);
+    for (const Contact& c : candidates)
+        if (m_path[static_cast<std::size_t>(c.a)].active && m_path[static_cast<std::size_t>(c.b)].active)
+            planPair(c.a, c.b, 0.0);
+    for (const int i : m_active)
+        planWall(i, 0.0);
+
+    const std::int64_t limit = eventLimit(n);
+    std::int64_t events = 0;
+    const double e = settings.restitution;
+    while (!m_heap.empty()) {
+        std::pop_heap(m_heap.begin(), m_heap.end(), later);
+        const Event ev = m_heap.back();
+        m_heap.pop_back();
+        Path& qa = m_path[static_cast<std::size_t>(ev.a)];
+        if (qa.version != ev.va || (ev.b >= 0 && m_path[static_cast<std::size_t>(ev.b)].version != ev.vb))
+            continue; // planned on a path the ball has left since
+        if (events >= limit) {
+            m_counts.limitReached = true;
+            break;
+        }
+        ++events;
+        const double t = std::min(ev.t, m_h);
+        if (ev.b >= 0)
+            ballImpact(balls, ev, t, settings.response, e, walls, met);
+        else
+            wallImpact(ev, t);
+    }
+    finishPaths(balls, box, wallSettings, walls);
+    std::sort(met.begin(), met.end(), [](const Contact& l, const Contact& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
+    met.erase(std::unique(met.begin(), met.end()), met.end());
+    m_balls = nullptr;
+    return m_counts;
+}
+
+// Each active ball's path at the start of the step: the range its centre
+// may take between the walls, and whether it rests on one.
+void ImpactEvents::startPaths(const BallState& balls, const BoxSettings& box, const WallSettings& wallSettings,
+                              bool walls)
+{
+    const int n = balls.size();
     const bool on[2][2] = {{wallSettings.left, wallSettings.right}, {wallSettings.top, wallSettings.bottom}};
     const double size[2] = {box.width, box.height};
     const double middle = 0.5 * box.width;
@@ -347,96 +390,87 @@ ImpactCounts ImpactEvents::run(BallState& balls, const std::vector<Contact>& can
         }
         updateBox(i);
     }
-    for (const Contact& c : candidates)
-        if (m_path[static_cast<std::size_t>(c.a)].active && m_path[static_cast<std::size_t>(c.b)].active)
-            planPair(c.a, c.b, 0.0);
-    for (const int i : m_active)
-        planWall(i, 0.0);
+}
 
-    const std::int64_t limit = eventLimit(n);
-    std::int64_t events = 0;
-    const double e = settings.restitution;
-    while (!m_heap.empty()) {
-        std::pop_heap(m_heap.begin(), m_heap.end(), later);
-        const Event ev = m_heap.back();
-        m_heap.pop_back();
-        Path& qa = m_path[static_cast<std::size_t>(ev.a)];
-        if (qa.version != ev.va || (ev.b >= 0 && m_path[static_cast<std::size_t>(ev.b)].version != ev.vb))
-            continue; // planned on a path the ball has left since
-        if (events >= limit) {
-            m_counts.limitReached = true;
-            break;
-        }
-        ++events;
-        const double t = std::min(ev.t, m_h);
-        if (ev.b >= 0) {
-            Path& qb = m_path[static_cast<std::size_t>(ev.b)];
-            moveTo(qa, t);
-            moveTo(qb, t);
-            const double ra = balls.radius[ev.a], rb = balls.radius[ev.b];
-            const Vec2 d = qb.p - qa.p;
-            const Vec2 normal = lineOfImpact(d, ra + rb, ev.a, ev.b);
-            // The velocities the response sees. With the walls in this loop,
-            // the path's own (what the exact wall model bounces too). Without,
-            // the world's wall stage has already flipped the end velocity of a
-            // ball that hit a wall, and its straight path from start to end
-            // does not show it: the response then acts on the velocities the
-            // balls really have (path + kick), and the path gets the same change.
-            const Vec2 ka = walls ? Vec2::Zero() : qa.kick, kb = walls ? Vec2::Zero() : qb.kick;
-            Vec2 va = qa.u + ka, vb = qb.u + kb;
-            if (!respond(settings.response, e, d, normal, balls.inverseMass[ev.a], balls.inverseMass[ev.b], va, vb)) {
-                // A naive model that leaves the pair approaching: it would
-                // meet again at once, for ever. It is not followed further.
-                const std::uint64_t key = pairKey(ev.a, ev.b);
-                m_ignored.insert(std::lower_bound(m_ignored.begin(), m_ignored.end(), key), key);
-                continue;
-            }
-            qa.u = va - ka;
-            qb.u = vb - kb;
-            for (Path* q : {&qa, &qb}) {
-                for (int k = 0; k < 2; ++k) { // pushed off (or into) the wall it rested on: moving again
-                    if (q->resting[k]) {
-                        q->resting[k] = false;
-                        q->a[k] = q->a0[k];
-                        q->kick[k] = q->kick0[k];
-                    }
-                }
-                ++q->version;
-                q->moved = true;
-            }
-            ++m_counts.ballImpacts;
-            met.push_back(Contact{ev.a, ev.b});
-            updateBox(ev.a);
-            updateBox(ev.b);
-            planWall(ev.a, t);
-            planWall(ev.b, t);
-            planBall(ev.a, t, -1);
-            planBall(ev.b, t, ev.a);
-        } else {
-            const int code = -1 - ev.b, k = code / 2, side = code % 2;
-            moveTo(qa, t);
-            const double hitSpeed = qa.u[k];
-            qa.p[k] = side ? qa.hi[k] : qa.lo[k];
-            if (restsOnWall(ev.a, k, side, t, hitSpeed)) {
-                qa.resting[k] = true;
-                qa.u[k] = 0.0;
-                qa.a[k] = 0.0;
-                qa.kick[k] = 0.0;
-                m_counts.wallHits += hitSpeed != 0.0 ? 1 : 0;
-            } else {
-                qa.u[k] = -m_wallE * hitSpeed;
-                ++m_counts.wallHits;
-            }
-            ++qa.version;
-            qa.moved = true;
-            updateBox(ev.a);
-            planWall(ev.a, t);
-            planBall(ev.a, t, -1);
-        }
+// An impact of two balls at t: the response on their velocities there, and
+// their impacts planned again from their new paths.
+void ImpactEvents::ballImpact(const BallState& balls, const Event& ev, double t, Response model, double e,
+                              bool walls, std::vector<Contact>& met)
+{
+    Path& qa = m_path[static_cast<std::size_t>(ev.a)];
+    Path& qb = m_path[static_cast<std::size_t>(ev.b)];
+    moveTo(qa, t);
+    moveTo(qb, t);
+    const double ra = balls.radius[ev.a], rb = balls.radius[ev.b];
+    const Vec2 d = qb.p - qa.p;
+    const Vec2 normal = lineOfImpact(d, ra + rb, ev.a, ev.b);
+    // The velocities the response sees. With the walls in this loop,
+    // the path's own (what the exact wall model bounces too). Without,
+    // the world's wall stage has already flipped the end velocity of a
+    // ball that hit a wall, and its straight path from start to end
+    // does not show it: the response then acts on the velocities the
+    // balls really have (path + kick), and the path gets the same change.
+    const Vec2 ka = walls ? Vec2::Zero() : qa.kick, kb = walls ? Vec2::Zero() : qb.kick;
+    Vec2 va = qa.u + ka, vb = qb.u + kb;
+    if (!respond(model, e, d, normal, balls.inverseMass[ev.a], balls.inverseMass[ev.b], va, vb)) {
+        // A naive model that leaves the pair approaching: it would
+        // meet again at once, for ever. It is not followed further.
+        const std::uint64_t key = pairKey(ev.a, ev.b);
+        m_ignored.insert(std::lower_bound(m_ignored.begin(), m_ignored.end(), key), key);
+        return;
     }
+    qa.u = va - ka;
+    qb.u = vb - kb;
+    for (Path* q : {&qa, &qb}) {
+        for (int k = 0; k < 2; ++k) { // pushed off (or into) the wall it rested on: moving again
+            if (q->resting[k]) {
+                q->resting[k] = false;
+                q->a[k] = q->a0[k];
+                q->kick[k] = q->kick0[k];
+            }
+        }
+        ++q->version;
+        q->moved = true;
+    }
+    ++m_counts.ballImpacts;
+    met.push_back(Contact{ev.a, ev.b});
+    updateBox(ev.a);
+    updateBox(ev.b);
+    planWall(ev.a, t);
+    planWall(ev.b, t);
+    planBall(ev.a, t, -1);
+    planBall(ev.b, t, ev.a);
+}
 
-    // The end of the step. A ball without an impact keeps the integrator's
-    // state to the bit.
+// An impact of a ball on a wall at t: it rests on the wall or bounces off it.
+void ImpactEvents::wallImpact(const Event& ev, double t)
+{
+    Path& qa = m_path[static_cast<std::size_t>(ev.a)];
+    const int code = -1 - ev.b, k = code / 2, side = code % 2;
+    moveTo(qa, t);
+    const double hitSpeed = qa.u[k];
+    qa.p[k] = side ? qa.hi[k] : qa.lo[k];
+    if (restsOnWall(ev.a, k, side, t, hitSpeed)) {
+        qa.resting[k] = true;
+        qa.u[k] = 0.0;
+        qa.a[k] = 0.0;
+        qa.kick[k] = 0.0;
+        m_counts.wallHits += hitSpeed != 0.0 ? 1 : 0;
+    } else {
+        qa.u[k] = -m_wallE * hitSpeed;
+        ++m_counts.wallHits;
+    }
+    ++qa.version;
+    qa.moved = true;
+    updateBox(ev.a);
+    planWall(ev.a, t);
+    planBall(ev.a, t, -1);
+}
+
+// The end of the step written into the balls.
+void ImpactEvents::finishPaths(BallState& balls, const BoxSettings& box, const WallSettings& wallSettings, bool walls)
+{
+    // A ball without an impact keeps the integrator's state to the bit.
     const Matrix2X& x = balls.position;
     for (const int i : m_active) {
         Path& q = m_path[static_cast<std::size_t>(i)];
@@ -467,10 +501,6 @@ ImpactCounts ImpactEvents::run(BallState& balls, const std::vector<Contact>& can
         balls.position.col(i) = p;
         balls.velocity.col(i) = v;
     }
-    std::sort(met.begin(), met.end(), [](const Contact& l, const Contact& r) { return l.a < r.a || (l.a == r.a && l.b < r.b); });
-    met.erase(std::unique(met.begin(), met.end()), met.end());
-    m_balls = nullptr;
-    return m_counts;
 }
 
 } // namespace forcelab::sim

@@ -112,6 +112,11 @@ private:
     void push(const Event& e);
     void restIfPressed(Path& q, int k, double end);
     bool restsOnWall(int i, int k, int side, double now, double hitSpeed);
+    void startPaths(const BallState& balls, const BoxSettings& box, const WallSettings& wallSettings, bool walls);
+    void ballImpact(const BallState& balls, const Event& ev, double t, Response model, double e, bool walls,
+                    std::vector<Contact>& met);
+    void wallImpact(const Event& ev, double t);
+    void finishPaths(BallState& balls, const BoxSettings& box, const WallSettings& wallSettings, bool walls);
 
     std::vector<Path> m_path;
     std::vector<double> m_bulge;

@@ -1,3 +1,5 @@
+// Positional correction and the walls it stops at (positional_correction.h).
+
 #include "sim/collision/response/positional_correction.h"
 
 #include <cmath>
@@ -5,11 +7,8 @@
 
 namespace forcelab::sim {
 
-Vec2 lineOfImpact(const Vec2& d, double s, int a, int b)
+Vec2 spreadDirection(int a, int b)
 {
-    const double len = d.norm();
-    if (len > 1e-12 * s && std::isfinite(len))
-        return d / len;
     // The R2 low-discrepancy sequence in (a, b): well spread angles, no randomness.
     const double u = static_cast<double>(a) * 0.7548776662466927 + static_cast<double>(b) * 0.5698402909980532;
     const double angle = 2.0 * std::numbers::pi * (u - std::floor(u));

@@ -11,6 +11,8 @@
 #include "sim/world/types.h"
 #include "sim/world/world_settings.h"
 
+#include <cmath>
+
 namespace forcelab::sim {
 
 /// The line of impact from a to b: d/|d|, or, when the centres are too close
@@ -18,7 +20,10 @@ namespace forcelab::sim {
 /// fixed direction that depends only on (a, b). Different pairs get directions
 /// spread around the circle, so a heap of balls on one point spreads out in
 /// two dimensions, the same way every run.
-Vec2 lineOfImpact(const Vec2& d, double s, int a, int b);
+inline Vec2 lineOfImpact(const Vec2& d, double s, int a, int b);
+/// The fixed direction lineOfImpact gives the pair (a, b) when its centres
+/// are too close.
+Vec2 spreadDirection(int a, int b);
 
 /// The two balls of a pair that is pushed apart: their radii, the line of
 /// impact n from a to b, and their inverse masses.
@@ -51,8 +56,34 @@ double separate(Vec2& pa, Vec2& pb, const PairShape& pair, const BoxSettings& bo
 void pushApart(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const BoxSettings& box,
                const WallSettings& walls);
 
+/// pushApart with the common case inline: when both balls end inside every
+/// enabled wall (`check`), they move by their shares and no wall is looked
+/// at; otherwise pushApart. The same positions either way.
+inline void pushApartWithin(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const WallCheck& check,
+                            const BoxSettings& box, const WallSettings& walls)
+{
+    const double w = pair.wa + pair.wb;
+    const double shareA = (w > 0.0 && std::isfinite(w)) ? pair.wa / w : 0.5;
+    const double moveA = depth * shareA;
+    const Vec2 qa = pa - moveA * pair.n, qb = pb + (depth - moveA) * pair.n;
+    if (check.inside(qa.x(), qa.y(), pair.ra) && check.inside(qb.x(), qb.y(), pair.rb)) {
+        pa = qa;
+        pb = qb;
+    } else {
+        pushApart(pa, pb, pair, depth, box, walls); // stops at the walls
+    }
+}
+
 /// A ball whose centre was inside the walls at `before` and is outside them at
 /// `after` is put back on the wall (position only). Returns whether it was.
 bool keepInsideWalls(const Vec2& before, Vec2& after, double r, const BoxSettings& box, const WallSettings& walls);
+
+inline Vec2 lineOfImpact(const Vec2& d, double s, int a, int b)
+{
+    const double len = d.norm();
+    if (len > 1e-12 * s && std::isfinite(len))
+        return d / len;
+    return spreadDirection(a, b);
+}
 
 } // namespace forcelab::sim

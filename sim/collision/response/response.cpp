@@ -1,5 +1,6 @@
-#include "sim/collision/response/response.h"
+// The response models dispatched at run time (response.h).
 
+#include "sim/collision/response/response.h"
 
 namespace forcelab::sim {
 
@@ -7,16 +8,17 @@ bool respond(Response model, double e, const Vec2& d, const Vec2& n, double wa, 
 {
     switch (model) {
     case Response::None:
+        return respondAs<Response::None>(e, d, n, wa, wb, va, vb);
     case Response::Flag:
-        return false;
+        return respondAs<Response::Flag>(e, d, n, wa, wb, va, vb);
     case Response::Reverse1D:
-        return reverse1D(d, va, vb);
+        return respondAs<Response::Reverse1D>(e, d, n, wa, wb, va, vb);
     case Response::Elastic1D:
-        return elastic1D(e, d, wa, wb, va, vb);
+        return respondAs<Response::Elastic1D>(e, d, n, wa, wb, va, vb);
     case Response::Axis2D:
-        return axis2D(e, d, wa, wb, va, vb);
+        return respondAs<Response::Axis2D>(e, d, n, wa, wb, va, vb);
     case Response::Impulse2D:
-        return impulse2D(e, n, wa, wb, va, vb);
+        return respondAs<Response::Impulse2D>(e, d, n, wa, wb, va, vb);
     }
     return false;
 }

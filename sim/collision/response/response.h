@@ -98,6 +98,24 @@ inline bool impulse2D(double e, const Vec2& n, double wa, double wb, Vec2& va, V
 }
 // [/code]
 
+/// The response of one model, chosen at compile time (None and Flag change
+/// nothing): the one place that maps a model to its function, for respond()
+/// and for the contact pass of each model (collision_system.cpp).
+template <Response Model>
+inline bool respondAs(double e, const Vec2& d, const Vec2& n, double wa, double wb, Vec2& va, Vec2& vb)
+{
+    if constexpr (Model == Response::Reverse1D)
+        return reverse1D(d, va, vb);
+    else if constexpr (Model == Response::Elastic1D)
+        return elastic1D(e, d, wa, wb, va, vb);
+    else if constexpr (Model == Response::Axis2D)
+        return axis2D(e, d, wa, wb, va, vb);
+    else if constexpr (Model == Response::Impulse2D)
+        return impulse2D(e, n, wa, wb, va, vb);
+    else
+        return false;
+}
+
 /// Dispatches on the model (None and Flag change nothing).
 bool respond(Response model, double e, const Vec2& d, const Vec2& n, double wa, double wb, Vec2& va, Vec2& vb);
 

@@ -1,3 +1,5 @@
+// Time of impact of two circles moving on straight lines (time_of_impact.h).
+
 #include "sim/collision/response/time_of_impact.h"
 
 #include <cmath>

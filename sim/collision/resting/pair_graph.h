@@ -2,7 +2,7 @@
 // Balls (or a solver's bodies) and the pairs between them as a graph: each
 // node's neighbours in one list, and the layers of nodes around some seeds,
 // breadth-first (layer k + 1: every node next to one of layer k not reached
-// before). The resting solver's bounce region (soft_stages.cpp) and the
+// before). The resting solver's bounce region (staged_solve.cpp) and the
 // sleepers a pair wakes (sleep.cpp) are both such layers.
 //
 // Everything depends on the pairs and seeds alone, in their order, so the

@@ -1,3 +1,5 @@
+// The solver rows cut into strips run side by side (row_strips.h).
+
 #include "sim/collision/resting/row_strips.h"
 
 #include <oneapi/tbb/parallel_for.h>

@@ -1,3 +1,5 @@
+// Balls at rest put to sleep and woken again (sleep.h).
+
 #include "sim/collision/resting/sleep.h"
 
 #include <algorithm>

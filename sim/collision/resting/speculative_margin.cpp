@@ -1,3 +1,5 @@
+// How far each ball grows for speculative contacts (speculative_margin.h).
+
 #include "sim/collision/resting/speculative_margin.h"
 
 #include <algorithm>

@@ -1,0 +1,382 @@
+// The rows and bodies of a resting-contact solve (resting_rows.h): stages
+// 0-2 that build them, the strip order, and the write-back to the balls.
+
+#include "sim/collision/resting/resting_rows.h"
+
+#include "sim/collision/narrow_phase.h"
+#include "sim/collision/response/positional_correction.h"
+#include "sim/collision/response/response.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab::sim {
+
+void RestingRows::build(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                        std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile,
+                        const unsigned char* asleep)
+{
+    m_asleep = asleep;
+    m_startShift[0] = c.startLag * c.gravityX * c.h * c.h;
+    m_startShift[1] = c.startLag * c.gravityY * c.h * c.h;
+    prepare(balls.size());
+    takeBackWallBounces(balls, c);
+    buildPairRows(balls, c, pairs, touching);
+    clock.lap(profile.build);
+    buildWallRows(balls, c);
+    static_assert(sizeof(BodyPosition) == 4 * sizeof(double));
+    strips.build(&bodyPositions.data()->x, rowCount,
+                 [this](std::size_t k) { return 4 * static_cast<std::size_t>(pairRows[k].a); },
+                 [this](std::size_t k) { return 4 * static_cast<std::size_t>(pairRows[k].b); });
+    sortRowsByStrip();
+    stripMoved.resize(strips.stripCount());
+    stripSolves.resize(strips.stripCount());
+    clock.lap(profile.wallScan);
+}
+
+void moveWithinWalls(double& px, double& py, double r, double dx, double dy, const SubStepContext& c)
+{
+    if (dx == 0.0 && dy == 0.0)
+        return;
+    const Vec2 p(px, py);
+    Vec2 q(p.x() + dx, p.y() + dy);
+    keepInsideWalls(p, q, r, c.box, c.walls);
+    px = q.x();
+    py = q.y();
+}
+
+// The rows, their impulses and approach speeds moved into strip order
+// (row_strips.h), so the rows of a strip are read side by side.
+void RestingRows::sortRowsByStrip()
+{
+    const std::vector<int>& order = strips.order();
+    if (m_spareRows.size() < rowCount) // the arrays only grow
+        m_spareRows.resize(rowCount);
+    for (auto* values : {&m_spareImpulse, &m_spareVn0})
+        if (values->size() < rowCount)
+            values->resize(rowCount);
+    for (std::size_t i = 0; i < rowCount; ++i) {
+        const auto k = static_cast<std::size_t>(order[i]);
+        m_spareRows[i] = pairRows[k];
+        m_spareImpulse[i] = impulse[k];
+        m_spareVn0[i] = vn0[k];
+    }
+    pairRows.swap(m_spareRows);
+    impulse.swap(m_spareImpulse);
+    vn0.swap(m_spareVn0);
+}
+
+// The impulses back in (a, b) order, beside m_rowBalls, for the next
+// sub-step's warm-start merge.
+void RestingRows::restoreRowOrder()
+{
+    const std::vector<int>& order = strips.order();
+    if (m_spareImpulse.size() < rowCount)
+        m_spareImpulse.resize(rowCount);
+    for (std::size_t i = 0; i < rowCount; ++i)
+        m_spareImpulse[static_cast<std::size_t>(order[i])] = impulse[i];
+    impulse.swap(m_spareImpulse);
+}
+
+void RestingRows::prepare(int n)
+{
+    const auto size = static_cast<std::size_t>(n);
+    if (m_warmCount != n) { // another set of balls: last sub-step's impulses mean nothing
+        rowCount = 0;
+        wallRows.clear();
+        m_dormantBalls.clear();
+        m_dormantImpulse.clear();
+        m_warmCount = n;
+    }
+    if (bodyOf.size() != size)
+        bodyOf.assign(size, -1);
+    if (bodies.size() < size) {
+        bodies.resize(size);
+        bodyPositions.resize(size);
+        bodyVelocity0.resize(2 * size);
+        bodyShift.resize(2 * size);
+    }
+    bodyCount = 0;
+}
+
+// The body of ball i, gathered from the balls the first time a row names it
+// (its lines are in cache then): the velocity the passes change and the one
+// before, the position and radius.
+int RestingRows::bodyFor(std::size_t i, const BallState& balls)
+{
+    int k = bodyOf[i];
+    if (k >= 0)
+        return k;
+    k = bodyCount++;
+    bodyOf[i] = k;
+    const double* v = balls.velocity.data();
+    const double* x = balls.position.data();
+    const auto kk = static_cast<std::size_t>(k);
+    // A sleeper is at rest and cannot be moved: inverse mass 0.
+    const bool sleeps = m_asleep && m_asleep[i];
+    const double w = sleeps ? 0.0 : balls.inverseMass[static_cast<Eigen::Index>(i)];
+    bodies[kk] = {{v[2 * i], v[2 * i + 1]}, w, -1};
+    // A ball whose wall bounce stage 0 took back ended the integrator's step
+    // on the wall: along that axis the position stage moves it by its new
+    // velocity alone, from the wall.
+    const unsigned char* back = &tookBack[2 * i];
+    bodyVelocity0[2 * kk] = back[0] ? 0.0 : v[2 * i];
+    bodyVelocity0[2 * kk + 1] = back[1] ? 0.0 : v[2 * i + 1];
+    // What x − v·h misses its start by (sub_step_context.h); along an axis
+    // whose wall bounce was taken back it starts on the wall instead.
+    for (int axis = 0; axis < 2; ++axis)
+        bodyShift[2 * kk + static_cast<std::size_t>(axis)] = back[axis] ? 0.0 : m_startShift[axis];
+    bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)], w};
+    return k;
+}
+
+// Stage 0. A ball the wall stage has just put on an enabled wall (its gap
+// is exactly 0, as clamp leaves it) and sent away at u met the wall at u/e_w.
+// That bounce is taken back, so the rows see the ball as it came: its speed
+// into the wall, and a start position one sub-step of that speed away. The
+// solver makes the bounce again with the other contacts (relax stops the
+// ball, the restitution stage sends it away at e_w times its speed if that
+// was faster than v_rest). A ball under a pile then no longer hops at
+// e_w·g·h every step and kicks the pile above it.
+void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
+{
+    tookBack.assign(2 * static_cast<std::size_t>(balls.size()), 0);
+    const double ew = c.walls.restitution;
+    if (!(ew > 0.0))
+        return;
+    const bool on[2][2] = {{c.walls.left, c.walls.right}, {c.walls.top, c.walls.bottom}};
+    const double size[2] = {c.box.width, c.box.height};
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const bool staged = c.solver.stages > 1;
+    for (int i = 0; i < balls.size(); ++i) {
+        const double r = radius[i];
+        for (int k = 0; k < 2; ++k) {
+            if (!(2.0 * r <= size[k]))
+                continue;
+            double& vk = v[2 * i + k];
+            const double p = x[2 * i + k];
+            // The staged solve takes back only the small bounces of a ball
+            // resting on a wall; a faster one stays the wall stage's, which
+            // keeps a restitution-1 ball's energy exactly.
+            if (staged && !(std::abs(vk) <= ew * c.restingSpeed))
+                continue;
+            if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
+                vk = -vk / ew;
+                tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = 1;
+            }
+        }
+    }
+}
+
+// Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
+// rows, so the impulses of pairs still in contact are found by a merge). The
+// line of impact and the gap come from the centres at the start of the
+// sub-step. A pair may close that gap and no more: its normal speed may not
+// drop below −allowed (0 for pairs that overlap). The
+// pairs that overlap now are copied to `touching` without a branch: each is
+// written, and the count moves on by the result of the test.
+void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                                  std::vector<Contact>* touching)
+{
+    const double* x = balls.position.data();
+    const double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    const std::size_t m = pairs.size();
+    // The arrays only grow; the strip sort and its undoing swap some of them
+    // with their spares, so each is checked on its own.
+    if (m_spareRows.size() < m)
+        m_spareRows.resize(m);
+    if (m_spareBalls.size() < m)
+        m_spareBalls.resize(m);
+    for (auto* values : {&m_spareImpulse, &vn0})
+        if (values->size() < m)
+            values->resize(m);
+    std::size_t old = 0, count = 0, overlapping = 0, dormant = 0;
+    const std::size_t oldCount = rowCount;
+    const Contact* oldBalls = m_rowBalls.data();
+    const double* oldImpulse = impulse.data();
+    const std::size_t dormantCount = m_dormantBalls.size();
+    m_spareDormantBalls.clear();
+    m_spareDormantImpulse.clear();
+    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
+    if (touching && touching->size() < m)
+        touching->resize(m);
+    unsigned char* colliding = balls.colliding.data();
+    for (std::size_t p = 0; p < m; ++p) {
+        const Contact ct = pairs[p];
+        const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
+        const double s = radius[a] + radius[b];
+        const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+        if (touching) {
+            const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
+            (*touching)[overlapping] = ct;
+            overlapping += overlap;
+            colliding[a] |= static_cast<unsigned char>(overlap);
+            colliding[b] |= static_cast<unsigned char>(overlap);
+        }
+        double wa = inverseMass[a], wb = inverseMass[b];
+        if (!detail::resolvable(wa, wb))
+            continue;
+        // Last sub-step's impulse of this pair, whether it was a row or a
+        // pair of two sleepers.
+        while (old < oldCount && before(oldBalls[old], ct))
+            ++old;
+        while (dormant < dormantCount && before(m_dormantBalls[dormant], ct))
+            ++dormant;
+        double warm = (old < oldCount && oldBalls[old] == ct) ? oldImpulse[old] : 0.0;
+        if (dormant < dormantCount && m_dormantBalls[dormant] == ct)
+            warm = m_dormantImpulse[dormant];
+        if (m_asleep) {
+            const bool sa = m_asleep[a], sb = m_asleep[b];
+            if (sa && sb) { // two sleepers: no row, the impulse kept
+                m_spareDormantBalls.push_back(ct);
+                m_spareDormantImpulse.push_back(warm);
+                continue;
+            }
+            wa = sa ? 0.0 : wa;
+            wb = sb ? 0.0 : wb;
+        }
+        // The line of impact and the gap at the start of the sub-step: the
+        // integrator moved each ball by v·h before this stage, so the centres
+        // were d − (v_b − v_a)·h apart. A fast ball may already sit deep in
+        // (or beyond) the other at the end, where the direction means little.
+        const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
+        const double sx = dx - dvx * c.h, sy = dy - dvy * c.h;
+        const double len = std::sqrt(sx * sx + sy * sy);
+        Vec2 nrm;
+        if (len > 1e-12 * s && std::isfinite(len))
+            nrm = Vec2(sx / len, sy / len);
+        else
+            nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
+        // The approach the pair ends the step with, less the speed gravity
+        // gave a ball that contacts held in the last solve: those contacts
+        // take it out again (a ball landing on a resting pile meets a ball
+        // at rest, not one falling at g·h).
+        const double heldA = a < m_held.size() && m_held[a] ? 1.0 : 0.0;
+        const double heldB = b < m_held.size() && m_held[b] ? 1.0 : 0.0;
+        const double approach = (dvx - (heldB - heldA) * c.gravityX * c.h) * nrm.x() +
+                                (dvy - (heldB - heldA) * c.gravityY * c.h) * nrm.y();
+        const double gapStart = len - s;
+        // A gap may close within the sub-step and no more: its normal speed
+        // may not drop below −gap/h (0 for a pair that overlapped already).
+        const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
+        const int ba = bodyFor(a, balls), bb = bodyFor(b, balls);
+        m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
+        m_spareBalls[count] = ct;
+        m_spareImpulse[count] = warm;
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        vn0[count] = warm > 0.0 ? 0.0 : approach;
+        ++count;
+    }
+    if (touching)
+        touching->resize(overlapping);
+    pairRows.swap(m_spareRows);
+    m_rowBalls.swap(m_spareBalls);
+    impulse.swap(m_spareImpulse);
+    rowCount = count;
+    m_dormantBalls.swap(m_spareDormantBalls);
+    m_dormantImpulse.swap(m_spareDormantImpulse);
+}
+
+// Stage 2. One row for a ball on an enabled wall, or nearer to it than the
+// slop plus the distance gravity moves a ball from rest in one sub-step (so
+// it is caught before it hits, not after), plus what it moved away from the
+// wall in this sub-step (a ball that just bounced off a wall can be pushed
+// back into it by the balls above).
+//
+// How fast it may still move towards the wall: the position stage moves a
+// body by (v − v_before)·h, so a ball whose speed towards the wall was u
+// when the integrator moved it (negative: away) ends the sub-step
+// gap − (v_wall − u)·h from the wall, where v_wall is its new speed towards
+// it: it stays inside only for v_wall ≤ gap/h + u. A ball that is not
+// near the end of its flight is never held back (a lone ball bounces as the
+// wall model makes it); a ball whose bounce stage 0 took back starts on the
+// wall (u = 0 for the position stage).
+void RestingRows::buildWallRows(const BallState& balls, const SubStepContext& c)
+{
+    m_spareWalls.clear();
+    const WallSettings& walls = c.walls;
+    const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
+    const double size[2] = {c.box.width, c.box.height};
+    const double reach = c.gravity * c.h * c.h;
+    const double h = c.h;
+    const double* x = balls.position.data();
+    const double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    std::size_t old = 0;
+    if (on[0][0] || on[0][1] || on[1][0] || on[1][1]) {
+        auto add = [&](int i, int k, double side, double gap) {
+            const int key = 4 * i + 2 * k + (side > 0.0 ? 1 : 0);
+            while (old < wallRows.size() && wallRows[old].key < key)
+                ++old;
+            const double warm = (old < wallRows.size() && wallRows[old].key == key) ? wallRows[old].impulse : 0.0;
+            const double w = inverseMass[i];
+            const int bi = bodyFor(static_cast<std::size_t>(i), balls);
+            const double into = side * v[2 * i + k];
+            // The integrator has moved the ball by its speed into the wall
+            // already (none for a ball whose bounce stage 0 took back: it
+            // starts on the wall), so the speed that ends the sub-step on the
+            // wall is the gap over h plus that speed, the same as a pair
+            // row's gap at the start of the sub-step over h.
+            const double moved = tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] ? 0.0 : into;
+            const double allowed = std::max(std::max(gap, 0.0) / h + moved, 0.0);
+            m_spareWalls.push_back({key, bi, k, side, allowed, w, into, warm});
+        };
+        // Nothing near a wall gets a row: a quick test on the largest margin first.
+        for (int i = 0; i < balls.size(); ++i) {
+            const double r = radius[i], w = inverseMass[i];
+            const double px = x[2 * i], py = x[2 * i + 1], vx = v[2 * i], vy = v[2 * i + 1];
+            const double far = c.solver.slop * r + reach + (std::abs(vx) + std::abs(vy)) * h;
+            if (px - r >= far && size[0] - r - px >= far && py - r >= far && size[1] - r - py >= far)
+                continue;
+            if (!(w > 0.0) || !std::isfinite(w) || (m_asleep && m_asleep[i]))
+                continue; // a sleeper needs no wall: nothing moves it
+            for (int k = 0; k < 2; ++k) {
+                if (!(2.0 * r <= size[k]))
+                    continue; // wider than the box: the wall stage keeps it in the middle
+                const double p = x[2 * i + k], vk = v[2 * i + k];
+                const double margin = c.solver.slop * r + reach;
+                const double gapLow = p - r, gapHigh = size[k] - r - p;
+                if (on[k][0] && gapLow < margin + std::max(vk, 0.0) * h)
+                    add(i, k, -1.0, gapLow);
+                if (on[k][1] && gapHigh < margin + std::max(-vk, 0.0) * h)
+                    add(i, k, 1.0, gapHigh);
+            }
+        }
+    }
+    wallRows.swap(m_spareWalls);
+}
+
+// Stage 8. Velocities and positions back to the balls, in ball order; every
+// ball is without a body again. A ball without a body moves by (v − v)·h:
+// nowhere, or to NaN when its velocity is not finite, so a ball that blew up
+// is seen by the world's blow-up check instead of standing still.
+void RestingRows::writeBack(BallState& balls, const SubStepContext& c)
+{
+    double* x = balls.position.data();
+    double* v = balls.velocity.data();
+    m_held.assign(static_cast<std::size_t>(balls.size()), 0);
+    for (int i = 0; i < balls.size(); ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        const int k = bodyOf[ii];
+        if (k >= 0) {
+            const auto kk = static_cast<std::size_t>(k);
+            m_held[ii] = bodies[kk].changed >= 0;
+            v[2 * i] = bodies[kk].v[0];
+            v[2 * i + 1] = bodies[kk].v[1];
+            x[2 * i] = bodyPositions[kk].x;
+            x[2 * i + 1] = bodyPositions[kk].y;
+            bodyOf[ii] = -1;
+            continue;
+        }
+        moveWithinWalls(x[2 * i], x[2 * i + 1], balls.radius[i], (v[2 * i] - v[2 * i]) * c.h, (v[2 * i + 1] - v[2 * i + 1]) * c.h,
+               c);
+    }
+}
+
+} // namespace forcelab::sim
