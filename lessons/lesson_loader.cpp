@@ -6,6 +6,7 @@
 #include "lesson_overrides.h"
 #include "message_text.h"
 #include "lesson_parser.h"
+#include "sim/world/number_text.h"
 #include "sim/world/world.h"
 
 #include <QDir>
@@ -147,10 +148,10 @@ sim::Error problemAtKey(const QString& keyPath, const QString& message, const QS
     return problem(source, message, keyPath);
 }
 
-/// A number as a reader writes it: "600", "0.5", "18.1".
+/// A number as a reader writes it, to 6 significant digits: "600", "0.5", "18.1".
 QString plain(double v)
 {
-    return QString::number(v, 'g', 6);
+    return QString::fromStdString(sim::roundedText(v, 6));
 }
 
 /// Whether the balls fit their box, before any work is done: a ball whose

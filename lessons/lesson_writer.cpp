@@ -1,15 +1,15 @@
 // saveLesson: a Lesson back to format-1 JSON text. Written by hand rather
 // than with QJsonDocument so the keys come in reading order (QJsonObject sorts
 // them) and every double is printed with the shortest digits that read back
-// to the same bits (std::to_chars).
+// to the same bits (sim::shortestText, which is std::to_chars).
 
 #include "lesson_limits.h"
 #include "lesson_loader.h"
 #include "sim/world/names.h"
+#include "sim/world/number_text.h"
 #include "sim/world/parameters.h"
 #include "sim/world/scene_keys.h"
 
-#include <charconv>
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -22,13 +22,11 @@ using lessons::kMaxNumberSeed;
 
 QByteArray num(double v)
 {
-    char buf[64];
-    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
     // Non-finite values cannot be written as JSON: they never pass the loader
     // either, so writing null makes the problem visible on the next load.
-    if (ec != std::errc() || !std::isfinite(v))
+    if (!std::isfinite(v))
         return "null";
-    return QByteArray(buf, static_cast<qsizetype>(end - buf));
+    return QByteArray::fromStdString(sim::shortestText(v));
 }
 
 QByteArray num(int v)

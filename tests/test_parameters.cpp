@@ -6,6 +6,7 @@
 #include "sim_test_util.h"
 
 #include "sim/world/names.h"
+#include "sim/world/number_text.h"
 #include "sim/world/parameter_reference.h"
 #include "sim/world/parameters.h"
 #include "sim/world/world.h"
@@ -13,6 +14,7 @@
 #include "sim_check.h"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -129,3 +131,44 @@ TEST_CASE("TestParameters::referenceIsUpToDate")
     }
 }
 
+
+// The one formatter of numbers and ranges (sim/world/number_text.h), which
+// sim's messages, the lesson reader's messages, the docs and saved lessons share.
+TEST_CASE("TestParameters::numberAndRangeText")
+{
+    // Whole numbers up to 1e9 in full, others in the shortest round-trip form.
+    CHECK(numberText(0.0) == "0");
+    CHECK(numberText(-0.0) == "0");
+    CHECK(numberText(3.0) == "3");
+    CHECK(numberText(-42.0) == "-42");
+    CHECK(numberText(100000.0) == "100000");
+    CHECK(numberText(1e9) == "1000000000");
+    CHECK(numberText(1e10) == "1e+10");
+    CHECK(numberText(0.1) == "0.1");
+    CHECK(numberText(0.1 + 0.2) == "0.30000000000000004");
+    CHECK(numberText(1e-9) == "1e-09");
+    CHECK(numberText(2.5) == "2.5");
+    CHECK(numberText(1e15) == "1e+15");
+    CHECK(numberText(std::numeric_limits<double>::infinity()) == "inf");
+    // The saved form has no whole-number rule: 1e5 is shorter than 100000.
+    CHECK(shortestText(100000.0) == "1e+05");
+    CHECK(shortestText(600.0) == "600");
+    CHECK(shortestText(1.0 / 3.0) == "0.3333333333333333");
+    // Rounded to significant digits, as printf's %g.
+    CHECK(roundedText(1.0 / 60.0, 2) == "0.017");
+    CHECK(roundedText(123456.7, 4) == "1.235e+05");
+    CHECK(roundedText(600.0, 6) == "600");
+    CHECK(roundedText(18.1, 6) == "18.1");
+    // Ranges: brackets for closed ends, parentheses for open ones, the unit after a space.
+    CHECK(rangeText(0, 1) == "[0, 1]");
+    CHECK(rangeText(0, 1, "s", true) == "(0, 1] s");
+    CHECK(rangeText(0, 1, {}, false, true) == "[0, 1)");
+    CHECK(rangeText(1e-15, 1) == "[1e-15, 1]");
+    CHECK(rangeText(-1e12, 1e12, "px³/(mass·s²)") == "[-1e+12, 1e+12] px³/(mass·s²)");
+    CHECK(rangeText(-1e7, 1e7, "px") == "[-10000000, 10000000] px");
+    // A row's range is the same text, or its words for switches and choices.
+    CHECK(rangeText(*findParameter("time.dt")) == "(0, 1] s");
+    CHECK(rangeText(*findParameter("world.restitution")) == "[0, 1]");
+    CHECK(rangeText(*findParameter("models.point.strength")) == "[0, 1e+15] px³/s²");
+    CHECK(rangeText(*findParameter("world.middle_wall")) == "true or false");
+}

@@ -3,7 +3,6 @@
 #include "sim/world/names.h"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 
 namespace forcelab::sim {
@@ -270,15 +269,6 @@ int choiceIndex(const Parameter& p, std::string_view name)
     return p.alias ? p.alias(name) : -1;
 }
 
-std::string numberText(double v)
-{
-    if (std::isfinite(v) && std::floor(v) == v && std::abs(v) <= 1e9)
-        return std::to_string(static_cast<long long>(v));
-    char buf[64];
-    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    return ec == std::errc() ? std::string(buf, end) : std::string("?");
-}
-
 std::string rangeText(const Parameter& p)
 {
     switch (p.type) {
@@ -290,11 +280,7 @@ std::string rangeText(const Parameter& p)
     case ParameterType::Integer:
         break;
     }
-    std::string s(p.loOpen ? "(" : "[");
-    s.append(numberText(p.lo)).append(", ").append(numberText(p.hi)).append(p.hiOpen ? ")" : "]");
-    if (!p.unit.empty())
-        s.append(" ").append(p.unit);
-    return s;
+    return rangeText(p.lo, p.hi, p.unit, p.loOpen, p.hiOpen);
 }
 
 std::optional<std::string> checkValue(const Parameter& p, double v)

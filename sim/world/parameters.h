@@ -7,6 +7,7 @@
 // reference in docs/ all walk this table, so a new setting is one row plus
 // its physics.
 
+#include "sim/world/number_text.h" // numberText, rangeText(lo, hi, …): the formatter
 #include "sim/world/world_settings.h"
 
 #include <limits>
@@ -73,7 +74,8 @@ std::string_view rowName(const Parameter& p);
 /// The index of a choice's name (or alias), or −1.
 int choiceIndex(const Parameter& p, std::string_view name);
 
-/// "[0, 1]", "(0, 1] s": the allowed values, for messages and the docs.
+/// "[0, 1]", "(0, 1] s": the allowed values, for messages and the docs
+/// ("true or false", "one of …" for switches and choices).
 std::string rangeText(const Parameter& p);
 
 /// nullopt when `value` is allowed; otherwise what is wrong ("1.5 is outside
@@ -82,9 +84,5 @@ std::optional<std::string> checkValue(const Parameter& p, double value);
 
 /// The value of a row in a default WorldSettings.
 double defaultValue(const Parameter& p);
-
-/// A number in the shortest form that reads back to the same double (whole
-/// numbers up to 1e9 in full), as messages and the docs print them.
-std::string numberText(double v);
 
 } // namespace forcelab::sim

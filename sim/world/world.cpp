@@ -6,6 +6,7 @@
 #include "sim/forces/force_models.h"
 #include "sim/integrators/integrator_info.h"
 #include "sim/world/names.h"
+#include "sim/world/number_text.h"
 #include "sim/world/parameters.h"
 #include "sim/integrators/stability.h"
 #include "sim/world/walls.h"
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 namespace forcelab::sim {
@@ -50,10 +50,7 @@ public:
         if (m_error)
             return;
         if (!std::isfinite(v) || v > hi || (loOpen ? v <= lo : v < lo)) {
-            std::string s = numberText(v);
-            s.append(" is outside ").append(loOpen ? "(" : "[").append(numberText(lo)).append(", ");
-            s.append(numberText(hi)).append("]");
-            fail(key, s);
+            fail(key, numberText(v) + " is outside " + rangeText(lo, hi, {}, loOpen));
         }
     }
     void fail(const char* key, const std::string& what)
@@ -260,9 +257,7 @@ bool World::blewUp() const
 std::string World::explainBlowUp(double h, const std::optional<std::string>& unresolved) const
 {
     const WorldSettings& s = m_settings;
-    char when[32];
-    std::snprintf(when, sizeof when, "%.4g", m_time);
-    const std::string stopped = std::string("the simulation stopped at t = ") + when + " s, one step before ";
+    const std::string stopped = "the simulation stopped at t = " + roundedText(m_time, 4) + " s, one step before ";
     if (unresolved)
         return stopped + *unresolved;
     if (m_gaveUp && m_stuckSubStep > 0.0)
@@ -306,10 +301,9 @@ std::string World::explainBlowUp(double h, const std::optional<std::string>& unr
 std::string World::explainSingularApproach(double h) const
 {
     const WorldSettings& s = m_settings;
-    char shortest[32];
-    std::snprintf(shortest, sizeof shortest, "%.2g", m_stuckSubStep);
     const std::string what = std::string(toString(s.time.integrator)) + " could not hold its tolerance of " +
-                             numberText(s.time.tolerance) + " even with sub-steps of " + shortest + " s";
+                             numberText(s.time.tolerance) + " even with sub-steps of " +
+                             roundedText(m_stuckSubStep, 2) + " s";
     // A 1/d² pull the world knows: the pair, or the ball and the point, with
     // the shortest free fall, if it is far below the step.
     if (const auto pass = shortestFallTime(s, m_balls, Pulls::PairsAndPoint); pass && pass->fallTime < 1e-3 * h)
@@ -337,10 +331,8 @@ std::string World::explainSingularApproach(double h) const
                 model = source.model;
             }
         }
-        char text[160];
-        std::snprintf(text, sizeof text, ": ball %d at (%.6g, %.6g) px is pulled at %.2g px/s²", ball,
-                      m_balls.position(0, ball), m_balls.position(1, ball), largest);
-        where = text;
+        where = ": ball " + std::to_string(ball) + " at (" + roundedText(m_balls.position(0, ball), 6) + ", " +
+                roundedText(m_balls.position(1, ball), 6) + ") px is pulled at " + roundedText(largest, 2) + " px/s²";
         if (!model.empty())
             where.append(" by the ").append(model);
     }
@@ -417,9 +409,8 @@ void World::step()
     // samples: the energy would turn to NaN without a word.
     if (!unresolved && !m_gaveUp && !blewUp()) {
         if (const int k = firstBallWithoutPotential(m_settings, m_balls, m_balls.position); k >= 0) {
-            char where[96];
-            std::snprintf(where, sizeof where, "ball %d at (%.4g, %.4g) px", k, m_balls.position(0, k),
-                          m_balls.position(1, k));
+            const std::string where = "ball " + std::to_string(k) + " at (" + roundedText(m_balls.position(0, k), 4) +
+                                      ", " + roundedText(m_balls.position(1, k), 4) + ") px";
             unresolved = "a place where the potential U of " + describeCustomLaw(m_settings.custom) +
                          " is not a number: " + where + "; a potential must have a value wherever its force does";
         }
