@@ -1,10 +1,12 @@
 #pragma once
 // Draws a world with QPainter: the box, the balls (cached sprites), and the
-// teaching overlays. The canvas calls it from paintEvent; the render benchmark
-// and offscreen renders call it on a QImage, so every picture of a world comes
-// from the same code.
+// teaching overlays (one record each under overlays/, drawn in the order of
+// overlays/overlay_table.h). The canvas calls it from paintEvent; the render
+// benchmark and offscreen renders call it on a QImage, so every picture of a
+// world comes from the same code.
 
 #include "ball_sprites.h"
+#include "overlays/path_layer.h"
 #include "view_transform.h"
 
 #include "sim/world/world.h"
@@ -195,9 +197,24 @@ public:
     static QStringList totalsText(const sim::World& world, bool wide = false);
     /// The same from an energy and a momentum already worked out.
     static QStringList totalsText(const sim::Energy& e, const sim::Vec2& momentum, bool wide = false);
-    /// The lines of the readout of ball `selected` (ball 0 when none).
+    /// The shapes the readout's lines come in: the canvas panel's five lines,
+    /// two long lines for a strip above the box, or the stage bar's short lines.
+    enum class ReadoutShape { Panel, Wide, Short };
+    /// The lines of the readout of ball `selected` (ball 0 when none; none at
+    /// all without balls); accelerations null: shown as 0.
+    static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations,
+                                   ReadoutShape shape);
+    /// The same in the Wide shape, or the Panel shape when not `wide`.
     static QStringList readoutText(const sim::World& world, int selected, const sim::Matrix2X* accelerations,
                                    bool wide = false);
+    /// The same for ball `ball` at position x, velocity v and acceleration a
+    /// at time t: the one place the readout's lines are written.
+    static QStringList readoutText(int ball, const sim::Vec2& x, const sim::Vec2& v, const sim::Vec2& a, double time,
+                                   ReadoutShape shape);
+    /// The totals in the stage bar's short lines: in a `column` the energy and
+    /// the momentum get head lines of their own and the momentum's x and y a
+    /// line each; in a row they take fewer lines.
+    static QStringList stageTotalsText(const sim::Energy& e, const sim::Vec2& momentum, bool column);
     /// Above this many balls, per-source force arrows are drawn for the selected ball only.
     static constexpr int kMaxSourceBalls = 12;
     /// Above this many balls, the momenta inset shows the sum only.
@@ -209,44 +226,7 @@ public:
     const PaintedFrame& lastFrame() const { return m_frame; }
 
 private:
-    void paintBox(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintBalls(QPainter& p, const QRectF& area, const ViewTransform& view, const sim::World& world,
-                    const PaintOptions& options, qreal dpr);
-    void paintMarkers(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintArrows(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
-                     const sim::Matrix2X* accelerations);
-    void paintBroadPhase(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintTrails(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options,
-                     qreal dpr);
-    void paintCentreOfMass(QPainter& p, const ViewTransform& view, const sim::World& world,
-                           const PaintOptions& options);
-    void paintMomenta(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
-    void paintApexes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintSourceLegend(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options);
-    void paintCollision(QPainter& p, const ViewTransform& view, const PaintOptions& options);
-    void paintGhost(QPainter& p, const ViewTransform& view, const sim::World& ghost, const PaintOptions& options);
-    void paintTotals(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
-                     bool wide);
-    void paintVanes(QPainter& p, const ViewTransform& view, const sim::World& world, const PaintOptions& options);
-    void paintReadout(QPainter& p, const QRectF& panel, const sim::World& world, const PaintOptions& options,
-                      const sim::Matrix2X* accelerations, bool wide);
-
-    // The paths as a layer the size of the box: each frame draws only the
-    // segments recorded since the last one; it is drawn afresh when the
-    // view, the recorder or the window of records shown changes.
-    struct PathLayer {
-        QImage image;
-        quint64 generation = 0;
-        qint64 start = -1;   // first record shown (TrailRecorder::recorded() numbering)
-        qint64 drawnTo = -1; // last record drawn
-        QRectF box;          // widget px the layer covers
-        double scale = 0.0;
-        qreal dpr = 0.0;
-        double lineScale = 0.0;
-        std::vector<int> balls;
-        std::vector<sim::Rgb> colors;
-    };
-
+    // What the overlays keep from frame to frame (overlays/overlay.h).
     BallSprites m_sprites;
     PathLayer m_paths;
     PaintedFrame m_frame;

@@ -1,0 +1,57 @@
+// The panels' font, size and card (panel.h).
+
+#include "panel.h"
+
+#include "sim/forces/force_models.h"
+
+#include <QFontDatabase>
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPen>
+
+#include <cmath>
+
+namespace forcelab {
+
+QFont panelFont(int pixels, double lineScale)
+{
+    QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    font.setPixelSize(static_cast<int>(std::lround(pixels * lineScale)));
+    return font;
+}
+
+QSizeF panelSize(const QFont& font, const QString& widest, int lines, double lineScale)
+{
+    const QFontMetricsF fm(font);
+    const double pad = 8.0 * lineScale;
+    return {fm.horizontalAdvance(widest) + 2 * pad, fm.lineSpacing() * lines + 2 * pad};
+}
+
+void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStringList& lines,
+               const QList<QColor>& colors, double lineScale)
+{
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double pad = 8.0 * lineScale;
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(panel, 6, 6);
+    double y = panel.top() + pad + fm.ascent();
+    for (qsizetype k = 0; k < lines.size(); ++k) {
+        p.setPen(colors.value(k, QColor(0x1d, 0x22, 0x2c)));
+        p.drawText(QPointF(panel.left() + pad, y), lines[k]);
+        y += fm.lineSpacing();
+    }
+}
+
+QStringList sourceLegend(const sim::WorldSettings& settings)
+{
+    QStringList lines{QStringLiteral("forces by source")};
+    for (const sim::ForceModelInfo& m : sim::forceModels())
+        if (m.on(settings))
+            lines.append(QStringLiteral("── ") + QString::fromLatin1(m.name.data(), static_cast<qsizetype>(m.name.size())));
+    return lines;
+}
+
+} // namespace forcelab
