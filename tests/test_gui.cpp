@@ -6,6 +6,7 @@
 #include "ui/canvas/canvas.h"
 #include "ui/window/main_window.h"
 #include "ui/controls/parameter_panel.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/drawing/view_transform.h"
 #include "ui/drawing/world_painter.h"
@@ -124,7 +125,8 @@ void GuiTest::gravityControlChangesWorldAndFall()
 {
     SimulationController controller;
     QVERIFY(!controller.setScene(fallingBall()));
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
 
@@ -184,7 +186,8 @@ void GuiTest::refusedEditShowsErrorAndControlReturns()
 {
     SimulationController controller;
     QVERIFY(!controller.setScene(fallingBall()));
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     QSignalSpy errors(&controller, &SimulationController::errorOccurred);
 
     auto* drag = panel.findChild<QGroupBox*>(QStringLiteral("dragGroup"));

@@ -11,6 +11,7 @@
 #include "ui/window/main_window.h"
 #include "ui/controls/number_control.h"
 #include "ui/controls/parameter_panel.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/docks/trajectory_export.h"
 
@@ -354,7 +355,8 @@ void GuiWorkbenchTest::tableCoversEveryControl()
     // "Every parameter": each row of the panel has at least one case below,
     // and every control name a lesson may list shows at least one row.
     SimulationController controller;
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     QStringList covered;
     for (const ControlCase& c : controlCases())
         covered.append(QString::fromLatin1(c.row));
@@ -378,7 +380,9 @@ void GuiWorkbenchTest::tableCoversEveryControl()
             QVERIFY2(sections.contains(key.section(QLatin1Char('.'), 1, 1)), qPrintable(key));
         else
             QVERIFY2(panel.rowKeys().contains(QString::fromUtf8(p.control.data(), static_cast<qsizetype>(p.control.size()))),
-                     qPrintable(key));
+                     qPrintable(key));        // The widget that edits it, whatever kind it is.
+        QVERIFY2(panel.controlWidget(QString::fromUtf8(p.control.data(), static_cast<qsizetype>(p.control.size()))),
+                 qPrintable(key));
     }
 }
 
@@ -395,7 +399,8 @@ void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes()
     const ControlCase& c = controlCases()[std::size_t(index)];
     SimulationController controller;
     QVERIFY(!controller.setScene(plainScene()));
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     panel.setShowAll(true);
     QSignalSpy errors(&controller, &SimulationController::errorOccurred);
 
@@ -403,16 +408,16 @@ void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes()
     QVERIFY2(w, c.widget);
     const double before = c.field(controller);
     QVERIFY2(before != c.expected, "the case must change the field");
-    const int steps = panel.undoStack()->count();
+    const int steps = editor.undoStack()->count();
 
     QVERIFY(setWidget(w, c.value));
     QVERIFY2(errors.isEmpty(), errors.isEmpty() ? "" : qPrintable(errors.first().first().toString()));
     QCOMPARE(c.field(controller), c.expected);
-    QCOMPARE(panel.undoStack()->count(), steps + 1);
+    QCOMPARE(editor.undoStack()->count(), steps + 1);
 
-    panel.undoStack()->undo();
+    editor.undoStack()->undo();
     QCOMPARE(c.field(controller), before);
-    panel.undoStack()->redo();
+    editor.undoStack()->redo();
     QCOMPARE(c.field(controller), c.expected);
     QCOMPARE(errors.count(), 0);
 
@@ -435,7 +440,8 @@ void GuiWorkbenchTest::everyRowRoundTripsThroughItsWidget()
             p.set(scene.settings, 1.0);
     SimulationController controller;
     QVERIFY(!controller.setScene(scene));
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     panel.setShowAll(true);
     QSignalSpy errors(&controller, &SimulationController::errorOccurred);
     int checked = 0;
@@ -446,7 +452,7 @@ void GuiWorkbenchTest::everyRowRoundTripsThroughItsWidget()
         const QString stem = ParameterPanel::objectStem(p.control);
         const double before = p.get(controller.world().settings());
         const double wanted = forcelab::test::anotherValue(p, before);
-        const int steps = panel.undoStack()->index();
+        const int steps = editor.undoStack()->index();
         if (p.type == sim::ParameterType::Boolean) {
             auto* box = panel.findChild<QCheckBox*>(stem + QStringLiteral("Check"));
             QVERIFY2(box, qPrintable(key));
@@ -469,8 +475,8 @@ void GuiWorkbenchTest::everyRowRoundTripsThroughItsWidget()
             QVERIFY2(std::abs(shown - wanted) <= std::max(0.5 * digit, significant) * (1 + 1e-12),
                      qPrintable(QStringLiteral("%1: asked %2, shown %3").arg(key).arg(wanted).arg(shown)));
         }
-        QVERIFY2(panel.undoStack()->index() == steps + 1, qPrintable(key + QStringLiteral(": not one undo step")));
-        panel.undoStack()->undo();
+        QVERIFY2(editor.undoStack()->index() == steps + 1, qPrintable(key + QStringLiteral(": not one undo step")));
+        editor.undoStack()->undo();
         QVERIFY2(sameBits(p.get(controller.world().settings()), before), qPrintable(key));
         ++checked;
     }
@@ -483,7 +489,8 @@ void GuiWorkbenchTest::sliderDragIsOneUndoStep()
 {
     SimulationController controller;
     QVERIFY(!controller.setScene(plainScene()));
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     auto* slider = panel.findChild<QSlider*>(QStringLiteral("gravityYSlider"));
     QVERIFY(slider);
     const double g0 = controller.world().settings().gravity.g.y();
@@ -496,22 +503,23 @@ void GuiWorkbenchTest::sliderDragIsOneUndoStep()
         QCOMPARE(controller.world().settings().gravity.g.y(), want);
     }
     slider->setSliderDown(false);
-    QCOMPARE(panel.undoStack()->count(), 1);
+    QCOMPARE(editor.undoStack()->count(), 1);
     // A second drag of the same slider is a step of its own.
     slider->setSliderDown(true);
     slider->setValue(900);
     slider->setSliderDown(false);
-    QCOMPARE(panel.undoStack()->count(), 2);
-    panel.undoStack()->undo();
+    QCOMPARE(editor.undoStack()->count(), 2);
+    editor.undoStack()->undo();
     QCOMPARE(controller.world().settings().gravity.g.y(), 1200.0);
-    panel.undoStack()->undo();
+    editor.undoStack()->undo();
     QCOMPARE(controller.world().settings().gravity.g.y(), g0);
 }
 
 void GuiWorkbenchTest::logSliderSpansDecades()
 {
     SimulationController controller;
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     auto* control = panel.findChild<NumberControl*>(QStringLiteral("mutualGControl"));
     QVERIFY(control);
     // 1 … 1e8 over the slider: each eighth of the travel is a factor of 10.
@@ -551,7 +559,7 @@ void GuiWorkbenchTest::outOfRangeIsReportedNotClamped()
     QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("world.restitution")));
     QCOMPARE(window.controller()->world().settings().walls.restitution, before);
     QCOMPARE(spin->value(), before);
-    QCOMPARE(window.parameterPanel()->undoStack()->count(), 0);
+    QCOMPARE(window.parameterPanel()->editor()->undoStack()->count(), 0);
 
     // dt = 0 ms: the interval (0, 1] s is open at 0.
     auto* dt = window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("dtSpin"));
@@ -582,13 +590,14 @@ void GuiWorkbenchTest::resetRestoresTheLessonsValues()
     QCOMPARE(window.controller()->world().time(), 0.0);
     auto* gy = panel->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
     QCOMPARE(gy->value(), lesson.gravity.g.y());
-    QCOMPARE(panel->undoStack()->count(), 0);
+    QCOMPARE(panel->editor()->undoStack()->count(), 0);
 }
 
 void GuiWorkbenchTest::lessonControlsComeFirst()
 {
     SimulationController controller;
-    ParameterPanel panel(&controller);
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
     // The lesson's rows in its order, the speed always, nothing else.
     QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("\"no_such_control\".*ignored")));
     panel.setLessonControls({QStringLiteral("dt"), QStringLiteral("no_such_control"), QStringLiteral("gravity")});

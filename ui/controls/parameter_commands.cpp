@@ -2,6 +2,8 @@
 
 #include "ui/canvas/simulation_controller.h"
 
+#include <utility>
+
 namespace forcelab {
 
 SettingsCommand::SettingsCommand(SimulationController* controller, const QString& text,
@@ -23,17 +25,18 @@ void SettingsCommand::undo()
 
 void SettingsCommand::redo()
 {
-    if (m_applied) {
-        m_applied = false;
-        return;
-    }
-    m_controller->setSettings(m_after);
+    // Refused (only the first time can it be: later redos put back settings
+    // the world once took): the stack drops the command.
+    const bool accepted = m_controller->setSettings(m_after);
+    setObsolete(!accepted);
+    if (m_report)
+        *std::exchange(m_report, nullptr) = accepted;
 }
 
 bool SettingsCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* o = static_cast<const SettingsCommand*>(other);
-    if (o->m_mergeId != m_mergeId || o->m_session != m_session)
+    if (o->isObsolete() || o->m_mergeId != m_mergeId || o->m_session != m_session)
         return false;
     m_after = o->m_after;
     return true;
@@ -55,11 +58,10 @@ void SpawnCommand::undo()
 
 void SpawnCommand::redo()
 {
-    if (m_applied) {
-        m_applied = false;
-        return;
-    }
-    m_controller->respawn(m_after);
+    const bool accepted = m_controller->respawn(m_after);
+    setObsolete(!accepted);
+    if (m_report)
+        *std::exchange(m_report, nullptr) = accepted;
 }
 
 TimeScaleCommand::TimeScaleCommand(SimulationController* controller, double before, double after, int session)
@@ -78,11 +80,9 @@ void TimeScaleCommand::undo()
 
 void TimeScaleCommand::redo()
 {
-    if (m_applied) {
-        m_applied = false;
-        return;
-    }
     m_controller->setTimeScale(m_after);
+    if (m_controller->timeScale() != m_after)
+        setObsolete(true);
 }
 
 int TimeScaleCommand::id() const
@@ -93,7 +93,7 @@ int TimeScaleCommand::id() const
 bool TimeScaleCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* o = static_cast<const TimeScaleCommand*>(other);
-    if (o->m_session != m_session)
+    if (o->isObsolete() || o->m_session != m_session)
         return false;
     m_after = o->m_after;
     setText(o->text());

@@ -1,9 +1,11 @@
 #pragma once
-// Undo steps of the Parameters panel. Each holds the whole state before and
-// after one edit (the settings struct, the spawn settings or the time scale)
-// and pushes it through the controller, so undo and redo go through the same
-// checks as the edit itself. Consecutive moves of one slider during one drag
-// merge into a single step.
+// The undo steps of SettingsEditor (settings_editor.h). Each holds the whole
+// state before and after one edit (the settings struct, the spawn settings or
+// the time scale) and applies it through the controller in redo(), so the
+// first redo (QUndoStack::push) is the edit itself and undo and redo go
+// through the same checks. A command whose first redo the controller refuses
+// marks itself obsolete and the stack drops it. Consecutive moves of one
+// slider during one drag merge into a single step.
 
 #include "sim/world/scene.h"
 #include "sim/world/world_settings.h"
@@ -18,10 +20,13 @@ class SimulationController;
 class SettingsCommand : public QUndoCommand {
 public:
     /// `mergeId` ≥ 0 merges with the previous command of the same id and
-    /// `session` (one slider drag); -1 never merges. The edit has already been
-    /// applied: the first redo (from QUndoStack::push) does nothing.
+    /// `session` (one slider drag); -1 never merges.
     SettingsCommand(SimulationController* controller, const QString& text, const sim::WorldSettings& before,
                     const sim::WorldSettings& after, int mergeId = -1, int session = 0);
+
+    /// Where the first redo writes whether the controller took the edit
+    /// (the command may be merged or dropped by then); cleared after it.
+    void reportTo(bool* accepted) { m_report = accepted; }
 
     void undo() override;
     void redo() override;
@@ -37,7 +42,7 @@ private:
     sim::WorldSettings m_after;
     int m_mergeId;
     int m_session;
-    bool m_applied = true;
+    bool* m_report = nullptr;
 };
 
 /// A new number of random balls (or other spawn settings): the world restarts.
@@ -47,12 +52,13 @@ public:
                  const sim::SpawnSettings& after);
     void undo() override;
     void redo() override;
+    void reportTo(bool* accepted) { m_report = accepted; }
 
 private:
     SimulationController* m_controller; // not owned
     sim::SpawnSettings m_before;
     sim::SpawnSettings m_after;
-    bool m_applied = true;
+    bool* m_report = nullptr;
 };
 
 /// A new time scale (slow motion, fast forward).
@@ -72,7 +78,6 @@ private:
     double m_before;
     double m_after;
     int m_session;
-    bool m_applied = true;
 };
 
 } // namespace forcelab

@@ -1,7 +1,7 @@
 #include "ui/controls/parameter_panel.h"
 
 #include "ui/controls/number_control.h"
-#include "ui/controls/parameter_commands.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "lessons/lesson_controls.h"
@@ -18,7 +18,6 @@
 #include <QRegularExpressionValidator>
 #include <QSignalBlocker>
 #include <QSlider>
-#include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtDebug>
 
@@ -40,13 +39,12 @@ QString qs(std::string_view s)
 
 } // namespace
 
-ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent)
+ParameterPanel::ParameterPanel(SimulationController* controller, SettingsEditor* editor, QWidget* parent)
     : QWidget(parent)
     , m_controller(controller)
+    , m_editor(editor)
 {
     setObjectName(QStringLiteral("parameterPanel"));
-    m_undoStack = new QUndoStack(this);
-    m_undoStack->setObjectName(QStringLiteral("parameterUndoStack"));
 
     auto* outer = new QVBoxLayout(this);
     m_showAllBox = new QCheckBox(tr("Show all parameters"), this);
@@ -136,22 +134,11 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
         addParameter(key);
     addSeed();
 
-    // A model the panel does not place above gets a section of its own, with
-    // its rows in table order: a new model needs nothing here.
-    for (const sim::Parameter& p : sim::parameters()) {
-        const QString key = qs(p.key);
-        if (!key.startsWith(QStringLiteral("models.")))
-            continue;
-        const QString model = key.section(QLatin1Char('.'), 1, 1);
-        const bool placed = std::any_of(m_sections.begin(), m_sections.end(),
-                                        [&](const Section& section) { return section.key == model; });
-        if (key.endsWith(QStringLiteral(".enabled"))) {
-            if (!placed)
-                addModelSection(model, qs(p.label));
-        } else if (m_sections.back().key == model && rowIndex(qs(p.control)) < 0) {
-            addParameter(p.key);
-        }
-    }
+    // Every row of the table gets its control with nothing written here: a
+    // model the panel does not place above gets a section of its own, and a
+    // row the sections above do not place goes at the end of its own
+    // section, in table order.
+    addUnplacedRows();
 
     addSection(QStringLiteral("balls"), tr("Balls"));
     addBallCount();
@@ -162,6 +149,50 @@ ParameterPanel::ParameterPanel(SimulationController* controller, QWidget* parent
     connect(m_controller, &SimulationController::timeScaleChanged, this, &ParameterPanel::refresh);
     updateVisibility();
     refresh();
+}
+
+void ParameterPanel::addUnplacedRows()
+{
+    for (const sim::Parameter& p : sim::parameters()) {
+        const QString key = qs(p.key);
+        const QString section = key.startsWith(QStringLiteral("models.")) ? key.section(QLatin1Char('.'), 1, 1)
+                                : key.startsWith(QStringLiteral("world.")) ? QStringLiteral("walls")
+                                : key.startsWith(QStringLiteral("time."))  ? QStringLiteral("time")
+                                                                           : QString();
+        if (section.isEmpty())
+            continue;
+        const bool placed = std::any_of(m_sections.begin(), m_sections.end(),
+                                        [&](const Section& s) { return s.key == section; });
+        if (key.endsWith(QStringLiteral(".enabled"))) {
+            if (!placed)
+                addModelSection(section, qs(p.label)); // its tick box is this row's control
+        } else if (placed && !controlWidget(qs(p.control))) {
+            m_currentSection = section;
+            addParameter(p.key);
+        }
+    }
+}
+
+QWidget* ParameterPanel::controlWidget(const QString& control) const
+{
+    if (const int i = rowIndex(control); i >= 0)
+        return m_rows[std::size_t(i)].field;
+    if (const sim::Parameter* p = sim::findControl(control.toStdString())) {
+        const QString key = qs(p->key);
+        if (key.startsWith(QStringLiteral("models.")) && key.endsWith(QStringLiteral(".enabled")))
+            for (const Section& s : m_sections)
+                if (s.key == key.section(QLatin1Char('.'), 1, 1))
+                    return s.box;
+    }
+    return m_otherControls.value(control);
+}
+
+ParameterPanel::Section& ParameterPanel::currentSection()
+{
+    for (Section& s : m_sections)
+        if (s.key == m_currentSection)
+            return s;
+    return m_sections.back();
 }
 
 void ParameterPanel::refresh()
@@ -298,31 +329,20 @@ void ParameterPanel::edit(const QString& key, const std::function<void(Settings&
 {
     if (m_refreshing)
         return;
-    const Settings before = m_controller->world().settings();
-    Settings after = before;
-    change(after);
-    // On success the controller's settingsChanged refreshes every control;
-    // on failure the error is signalled and the control goes back.
-    if (!m_controller->setSettings(after)) {
-        refresh();
-        return;
-    }
     const int index = rowIndex(key);
     const QString label = index >= 0 ? m_rows[std::size_t(index)].label : key;
-    m_undoStack->push(new SettingsCommand(m_controller, tr("Change %1").arg(label), before, after,
-                                          dragging ? index : -1, m_dragSession));
+    // On success the controller's settingsChanged refreshes every control;
+    // on failure the error is signalled and the control goes back.
+    if (!m_editor->editSettings(tr("Change %1").arg(label), change, {dragging ? index : -1, m_dragSession}))
+        refresh();
 }
 
 void ParameterPanel::editSpawn(const QString& text, const sim::SpawnSettings& spawn)
 {
     if (m_refreshing)
         return;
-    const sim::SpawnSettings before = m_controller->spawn();
-    if (!m_controller->respawn(spawn)) {
+    if (!m_editor->editSpawn(text, spawn))
         refresh();
-        return;
-    }
-    m_undoStack->push(new SpawnCommand(m_controller, text, before, spawn));
 }
 
 QGroupBox* ParameterPanel::addSection(const QString& key, const QString& title,
@@ -359,7 +379,7 @@ QGroupBox* ParameterPanel::addSection(const QString& key, const QString& title,
 
 void ParameterPanel::addRow(const QString& key, const QString& label, QWidget* field, const QString& tip)
 {
-    Section& section = m_sections.back();
+    Section& section = currentSection();
     auto* text = new QLabel(label, section.box);
     text->setBuddy(field);
     if (!tip.isEmpty()) {
@@ -462,7 +482,7 @@ NumberControl* ParameterPanel::addNumber(const QString& key, const QString& obje
     s.decimals = spec.decimals;
     s.significant = spec.significant;
     s.suffix = spec.suffix;
-    auto* control = new NumberControl(objectName, s, m_sections.back().box);
+    auto* control = new NumberControl(objectName, s, currentSection().box);
     const double toShown = spec.toShown;
     auto apply = [this, key, set, toShown](double shown, bool dragging) {
         edit(key, [&](Settings& st) { set(st, shown / toShown); }, dragging);
@@ -484,7 +504,7 @@ QComboBox* ParameterPanel::addChoice(const QString& key, const QString& objectNa
                                      std::span<const std::string_view> names, std::function<int(const Settings&)> get,
                                      std::function<void(Settings&, int)> set)
 {
-    auto* combo = new QComboBox(m_sections.back().box);
+    auto* combo = new QComboBox(currentSection().box);
     combo->setObjectName(objectName);
     for (std::string_view name : names)
         combo->addItem(qs(name));
@@ -504,7 +524,7 @@ QCheckBox* ParameterPanel::addSwitch(const QString& key, const QString& objectNa
                                      const QString& tip, std::function<bool(const Settings&)> get,
                                      std::function<void(Settings&, bool)> set)
 {
-    auto* box = new QCheckBox(m_sections.back().box);
+    auto* box = new QCheckBox(currentSection().box);
     box->setObjectName(objectName);
     connect(box, &QCheckBox::toggled, this,
             [this, key, set](bool on) { edit(key, [&](Settings& s) { set(s, on); }); });
@@ -518,7 +538,7 @@ QCheckBox* ParameterPanel::addSwitch(const QString& key, const QString& objectNa
 
 void ParameterPanel::addWallSides()
 {
-    auto* field = new QWidget(m_sections.back().box);
+    auto* field = new QWidget(currentSection().box);
     field->setObjectName(QStringLiteral("wallSides"));
     auto* layout = new QHBoxLayout(field);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -534,6 +554,7 @@ void ParameterPanel::addWallSides()
     for (const Side& side : sides) {
         auto* box = new QCheckBox(side.text, field);
         box->setObjectName(QStringLiteral("wall%1Check").arg(QLatin1String(side.name)));
+        m_otherControls.insert(QStringLiteral("wall_%1").arg(QLatin1String(side.name).toString().toLower()), box);
         const auto member = side.member;
         connect(box, &QCheckBox::toggled, this, [this, member](bool on) {
             edit(QStringLiteral("wall_sides"), [&](Settings& s) { s.walls.*member = on; });
@@ -550,7 +571,7 @@ void ParameterPanel::addWallSides()
 
 void ParameterPanel::addSeed()
 {
-    auto* edit = new QLineEdit(m_sections.back().box);
+    auto* edit = new QLineEdit(currentSection().box);
     edit->setObjectName(QStringLiteral("seedEdit"));
     edit->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("[0-9]{1,20}")), edit));
     connect(edit, &QLineEdit::editingFinished, this, [this, edit] {
@@ -582,7 +603,7 @@ void ParameterPanel::addBallCount()
     s.sliderMax = 50000.0;
     s.scale = NumberControl::Scale::Log;
     s.decimals = 0;
-    auto* control = new NumberControl(QStringLiteral("ballCount"), s, m_sections.back().box);
+    auto* control = new NumberControl(QStringLiteral("ballCount"), s, currentSection().box);
     // Placing balls restarts the world: only when the value is final (not at
     // every pixel of a drag).
     auto apply = [this](double v) {
@@ -608,7 +629,7 @@ void ParameterPanel::addBallCount()
 
 void ParameterPanel::addFullyInside()
 {
-    auto* box = new QCheckBox(m_sections.back().box);
+    auto* box = new QCheckBox(currentSection().box);
     box->setObjectName(QStringLiteral("fullyInsideCheck"));
     connect(box, &QCheckBox::toggled, this, [this](bool on) {
         sim::SpawnSettings spawn = m_controller->spawn();
@@ -635,15 +656,11 @@ void ParameterPanel::addTimeScale()
     s.scale = NumberControl::Scale::Log;
     s.decimals = 2;
     s.suffix = QStringLiteral(" ×");
-    auto* control = new NumberControl(QStringLiteral("timeScale"), s, m_sections.back().box);
+    auto* control = new NumberControl(QStringLiteral("timeScale"), s, currentSection().box);
     auto apply = [this](double v, bool dragging) {
         if (m_refreshing)
             return;
-        const double before = m_controller->timeScale();
-        m_controller->setTimeScale(v);
-        if (m_controller->timeScale() != before)
-            m_undoStack->push(new TimeScaleCommand(m_controller, before, m_controller->timeScale(),
-                                                   dragging ? m_dragSession : -1));
+        m_editor->editTimeScale(v, dragging ? m_dragSession : -1);
     };
     connect(control, &NumberControl::valueEdited, this, apply);
     connect(control, &NumberControl::outOfRange, this, [apply](double v) { apply(v, false); });

@@ -28,22 +28,22 @@ class QComboBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
-class QUndoStack;
 class QVBoxLayout;
 
 namespace forcelab {
 
 class NumberControl;
+class SettingsEditor;
 class SimulationController;
 
 class ParameterPanel : public QWidget {
     Q_OBJECT
 public:
     /// `controller` is not owned and must outlive the panel.
-    explicit ParameterPanel(SimulationController* controller, QWidget* parent = nullptr);
+    /// Every edit goes through `editor` (not owned), which keeps the undo steps.
+    ParameterPanel(SimulationController* controller, SettingsEditor* editor, QWidget* parent = nullptr);
 
-    /// Every accepted edit, for Undo / Redo.
-    QUndoStack* undoStack() const { return m_undoStack; }
+    SettingsEditor* editor() const { return m_editor; }
 
     /// The lesson's `controls`: their rows are shown first, in this order.
     /// Names the panel does not know are ignored with a warning. An empty list shows every row.
@@ -56,6 +56,10 @@ public:
     QStringList visibleRows() const;
     /// Section keys in their current order (the lesson's first), visible ones only.
     QStringList visibleSections() const;
+    /// The widget that edits a control of the parameter table (sim/world/parameters.h):
+    /// its row's field, a model's tick box for its "enabled" row, a wall's
+    /// tick box; nullptr for a name the panel has no control for.
+    QWidget* controlWidget(const QString& control) const;
     /// The rows a control name shows (empty for an unknown name).
     static QStringList rowsForControl(const QString& control);
     /// The objectName stem of a row's widgets: "wind_smoothed_step" gives
@@ -125,16 +129,19 @@ private:
     void edit(const QString& key, const std::function<void(Settings&)>& change, bool dragging = false);
     void editSpawn(const QString& text, const sim::SpawnSettings& spawn);
     void updateVisibility();
+    void addUnplacedRows();
+    Section& currentSection(); // the one being built
     int rowIndex(const QString& key) const;
 
     SimulationController* m_controller; // not owned
-    QUndoStack* m_undoStack = nullptr;
+    SettingsEditor* m_editor; // not owned
     QVBoxLayout* m_sectionsLayout = nullptr;
     QCheckBox* m_showAllBox = nullptr;
     QLabel* m_hiddenNote = nullptr;
     std::vector<Section> m_sections;
     std::vector<Row> m_rows;
     QString m_currentSection; // while building
+    QHash<QString, QWidget*> m_otherControls; // controls that are part of a row: the four walls
     std::vector<std::function<void()>> m_refreshers; // world → widget
     QStringList m_controls;
     bool m_showAll = false;

@@ -1,7 +1,7 @@
 #include "ui/docks/force_editor_dock.h"
 
 #include "ui/controls/number_control.h"
-#include "ui/controls/parameter_commands.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "sim/forces/custom_force.h"
@@ -14,12 +14,15 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QUndoStack>
 #include <QVBoxLayout>
 
 namespace forcelab {
 
 namespace {
+
+// Undo ids of the constants' sliders: one per constant, apart from the panel's rows
+// and the stage's sliders.
+constexpr int kConstantMergeId = 3'000'000;
 
 QLabel* problemLabel(QWidget* parent, const QString& name)
 {
@@ -33,10 +36,10 @@ QLabel* problemLabel(QWidget* parent, const QString& name)
 
 } // namespace
 
-ForceEditorDock::ForceEditorDock(SimulationController* controller, QUndoStack* undoStack, QWidget* parent)
+ForceEditorDock::ForceEditorDock(SimulationController* controller, SettingsEditor* editor, QWidget* parent)
     : QDockWidget(tr("Force editor"), parent)
     , m_controller(controller)
-    , m_undoStack(undoStack)
+    , m_editor(editor)
 {
     setObjectName(QStringLiteral("forceEditorDock"));
     auto* body = new QWidget(this);
@@ -168,18 +171,19 @@ void ForceEditorDock::rebuildConstants()
         m_constantsGrid->addWidget(label, static_cast<int>(k), 0);
         m_constantsGrid->addWidget(slider, static_cast<int>(k), 1);
         connect(slider, &NumberControl::valueEdited, this, [this, k](double value, bool) {
-            const sim::WorldSettings before = m_controller->world().settings();
-            sim::WorldSettings after = before;
-            if (k >= after.custom.constants.size())
+            const auto& constants = m_controller->world().settings().custom.constants;
+            if (k >= constants.size())
                 return;
-            sim::CustomConstant& c = after.custom.constants[k];
-            // The slider's range is the lesson's; a typed value may go past it.
-            c.min = std::min(c.min, value);
-            c.max = std::max(c.max, value);
-            c.value = value;
-            if (m_controller->setSettings(after))
-                m_undoStack->push(new SettingsCommand(m_controller, tr("Constant %1").arg(QString::fromStdString(c.name)),
-                                                      before, after, 3'000'000 + static_cast<int>(k)));
+            const QString name = QString::fromStdString(constants[k].name);
+            m_editor->editSettings(tr("Constant %1").arg(name),
+                                   [k, value](sim::WorldSettings& s) {
+                                       sim::CustomConstant& c = s.custom.constants[k];
+                                       // The slider's range is the lesson's; a typed value may go past it.
+                                       c.min = std::min(c.min, value);
+                                       c.max = std::max(c.max, value);
+                                       c.value = value;
+                                   },
+                                   {kConstantMergeId + static_cast<int>(k)});
         });
         m_constantSliders.append(slider);
     }
@@ -199,11 +203,9 @@ void ForceEditorDock::addConstant()
         return;
     }
     m_constantsProblem->hide();
-    const sim::WorldSettings before = m_controller->world().settings();
-    if (m_controller->setSettings(after)) {
-        m_undoStack->push(new SettingsCommand(m_controller, tr("Add constant %1").arg(name), before, after));
+    if (m_editor->editSettings(tr("Add constant %1").arg(name),
+                               [&after](sim::WorldSettings& s) { s.custom.constants = after.custom.constants; }))
         m_newName->clear();
-    }
 }
 
 void ForceEditorDock::apply(const QString& changed)
@@ -238,8 +240,8 @@ void ForceEditorDock::apply(const QString& changed)
         after.custom.fx == before.custom.fx && after.custom.fy == before.custom.fy &&
         after.custom.potential == before.custom.potential)
         return;
-    if (m_controller->setSettings(after))
-        m_undoStack->push(new SettingsCommand(m_controller, tr("Custom force: %1").arg(changed), before, after));
+    m_editor->editSettings(tr("Custom force: %1").arg(changed),
+                           [&after](sim::WorldSettings& s) { s.custom = after.custom; });
 }
 
 } // namespace forcelab

@@ -16,18 +16,18 @@ class QGridLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
-class QUndoStack;
 
 namespace forcelab {
 
 class NumberControl;
+class SettingsEditor;
 class SimulationController;
 
 class ForceEditorDock : public QDockWidget {
     Q_OBJECT
 public:
-    /// `controller` and `undoStack` are not owned and must outlive the dock.
-    ForceEditorDock(SimulationController* controller, QUndoStack* undoStack, QWidget* parent = nullptr);
+    /// `controller` and `editor` are not owned and must outlive the dock.
+    ForceEditorDock(SimulationController* controller, SettingsEditor* editor, QWidget* parent = nullptr);
 
     /// The message shown under a field ("fx", "fy", "potential", "constants"), empty when fine.
     QString problem(const QString& field) const;
@@ -43,7 +43,7 @@ private:
     void rebuildConstants();
 
     SimulationController* m_controller; // not owned
-    QUndoStack* m_undoStack;             // not owned
+    SettingsEditor* m_editor;            // not owned
     QCheckBox* m_enabled = nullptr;
     QComboBox* m_kind = nullptr;
     QLineEdit* m_fx = nullptr;

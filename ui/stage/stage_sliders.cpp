@@ -1,7 +1,7 @@
 #include "ui/stage/stage_sliders.h"
 
 #include "ui/controls/number_control.h"
-#include "ui/controls/parameter_commands.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "lessons/lesson_controls.h"
@@ -12,7 +12,6 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
-#include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
@@ -31,10 +30,10 @@ constexpr int kMergeIdBase = 2'000'000;
 
 } // namespace
 
-StageSliders::StageSliders(SimulationController* controller, QUndoStack* undoStack, QWidget* parent)
+StageSliders::StageSliders(SimulationController* controller, SettingsEditor* editor, QWidget* parent)
     : QWidget(parent)
     , m_controller(controller)
-    , m_undoStack(undoStack)
+    , m_editor(editor)
 {
     setObjectName(QStringLiteral("stageSliders"));
     m_grid = new QGridLayout(this);
@@ -182,14 +181,9 @@ void StageSliders::arrange()
 
 void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)
 {
-    const sim::WorldSettings before = m_controller->world().settings();
-    sim::WorldSettings after = before;
-    p->set(after, p->type == sim::ParameterType::Integer ? std::round(value) : value);
-    if (!m_controller->setSettings(after)) {
+    const double v = p->type == sim::ParameterType::Integer ? std::round(value) : value;
+    if (!m_editor->editSettings(qs(p->label), [p, v](sim::WorldSettings& s) { p->set(s, v); }, {mergeId, m_dragSession}))
         refresh(); // refused: the controller said why; the slider goes back
-        return;
-    }
-    m_undoStack->push(new SettingsCommand(m_controller, qs(p->label), before, after, mergeId, m_dragSession));
 }
 
 void StageSliders::refresh()

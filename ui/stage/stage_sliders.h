@@ -17,19 +17,19 @@ class QComboBox;
 class QGridLayout;
 class QLabel;
 class QPushButton;
-class QUndoStack;
 
 namespace forcelab {
 
 class NumberControl;
+class SettingsEditor;
 class SimulationController;
 namespace sim { struct Parameter; }
 
 class StageSliders : public QWidget {
     Q_OBJECT
 public:
-    /// `controller` and `undoStack` are not owned and must outlive the sliders.
-    StageSliders(SimulationController* controller, QUndoStack* undoStack, QWidget* parent = nullptr);
+    /// `controller` and `editor` are not owned and must outlive the sliders.
+    StageSliders(SimulationController* controller, SettingsEditor* editor, QWidget* parent = nullptr);
 
     /// One control per row of the lesson's `controls` (in their order): a
     /// slider for a number, a button for a switch, a list for a choice.
@@ -67,7 +67,7 @@ private:
     void apply(const sim::Parameter* parameter, double value, int mergeId);
 
     SimulationController* m_controller; // not owned
-    QUndoStack* m_undoStack;             // not owned
+    SettingsEditor* m_editor;            // not owned
     QGridLayout* m_grid = nullptr;
     QList<Control> m_controls;
     int m_dragSession = 0;

@@ -1,0 +1,52 @@
+#pragma once
+// The one way a control changes the world's settings, the random balls or the
+// speed of the film. The Parameters panel, the stage's sliders and the force
+// editor all edit through it: it owns the undo stack, and each edit is a
+// command whose redo applies it (Qt's pattern: pushing the command is what
+// applies it). An edit the controller refuses leaves no step on the stack and
+// returns false, so the control that made it can go back to the world's value.
+
+#include "sim/world/scene.h"
+#include "sim/world/world_settings.h"
+
+#include <QObject>
+
+#include <functional>
+
+class QUndoStack;
+
+namespace forcelab {
+
+class SimulationController;
+
+/// Which consecutive edits make one undo step: edits with the same id ≥ 0
+/// and the same session (one slider drag) merge; −1 never merges.
+struct EditMerge {
+    int id = -1;
+    int session = 0;
+};
+
+class SettingsEditor : public QObject {
+    Q_OBJECT
+public:
+    explicit SettingsEditor(SimulationController* controller, QObject* parent = nullptr);
+
+    /// Every accepted edit, for Undo / Redo (cleared with each new lesson).
+    QUndoStack* undoStack() const { return m_undoStack; }
+
+    /// Changes a copy of the world's settings with `change` and applies it as
+    /// one undo step named `text`. False when the controller refused it (it
+    /// has said why through errorOccurred).
+    bool editSettings(const QString& text, const std::function<void(sim::WorldSettings&)>& change, EditMerge merge = {});
+    /// New random balls: the world restarts. False when refused.
+    bool editSpawn(const QString& text, const sim::SpawnSettings& spawn);
+    /// A new time scale; `session` ≥ 0 merges one drag into one step. False
+    /// when the speed did not change (already at that speed, or out of range).
+    bool editTimeScale(double scale, int session = -1);
+
+private:
+    SimulationController* m_controller; // not owned
+    QUndoStack* m_undoStack;
+};
+
+} // namespace forcelab
