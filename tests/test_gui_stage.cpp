@@ -9,6 +9,8 @@
 #include "ui/window/main_window.h"
 #include "ui/controls/number_control.h"
 #include "ui/stage/stage_sliders.h"
+#include "ui/controls/settings_editor.h"
+#include "lessons/lesson_controls.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/stage/stage_bar.h"
 #include "ui/drawing/world_painter.h"
@@ -47,6 +49,7 @@ private slots:
     void autoArrowsAreReadable_data();
     void autoArrowsAreReadable();
     void stageSlidersEditTheWorld();
+    void everyListedRowHasAStageControl();
     void stageSwitchesAndChoicesEditTheWorld();
     void normalLayoutGivesTheBoxHalfTheWindow_data();
     void normalLayoutGivesTheBoxHalfTheWindow();
@@ -230,6 +233,34 @@ void GuiStageTest::autoArrowsAreReadable()
 // The lesson's number controls are big sliders on the stage (lesson 08:
 // restitution and gravity, four rows); moving one changes the world, is
 // one undo step, and the stage's label shows the new value.
+// Every row of the parameter table a lesson's controls name gets its control
+// on the stage from the table alone: a slider for a number with a slider
+// range, a button for a switch, a list for a choice.
+void GuiStageTest::everyListedRowHasAStageControl()
+{
+    SimulationController controller;
+    SettingsEditor editor(&controller);
+    StageSliders sliders(&controller, &editor);
+    sliders.setLessonControls(LessonLoader::controlNames());
+    int checked = 0;
+    for (const QString& name : LessonLoader::controlNames())
+        for (const QString& row : lessons::controlRows().value(name)) {
+            const sim::Parameter* p = sim::findControl(row.toStdString());
+            if (!p)
+                continue; // not a row of the table (the ball count, the seed): the Parameters panel's
+            const bool number = p->type == sim::ParameterType::Number || p->type == sim::ParameterType::Integer;
+            QWidget* control = number                                    ? static_cast<QWidget*>(sliders.slider(row))
+                               : p->type == sim::ParameterType::Boolean ? static_cast<QWidget*>(sliders.toggle(row))
+                                                                         : static_cast<QWidget*>(sliders.choice(row));
+            if (number && !(p->sliderHi > p->sliderLo))
+                QVERIFY2(!control, qPrintable(row)); // no slider range: the panel's box only
+            else
+                QVERIFY2(control, qPrintable(row + QStringLiteral(": no control on the stage")));
+            ++checked;
+        }
+    QVERIFY(checked > 40);
+}
+
 void GuiStageTest::stageSlidersEditTheWorld()
 {
     MainWindow window(QStringLiteral("losing-energy"));

@@ -1,5 +1,6 @@
 #include "ui/canvas/canvas.h"
 
+#include "ui/canvas/history_recorder.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "sim/world/parameters.h"
@@ -26,10 +27,6 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     setMouseTracking(true);
     setFocusPolicy(Qt::ClickFocus); // a click on the canvas takes focus from a spin box, so Space plays again
     setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel
-    m_options.trails = &m_trails;
-    m_options.collision = &m_collision;
-    m_options.centreOfMassPath = &m_centreOfMassPath;
-    m_options.apexes = &m_apexes;
     m_options.colors = &m_colors;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
@@ -41,22 +38,33 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
         m_options.ghost = m_controller->ghost();
         update();
     });
+    // Its own record until the owner gives it one (setHistory). Made after
+    // the step handler above, so it records the frame after the hand has
+    // put a held ball back.
+    setHistory(new HistoryRecorder(m_controller, this));
+}
+
+void Canvas::setHistory(HistoryRecorder* history)
+{
+    if (history == m_history)
+        return;
+    if (m_history && m_history->parent() == this)
+        delete m_history;
+    m_history = history;
+    m_history->setRecorded(m_options.overlays);
+    m_history->setSelectedBall(m_options.selected);
+    m_options.trails = &m_history->trails();
+    m_options.collision = &m_history->collisionView();
+    m_options.centreOfMassPath = &m_history->centreOfMassPath();
+    m_options.apexes = &m_history->apexes();
+    update();
 }
 
 void Canvas::setOverlays(const Overlays& overlays)
 {
-    if (overlays.trails != m_options.overlays.trails)
-        m_trails.clear(); // a trail starts when it is switched on
-    if (overlays.impact != m_options.overlays.impact)
-        resetCollision();
-    if (overlays.centreOfMass != m_options.overlays.centreOfMass)
-        m_centreOfMassPath.clear(); // its path starts when it is switched on
     const bool changed = !(overlays == m_options.overlays);
     m_options.overlays = overlays;
-    if (m_options.overlays.trails)
-        m_trails.record(m_controller->world().balls(), m_controller->world().time());
-    if (m_options.overlays.centreOfMass)
-        recordCentreOfMass();
+    m_history->setRecorded(overlays); // a path starts when it is switched on
     update();
     if (changed)
         emit overlaysChanged();
@@ -66,22 +74,6 @@ double Canvas::Ruler::angle() const
 {
     const sim::Vec2 d = to - from;
     return std::atan2(-d.y(), d.x()) * 180.0 / std::numbers::pi;
-}
-
-void Canvas::recordApexes()
-{
-    // The top of a flight: vy turns from up (−) to down (+) between frames.
-    const sim::BallState& balls = m_controller->world().balls();
-    const int n = std::min(balls.size(), kMaxApexBalls);
-    if (m_apexVy.size() == n) {
-        for (int i = 0; i < n; ++i)
-            if (m_apexVy[i] < 0.0 && balls.velocity(1, i) >= 0.0)
-                m_apexes.push_back({balls.position.col(i), balls.radius[i]});
-    }
-    m_apexVy = balls.velocity.row(1).head(n).transpose();
-    // Bounded: past 2,000 marks the older half goes.
-    if (m_apexes.size() > 2000)
-        m_apexes.erase(m_apexes.begin(), m_apexes.begin() + 1000);
 }
 
 void Canvas::paintRuler(QPainter& p) const
@@ -114,22 +106,6 @@ void Canvas::paintRuler(QPainter& p) const
     p.restore();
 }
 
-void Canvas::recordCentreOfMass()
-{
-    const sim::BallState& balls = m_controller->world().balls();
-    const double total = balls.mass.sum();
-    if (balls.empty() || !(total > 0.0))
-        return;
-    const sim::Vec2 centre = (balls.position * balls.mass.matrix()) / total;
-    if (!m_centreOfMassPath.empty() && m_centreOfMassPath.back() == centre)
-        return;
-    // A bounded path: past kMaxCentrePoints the older half goes.
-    if (m_centreOfMassPath.size() >= kMaxCentrePoints)
-        m_centreOfMassPath.erase(m_centreOfMassPath.begin(),
-                                 m_centreOfMassPath.begin() + static_cast<std::ptrdiff_t>(kMaxCentrePoints / 2));
-    m_centreOfMassPath.push_back(centre);
-}
-
 void Canvas::setTrailsEnabled(bool enabled)
 {
     Overlays o = m_options.overlays;
@@ -139,9 +115,7 @@ void Canvas::setTrailsEnabled(bool enabled)
 
 void Canvas::setTrailScope(TrailRecorder::Scope scope)
 {
-    m_trails.setScope(scope);
-    if (m_options.overlays.trails)
-        m_trails.record(m_controller->world().balls(), m_controller->world().time());
+    m_history->setTrailScope(scope);
     update();
 }
 
@@ -152,8 +126,8 @@ void Canvas::setSelectedBall(int index)
     if (index == m_options.selected)
         return;
     m_options.selected = index;
-    m_trails.setSelected(index);
-    resetCollision();
+    m_history->setSelectedBall(index);
+    m_previousTime = -1.0;
     update();
     emit selectedBallChanged(index);
 }
@@ -319,7 +293,7 @@ void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std:
     for (std::size_t k = 0; k < runs.size(); ++k) {
         if (!runs[k].world)
             continue;
-        own.trails = k < m_paneTrails.size() ? &m_paneTrails[k] : nullptr;
+        own.trails = k < m_history->paneTrails().size() ? &m_history->paneTrails()[k] : nullptr;
         panes[k].setMarkedColor(live.markedColor());
         panes[k].paint(p, areas[static_cast<qsizetype>(k) + 1].adjusted(0, label, 0, 0), *runs[k].world, own, dpr);
     }
@@ -481,7 +455,7 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
         if (ball < balls.size())
             balls.velocity.col(ball) = velocity;
-        m_previousVelocity.resize(0, 0); // the hand changed a velocity: no collision "before" from it
+        m_history->forgetVelocities(); // the hand changed a velocity: no collision "before" from it
         m_controller->notifyBallsChanged();
     }
     sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
@@ -551,23 +525,10 @@ void Canvas::onSceneChanged()
 {
     m_drag = Drag();
     m_press = Press();
-    m_trails.clear();
-    m_paneTrails.clear();
-    m_centreOfMassPath.clear();
-    m_apexes.clear();
-    m_apexVy.resize(0);
-    resetCollision();
+    m_previousTime = -1.0; // the recorder starts over too
     if (m_options.selected >= m_controller->world().balls().size())
         setSelectedBall(-1);
     update();
-}
-
-void Canvas::resetCollision()
-{
-    m_collision = CollisionView();
-    m_previousVelocity.resize(0, 0);
-    m_previousTime = -1.0;
-    m_previousPartner = -1;
 }
 
 void Canvas::onStepped()
@@ -575,65 +536,7 @@ void Canvas::onStepped()
     const sim::World& world = m_controller->world();
     if (m_drag.ball >= 0 && world.time() != m_previousTime)
         holdDraggedBall(); // the steps of this frame moved it; the hand holds it
-    if (m_options.overlays.trails)
-        m_trails.record(world.balls(), world.time());
-    if (m_options.overlays.centreOfMass)
-        recordCentreOfMass();
-    if (m_options.overlays.apexes)
-        recordApexes();
-    if (m_options.overlays.trails) {
-        const auto& panes = m_controller->comparePanes();
-        m_paneTrails.resize(panes.size());
-        for (std::size_t k = 0; k < panes.size(); ++k)
-            if (panes[k].world)
-                m_paneTrails[k].record(panes[k].world->balls(), panes[k].world->time());
-    }
-    if (m_options.overlays.impact)
-        trackCollision();
     m_previousTime = world.time();
-}
-
-void Canvas::trackCollision()
-{
-    const sim::World& world = m_controller->world();
-    const sim::BallState& balls = world.balls();
-    // Nothing selected: ball 0, as the readout does (a lesson on one
-    // collision shows it without a click).
-    const int i = m_options.selected >= 0 ? m_options.selected : 0;
-    if (i >= balls.size()) {
-        m_previousVelocity.resize(0, 0);
-        return;
-    }
-    if (world.time() == m_previousTime) { // no step (an edit while paused): only the state moved
-        m_previousVelocity = balls.velocity;
-        return;
-    }
-    // The selected ball's partner in this step's contacts (sorted by (a, b)).
-    int partner = -1;
-    for (const sim::Contact& c : world.contacts()) {
-        if (c.a == i || c.b == i) {
-            partner = c.a == i ? c.b : c.a;
-            break;
-        }
-    }
-    // A new contact, not one that lasts from the frame before (resting balls).
-    if (partner >= 0 && partner != m_previousPartner && m_previousVelocity.cols() == balls.size()) {
-        CollisionView v;
-        v.a = i;
-        v.b = partner;
-        v.positionA = balls.position.col(i);
-        v.positionB = balls.position.col(partner);
-        v.radiusA = balls.radius[i];
-        v.radiusB = balls.radius[partner];
-        v.beforeA = m_previousVelocity.col(i);
-        v.beforeB = m_previousVelocity.col(partner);
-        v.afterA = balls.velocity.col(i);
-        v.afterB = balls.velocity.col(partner);
-        v.time = world.time();
-        m_collision = v;
-    }
-    m_previousPartner = partner;
-    m_previousVelocity = balls.velocity;
 }
 
 } // namespace forcelab

@@ -8,6 +8,7 @@
 // it and holds it: it follows the pointer (velocity 0) until release, then
 // flies off with the pointer's velocity over the last kThrowWindowMs.
 
+#include "ui/canvas/history_recorder.h"
 #include "ui/drawing/trail_recorder.h"
 #include "ui/drawing/view_transform.h"
 #include "ui/drawing/world_painter.h"
@@ -31,6 +32,12 @@ public:
     /// `controller` is not owned and must outlive the canvas.
     explicit Canvas(SimulationController* controller, QWidget* parent = nullptr);
 
+    /// The record of the past the canvas draws (paths, tops, the latest
+    /// collision): its owner's (not owned; it must outlive the canvas), or
+    /// until one is given, the canvas's own.
+    void setHistory(HistoryRecorder* history);
+    HistoryRecorder* history() const { return m_history; }
+
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_options.overlays; }
     /// The ball the readout and arrows describe; -1 for none.
@@ -53,9 +60,7 @@ public:
     /// The painter (what its last frame drew, for tests).
     const WorldPainter& painter() const { return m_painter; }
     /// The centre of mass's recorded path (world px, oldest first).
-    const std::vector<sim::Vec2>& centreOfMassPath() const { return m_centreOfMassPath; }
-    /// Points the centre-of-mass path keeps at most (then the older half goes).
-    static constexpr std::size_t kMaxCentrePoints = 4000;
+    const std::vector<sim::Vec2>& centreOfMassPath() const { return m_history->centreOfMassPath(); }
     const PaintOptions& paintOptions() const { return m_options; }
 
     /// Switches the trails overlay (same as setOverlays with overlays.trails).
@@ -63,15 +68,12 @@ public:
     bool trailsEnabled() const { return m_options.overlays.trails; }
     /// Trails behind every ball (up to TrailRecorder::kMaxBalls) or the selected ball only.
     void setTrailScope(TrailRecorder::Scope scope);
-    TrailRecorder::Scope trailScope() const { return m_trails.scope(); }
-    const TrailRecorder& trails() const { return m_trails; }
+    TrailRecorder::Scope trailScope() const { return m_history->trails().scope(); }
+    const TrailRecorder& trails() const { return m_history->trails(); }
 
-    /// The selected ball's (or, with none selected, ball 0's) most recent
-    /// collision for the "impact" overlay, or an invalid view. Tracked only
-    /// while that overlay is on; "before" is the state at the end of the
-    /// previous frame, so it is exactly the state before the step when a frame
-    /// takes one step (a new contact, not one lasting from the frame before).
-    const CollisionView& collisionView() const { return m_collision; }
+    /// The selected ball's (or ball 0's) most recent collision for the
+    /// "impact" overlay, or an invalid view (HistoryRecorder::collisionView).
+    const CollisionView& collisionView() const { return m_history->collisionView(); }
 
     /// The picture the canvas shows now, at its size and device pixel ratio
     /// (for screenshots).
@@ -111,9 +113,7 @@ public:
     };
     const Ruler& ruler() const { return m_ruler; }
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
-    const std::vector<ApexMark>& apexes() const { return m_apexes; }
-    /// Balls whose tops are marked (the first ones of the world).
-    static constexpr int kMaxApexBalls = 50;
+    const std::vector<ApexMark>& apexes() const { return m_history->apexes(); }
 
     /// Frames painted so far and the cost of the last one (for the status bar).
     qint64 framesPainted() const { return m_frames; }
@@ -162,31 +162,20 @@ private:
     void sendPointer(const QPointF& widget, bool inside, bool pressed);
     void onSceneChanged();
     void onStepped();
-    void trackCollision();
     void holdDraggedBall();
     void dragTo(const QPointF& widget, qint64 timestampMs);
     void startDrag(const QPointF& widget, qint64 timestampMs);
-    void resetCollision();
-    void recordCentreOfMass();
 
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
     PaintOptions m_options;
-    TrailRecorder m_trails;
-    std::vector<sim::Vec2> m_centreOfMassPath;
-    std::vector<ApexMark> m_apexes;
-    sim::VectorX m_apexVy; // each watched ball's vy at the last frame (px/s)
     Ruler m_ruler;
     bool m_measuring = false;
-    void recordApexes();
     void paintRuler(QPainter& p) const;
     CanvasColors m_colors;
     std::vector<WorldPainter> m_panePainters; // one per compare pane (own sprite caches and path layers)
-    std::vector<TrailRecorder> m_paneTrails;  // the panes' paths, when the live run shows paths
-    CollisionView m_collision;
-    sim::Matrix2X m_previousVelocity; // end of the previous frame (impact overlay only)
-    double m_previousTime = -1.0;
-    int m_previousPartner = -1;
+    double m_previousTime = -1.0; // of the last frame: a held ball is put back once per step
+    HistoryRecorder* m_history = nullptr; // the canvas's own (a child) or its owner's
     Drag m_drag;
     Press m_press;
     qint64 m_frames = 0;

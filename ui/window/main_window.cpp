@@ -7,11 +7,10 @@
 #include "ui/docks/accuracy_dock.h"
 #include "ui/canvas/canvas.h"
 #include "ui/window/overlay_actions.h"
-#include "ui/stage/stage_bar.h"
-#include "ui/stage/stage_sliders.h"
+#include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
-#include "ui/controls/parameter_commands.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/lessons_dock.h"
 #include "ui/controls/parameter_panel.h"
@@ -91,18 +90,6 @@ protected:
     }
 };
 
-// A red dot: the usual sign for recording.
-QIcon recordIcon()
-{
-    QPixmap pixmap(32, 32);
-    pixmap.fill(Qt::transparent);
-    QPainter p(&pixmap);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.setPen(QPen(QColor(0x80, 0x10, 0x10), 1.5));
-    p.setBrush(QColor(0xd0, 0x20, 0x20));
-    p.drawEllipse(QRectF(6, 6, 20, 20));
-    return QIcon(pixmap);
-}
 } // namespace
 
 MainWindow::MainWindow(const QString& lesson, QWidget* parent)
@@ -110,36 +97,17 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 {
     m_controller = new SimulationController(this);
     m_controller->setSuspended(true); // until the window is shown
-    m_canvas = new Canvas(m_controller, this);
-    // The banner says, above the canvas, why the simulation stopped itself.
-    m_haltBanner = new QLabel(this);
-    m_haltBanner->setObjectName(QStringLiteral("haltBanner"));
-    m_haltBanner->setWordWrap(true);
-    m_haltBanner->setStyleSheet(QStringLiteral("QLabel { background: #fde2e1; color: #7a1410; "
-                                               "border-bottom: 2px solid #c0392b; padding: 8px; }"));
-    m_haltBanner->hide();
-    // The stage: the halt banner over the canvas, and, in the stage view, the
-    // bar of large controls beside or under it.
-    auto* central = new QWidget(this);
-    m_stageLayout = new QBoxLayout(QBoxLayout::LeftToRight, central);
-    m_stageLayout->setContentsMargins(0, 0, 0, 0);
-    m_stageLayout->setSpacing(0);
-    auto* column = new QVBoxLayout;
-    column->setSpacing(0);
-    column->addWidget(m_haltBanner);
-    column->addWidget(m_canvas, 1);
-    m_stageLayout->addLayout(column, 1);
-    setCentralWidget(central);
+    // Every control edits through one editor, which keeps the undo steps.
+    m_editor = new SettingsEditor(m_controller, this);
+    m_stage = new StageView(m_controller, m_editor, this);
+    m_canvas = m_stage->canvas();
+    setCentralWidget(m_stage);
     m_trajectory = new TrajectoryExport(m_controller, this);
 
-    createActions();
+    createSimulationActions();
+    createFileActions();
     m_overlayActions = new OverlayActions(m_canvas, this);
-    m_stageBar = new StageBar(
-        {m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction, m_stageSlidersAction}, central);
-    m_stageLayout->addWidget(m_stageBar);
-    m_stageBar->hide();
-    connect(m_controller, &SimulationController::stepped, this, &MainWindow::updateStageReadout);
-    connect(m_stageBar, &StageBar::readoutRoomChanged, this, &MainWindow::updateStageReadout, Qt::QueuedConnection);
+    m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
     // Escape leaves the stage view.
     auto* leave = new QShortcut(QKeySequence(Qt::Key_Escape), this);
     connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
@@ -147,9 +115,6 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     createToolBars();
     installEventFilter(new ReadableDockTabs(this));
     createDocks();
-    // The lesson's sliders on the stage share the Parameters panel's undo stack.
-    m_stageSliders = new StageSliders(m_controller, m_parameters->undoStack(), m_stageBar);
-    m_stageBar->setSliders(m_stageSliders);
     createStatusBar();
     readSettings();
     openInitialLesson(lesson);
@@ -160,228 +125,6 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
-void MainWindow::createActions()
-{
-    m_playAction = new QAction(this);
-    m_playAction->setObjectName(QStringLiteral("playAction"));
-    m_playAction->setShortcut(Qt::Key_Space);
-    connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::togglePlay);
-    connect(m_controller, &SimulationController::playingChanged, this, &MainWindow::updatePlayAction);
-    updatePlayAction(m_controller->isPlaying());
-
-    m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
-    m_stepAction->setObjectName(QStringLiteral("stepAction"));
-    m_stepAction->setShortcuts({QKeySequence(Qt::Key_Right), QKeySequence(Qt::Key_Period)});
-    m_stepAction->setStatusTip(tr("Pause and advance by one time step dt (→ or .)"));
-    connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
-
-    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("&Reset"), this);
-    m_resetAction->setObjectName(QStringLiteral("resetAction"));
-    m_resetAction->setShortcut(Qt::Key_R);
-    m_resetAction->setStatusTip(tr("Start the lesson again with its own values (R)"));
-    connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLesson);
-
-    m_slowerAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("S&lower"), this);
-    m_slowerAction->setObjectName(QStringLiteral("slowerAction"));
-    m_slowerAction->setShortcut(Qt::Key_BracketLeft);
-    m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to 1/16× ([)"));
-    connect(m_slowerAction, &QAction::triggered, this, &MainWindow::slower);
-
-    m_fasterAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Faster"), this);
-    m_fasterAction->setObjectName(QStringLiteral("fasterAction"));
-    m_fasterAction->setShortcut(Qt::Key_BracketRight);
-    m_fasterAction->setStatusTip(tr("Double the speed, up to %1× (])").arg(SimulationController::kMaxTimeScale));
-    connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
-
-    // The stage view's row bar under the box has room for the lesson's
-    // sliders only on a wide screen; on a 4:3 projector this button makes
-    // the bar taller to show them (the box shrinks while they are shown).
-    m_stageSlidersAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Sliders"), this);
-    m_stageSlidersAction->setObjectName(QStringLiteral("stageSlidersAction"));
-    m_stageSlidersAction->setCheckable(true);
-    m_stageSlidersAction->setShortcut(Qt::Key_S);
-    m_stageSlidersAction->setStatusTip(tr("Show the lesson's sliders under the box in the stage view (S)"));
-    m_stageSlidersAction->setVisible(false);
-    connect(m_stageSlidersAction, &QAction::toggled, this, &MainWindow::layoutStage);
-
-    m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
-    m_openAction->setObjectName(QStringLiteral("openAction"));
-    m_openAction->setShortcut(QKeySequence::Open);
-    m_openAction->setIconText(tr("Open"));
-    m_openAction->setStatusTip(tr("Open a lesson file from disk"));
-    connect(m_openAction, &QAction::triggered, this, &MainWindow::openLessonFile);
-
-    m_saveAction = new QAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save Scene as Lesson…"), this);
-    m_saveAction->setObjectName(QStringLiteral("saveAction"));
-    m_saveAction->setShortcut(QKeySequence::Save);
-    m_saveAction->setIconText(tr("Save"));
-    m_saveAction->setStatusTip(tr("Save the balls as they are now and the live settings as a lesson file"));
-    connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveLessonFile);
-
-    m_screenshotAction = new QAction(style()->standardIcon(QStyle::SP_DesktopIcon), tr("Screens&hot…"), this);
-    m_screenshotAction->setIconText(tr("Picture"));
-    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
-    m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
-    m_screenshotAction->setStatusTip(tr("Save a picture of the canvas as PNG"));
-    connect(m_screenshotAction, &QAction::triggered, this, [this] { saveScreenshot(1.0); });
-
-    m_recordAction = new QAction(recordIcon(), tr("Re&cord Trajectory"), this);
-    m_recordAction->setIconText(tr("Record"));
-    m_recordAction->setObjectName(QStringLiteral("recordAction"));
-    m_recordAction->setCheckable(true);
-    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
-    m_recordAction->setStatusTip(tr("Record the path of the selected ball (or of all balls when none is selected)"));
-    connect(m_recordAction, &QAction::toggled, this, [this](bool on) {
-        if (on == m_trajectory->isRecording())
-            return;
-        if (on) {
-            m_trajectory->start(m_controller->world(), m_canvas->selectedBall());
-            statusBar()->showMessage(m_canvas->selectedBall() >= 0
-                                         ? tr("Recording ball #%1").arg(m_canvas->selectedBall())
-                                         : tr("Recording every ball"), 4000);
-        } else {
-            m_trajectory->stop();
-        }
-    });
-    connect(m_trajectory, &TrajectoryExport::recordingChanged, m_recordAction, &QAction::setChecked);
-
-    m_exportAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("&Export Trajectory…"),
-                                 this);
-    m_exportAction->setIconText(tr("CSV"));
-    m_exportAction->setObjectName(QStringLiteral("exportAction"));
-    m_exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-    m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
-    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportTrajectory);
-
-    m_handbookAction = new QAction(tr("Export Teacher &Handbook…"), this);
-    m_handbookAction->setObjectName(QStringLiteral("handbookAction"));
-    m_handbookAction->setStatusTip(tr("Write every lesson with its teacher notes as one printable HTML page"));
-    connect(m_handbookAction, &QAction::triggered, this, &MainWindow::exportHandbook);
-
-    m_previousAction = new QAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Previous Lesson"), this);
-    m_previousAction->setObjectName(QStringLiteral("previousLessonAction"));
-    m_previousAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Left));
-    connect(m_previousAction, &QAction::triggered, this, &MainWindow::previousLesson);
-    m_nextAction = new QAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Next Lesson"), this);
-    m_nextAction->setObjectName(QStringLiteral("nextLessonAction"));
-    m_nextAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Right));
-    connect(m_nextAction, &QAction::triggered, this, &MainWindow::nextLesson);
-
-    m_quitAction = new QAction(tr("&Quit"), this);
-    m_quitAction->setObjectName(QStringLiteral("quitAction"));
-    m_quitAction->setShortcut(QKeySequence::Quit);
-    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
-
-    m_presentationAction = new QAction(tr("&Stage View (Projector)"), this);
-    m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
-    m_presentationAction->setCheckable(true);
-    m_presentationAction->setShortcut(QKeySequence::FullScreen);
-    m_presentationAction->setStatusTip(
-        tr("The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)"));
-    m_presentationAction->setIconText(tr("Stage"));
-    m_presentationAction->setIcon(style()->standardIcon(QStyle::SP_TitleBarMaxButton));
-    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
-
-    m_themeAction = new QAction(tr("P&rojector Theme"), this);
-    m_themeAction->setObjectName(QStringLiteral("themeAction"));
-    m_themeAction->setCheckable(true);
-    m_themeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
-    m_themeAction->setStatusTip(tr("White box, dark thick outlines, colour-blind-safe balls and larger text "
-                                   "everywhere (always on in the stage view)"));
-    connect(m_themeAction, &QAction::toggled, this, &MainWindow::setProjectorTheme);
-
-    m_screenshotDoubleAction = new QAction(tr("Picture at &Double Size…"), this);
-    m_screenshotDoubleAction->setObjectName(QStringLiteral("screenshotDoubleAction"));
-    m_screenshotDoubleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    m_screenshotDoubleAction->setStatusTip(tr("Save the stage at twice the screen's resolution, for print"));
-    connect(m_screenshotDoubleAction, &QAction::triggered, this, [this] { saveScreenshot(2.0); });
-
-    m_aboutAction = new QAction(tr("&About ForceLab"), this);
-    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
-}
-
-void MainWindow::createMenus()
-{
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_openAction);
-    file->addAction(m_saveAction);
-    file->addSeparator();
-    file->addAction(m_screenshotAction);
-    file->addAction(m_screenshotDoubleAction);
-    file->addAction(m_recordAction);
-    file->addAction(m_exportAction);
-    file->addAction(m_handbookAction);
-    file->addSeparator();
-    file->addAction(m_quitAction);
-
-    // Undo / Redo come from the Parameters panel's stack (createDocks).
-    menuBar()->addMenu(tr("&Edit"))->setObjectName(QStringLiteral("editMenu"));
-
-    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
-    simulation->addAction(m_playAction);
-    simulation->addAction(m_stepAction);
-    simulation->addAction(m_resetAction);
-    simulation->addSeparator();
-    simulation->addAction(m_slowerAction);
-    simulation->addAction(m_fasterAction);
-
-    QMenu* lessons = menuBar()->addMenu(tr("&Lesson"));
-    lessons->addAction(m_previousAction);
-    lessons->addAction(m_nextAction);
-
-    m_accuracyMenu = menuBar()->addMenu(tr("&Accuracy"));
-    m_accuracyMenu->setObjectName(QStringLiteral("accuracyMenu"));
-
-    // Also filled by createToolBars and createDocks with their toggle actions.
-    m_viewMenu = menuBar()->addMenu(tr("&View"));
-    m_viewMenu->addAction(m_presentationAction);
-    m_viewMenu->addAction(m_themeAction);
-    m_viewMenu->addMenu(m_overlayActions->menu());
-    m_viewMenu->addSeparator();
-
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(m_aboutAction);
-}
-
-void MainWindow::createToolBars()
-{
-    m_simulationToolBar = addToolBar(tr("Simulation"));
-    m_simulationToolBar->setObjectName(QStringLiteral("simulationToolBar"));
-    m_simulationToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_simulationToolBar->addAction(m_playAction);
-    m_simulationToolBar->addAction(m_stepAction);
-    m_simulationToolBar->addAction(m_resetAction);
-    m_simulationToolBar->addSeparator();
-    m_simulationToolBar->addAction(m_slowerAction);
-    m_simulationToolBar->addAction(m_fasterAction);
-    m_simulationToolBar->addAction(m_presentationAction);
-    {
-        // The drawing aids, one click away: a button with the View menu's "Show" menu.
-        auto* show = new QToolButton(m_simulationToolBar);
-        show->setObjectName(QStringLiteral("showButton"));
-        show->setText(tr("Show"));
-        show->setIcon(style()->standardIcon(QStyle::SP_FileDialogContentsView));
-        show->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-        show->setPopupMode(QToolButton::InstantPopup);
-        show->setMenu(m_overlayActions->menu());
-        show->setAccessibleName(tr("Show: what the stage draws"));
-        m_simulationToolBar->addWidget(show);
-    }
-
-    m_fileToolBar = addToolBar(tr("File"));
-    m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
-    m_fileToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_fileToolBar->addAction(m_openAction);
-    m_fileToolBar->addAction(m_saveAction);
-    m_fileToolBar->addAction(m_screenshotAction);
-    m_fileToolBar->addAction(m_recordAction);
-    m_fileToolBar->addAction(m_exportAction);
-
-    m_viewMenu->addAction(m_simulationToolBar->toggleViewAction());
-    m_viewMenu->addAction(m_fileToolBar->toggleViewAction());
-    m_viewMenu->addSeparator();
-}
-
 void MainWindow::createDocks()
 {
     m_lessonsDock = new LessonsDock(this);
@@ -390,7 +133,7 @@ void MainWindow::createDocks()
     connect(m_lessonsDock, &LessonsDock::lessonChosen, this, &MainWindow::chooseLesson);
     addDockWidget(Qt::LeftDockWidgetArea, m_lessonsDock);
 
-    m_parameters = new ParameterPanel(m_controller);
+    m_parameters = new ParameterPanel(m_controller, m_editor);
     auto* scroll = new QScrollArea;
     scroll->setWidget(m_parameters);
     scroll->setWidgetResizable(true);
@@ -420,7 +163,7 @@ void MainWindow::createDocks()
     m_codeDock = new CodeDock(m_controller, this);
     m_predictDock = new PredictDock(m_controller, this);
     m_stopwatchDock = new StopwatchDock(m_controller, this);
-    m_forceEditorDock = new ForceEditorDock(m_controller, m_parameters->undoStack(), this);
+    m_forceEditorDock = new ForceEditorDock(m_controller, m_editor, this);
     connect(m_canvas, &Canvas::selectedBallChanged, m_stopwatchDock, &StopwatchDock::setBall);
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
                               static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
@@ -436,11 +179,11 @@ void MainWindow::createDocks()
     m_accuracyMenu->addSeparator();
     m_accuracyMenu->addAction(m_accuracyDock->toggleViewAction());
 
-    m_undoAction = m_parameters->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction = m_editor->undoStack()->createUndoAction(this, tr("&Undo"));
     m_undoAction->setObjectName(QStringLiteral("undoAction"));
     m_undoAction->setShortcut(QKeySequence::Undo);
     m_undoAction->setIcon(style()->standardIcon(QStyle::SP_ArrowLeft));
-    m_redoAction = m_parameters->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction = m_editor->undoStack()->createRedoAction(this, tr("&Redo"));
     m_redoAction->setObjectName(QStringLiteral("redoAction"));
     m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     m_redoAction->setIcon(style()->standardIcon(QStyle::SP_ArrowRight));
@@ -513,7 +256,6 @@ void MainWindow::createStatusBar()
 
     connect(m_controller, &SimulationController::errorOccurred, this, &MainWindow::showError);
     connect(m_controller, &SimulationController::timeDropped, this, &MainWindow::showTimeDropped);
-    connect(m_controller, &SimulationController::haltedChanged, this, &MainWindow::showHalted);
     connect(m_controller, &SimulationController::timeScaleChanged, this, &MainWindow::updateStatus);
     // A new lesson or a single step while paused shows at once (while it
     // runs, the timer below is often enough).
@@ -577,7 +319,7 @@ void MainWindow::writeSettings() const
 {
     QSettings settings;
     // Quitting from the stage view keeps the normal layout for next time.
-    const bool staged = m_stageBar && m_stageBar->isVisible();
+    const bool staged = m_stage->isStaged();
     settings.setValue(kGeometryKey, staged ? m_normalGeometry : saveGeometry());
     settings.setValue(kStateKey, staged ? m_normalDocks : saveState());
     if (!m_lesson.source.isEmpty())
@@ -637,7 +379,6 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_lesson = lesson;
     Overlays overlays = Overlays::fromNames(lesson.overlays);
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
-    m_canvas->setOverlays(m_stageBar->isVisible() ? readoutsToStageBar(overlays) : overlays);
     m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
@@ -651,16 +392,13 @@ bool MainWindow::setLesson(const Lesson& lesson)
         m_forceEditorDock->raise(); // the lesson is about writing a law
     else if (!m_plotsDock->isHidden())
         m_plotsDock->raise();
-    updateStageCaption();
-    updateStageReadout();
-    m_stageSliders->setLessonControls(lesson.controls);
-    layoutStage(); // the box's shape decides where the stage bar goes
+    m_stage->setLesson(lesson, overlays);
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab")
                                           : tr("%1 — ForceLab").arg(lessons::markupToPlainText(lesson.title)));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
     // Undo steps belong to the lesson they were made in.
-    m_parameters->undoStack()->clear();
+    m_editor->undoStack()->clear();
     // The keyboard goes to the stage, not to whatever field had it in the
     // last lesson (a Speed field with the focus took Space as text).
     m_canvas->setFocus(Qt::OtherFocusReason);
@@ -695,7 +433,7 @@ void MainWindow::resetLesson()
     // its steps were made on a world that no longer exists.
     m_controller->reset();
     m_controller->setTimeScale(1.0); // a slow-motion experiment does not carry into the rerun
-    m_parameters->undoStack()->clear();
+    m_editor->undoStack()->clear();
 }
 
 void MainWindow::scaleTime(double factor)
@@ -724,8 +462,7 @@ void MainWindow::scaleTime(double factor)
                                               : tr("Already the fastest speed, %1×").arg(now), 3000);
         return;
     }
-    m_controller->setTimeScale(wanted);
-    m_parameters->undoStack()->push(new TimeScaleCommand(m_controller, now, wanted));
+    m_editor->editTimeScale(wanted);
     statusBar()->showMessage(tr("Speed %1×").arg(wanted), 2000);
 }
 
@@ -760,123 +497,6 @@ void MainWindow::showLoadErrors(const QStringList& errors)
     box.exec();
 }
 
-void MainWindow::openLessonFile()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Lesson"), lessonsFolder(),
-                                                      tr("Lesson files (*.json);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    m_lastDirectory = QFileInfo(path).absolutePath();
-    const LoadResult result = LessonLoader::loadFile(path);
-    if (!result.ok()) {
-        showLoadErrors(result.errors());
-        return;
-    }
-    setLesson(*result.lesson);
-}
-
-QString MainWindow::suggestedFileName(const QString& extension) const
-{
-    const QString stem = m_lesson.id.isEmpty() ? QStringLiteral("scene") : m_lesson.id;
-    return QDir(m_lastDirectory.isEmpty() ? QDir::homePath() : m_lastDirectory)
-        .filePath(QStringLiteral("%1-t%2.%3").arg(stem).arg(m_controller->world().time(), 0, 'f', 1).arg(extension));
-}
-
-Lesson MainWindow::currentSceneAsLesson() const
-{
-    Lesson lesson = m_lesson;
-    const sim::World& world = m_controller->world();
-    lesson.scene.settings = world.settings();
-    lesson.scene.spawn = m_controller->spawn();
-    lesson.scene.spawn.count = 0; // every ball is listed
-    const sim::BallState& balls = world.balls();
-    lesson.scene.balls.clear();
-    lesson.scene.balls.reserve(static_cast<std::size_t>(balls.size()));
-    for (int i = 0; i < balls.size(); ++i)
-        lesson.scene.balls.push_back(balls.ball(i));
-    if (lesson.id.isEmpty())
-        lesson.id = QStringLiteral("saved-scene");
-    return lesson;
-}
-
-bool MainWindow::saveLessonTo(const QString& path)
-{
-    Lesson lesson = currentSceneAsLesson();
-    // The file's name as its id, when it makes a valid one.
-    static const QRegularExpression validId(QStringLiteral("^[A-Za-z0-9_-]{1,64}$"));
-    if (const QString stem = QFileInfo(path).completeBaseName(); validId.match(stem).hasMatch())
-        lesson.id = stem;
-    QString why;
-    if (!lessons::writeFileAtomically(path, saveLesson(lesson), &why)) {
-        showError(tr("Lesson not saved: %1").arg(why));
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %n ball(s) and the settings to %1", nullptr, int(lesson.scene.balls.size()))
-                                 .arg(QDir::toNativeSeparators(path)), 5000);
-    return true;
-}
-
-void MainWindow::saveLessonFile()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Scene as Lesson"), suggestedFileName("json"),
-                                                      tr("Lesson files (*.json)"));
-    if (path.isEmpty())
-        return;
-    m_lastDirectory = QFileInfo(path).absolutePath();
-    saveLessonTo(path);
-}
-
-QString MainWindow::lessonsFolder()
-{
-    // Installed (share/forcelab/lessons), beside the program, or the source
-    // tree's folder for a build that was not installed.
-    const QDir app(QCoreApplication::applicationDirPath());
-    const QStringList candidates{app.filePath(QStringLiteral("../share/forcelab/lessons")),
-                                 app.filePath(QStringLiteral("lessons")), app.filePath(QStringLiteral("../lessons")),
-                                 QStringLiteral(FORCELAB_SOURCE_LESSONS)};
-    for (const QString& folder : candidates)
-        if (QFileInfo(folder).isDir() && !QDir(folder).entryList({QStringLiteral("*.json")}, QDir::Files).isEmpty())
-            return QDir::cleanPath(folder);
-    return QDir::homePath();
-}
-
-QSize MainWindow::pictureSize() const
-{
-    // The stage as large as the whole screen would show it, whatever the
-    // size of the canvas now: a small window still gives a large picture.
-    const QScreen* s = m_canvas->screen() ? m_canvas->screen() : QGuiApplication::primaryScreen();
-    const QSize screenSize = s ? s->size() : m_canvas->size();
-    const QSizeF canvas = QSizeF(m_canvas->size());
-    if (canvas.isEmpty())
-        return screenSize;
-    const double fit = std::min(screenSize.width() / canvas.width(), screenSize.height() / canvas.height());
-    return (canvas * std::max(1.0, fit)).toSize();
-}
-
-bool MainWindow::saveScreenshotTo(const QString& path, double scale)
-{
-    const QScreen* s = m_canvas->screen() ? m_canvas->screen() : QGuiApplication::primaryScreen();
-    const double dpr = (s ? s->devicePixelRatio() : 1.0) * scale;
-    const QImage image = m_canvas->renderImage(pictureSize(), dpr);
-    QString why;
-    if (!writePngAtomically(path, image, &why)) {
-        showError(tr("Picture not saved: %1").arg(why));
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved the picture to %1").arg(QDir::toNativeSeparators(path)), 5000);
-    return true;
-}
-
-void MainWindow::saveScreenshot(double scale)
-{
-    const QString title = scale > 1.0 ? tr("Save Picture at Double Size") : tr("Save Picture");
-    const QString path = QFileDialog::getSaveFileName(this, title, suggestedFileName("png"), tr("PNG images (*.png)"));
-    if (path.isEmpty())
-        return;
-    m_lastDirectory = QFileInfo(path).absolutePath();
-    saveScreenshotTo(path, scale);
-}
-
 void MainWindow::setProjectorTheme(bool on)
 {
     if (m_themeAction->isChecked() != on)
@@ -891,40 +511,6 @@ void MainWindow::applyCanvasLook()
     const bool stage = m_presentationAction->isChecked();
     m_canvas->setColors(canvasColors(stage || m_themeAction->isChecked()));
     m_canvas->setLineScale(stage ? 1.6 : m_themeAction->isChecked() ? 1.4 : 1.0);
-}
-
-void MainWindow::exportHandbook()
-{
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Teacher Handbook"),
-                                                      QStringLiteral("forcelab-handbook.html"), tr("HTML (*.html)"));
-    if (path.isEmpty())
-        return;
-    QString why;
-    if (!lessons::writeFileAtomically(path, builtInHandbookHtml().toUtf8(), &why)) {
-        QMessageBox::warning(this, tr("Export Teacher Handbook"),
-                             tr("%1\nThe handbook was not written; an old file there is unchanged.").arg(why));
-        return;
-    }
-    statusBar()->showMessage(tr("Handbook written to %1").arg(path), 4000);
-}
-
-void MainWindow::exportTrajectory()
-{
-    if (m_trajectory->rows().empty()) {
-        statusBar()->showMessage(tr("Nothing recorded yet: switch on Record Trajectory (Ctrl+Shift+R) first"), 5000);
-        return;
-    }
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Trajectory"), suggestedFileName("csv"),
-                                                      tr("CSV files (*.csv)"));
-    if (path.isEmpty())
-        return;
-    m_lastDirectory = QFileInfo(path).absolutePath();
-    if (auto error = m_trajectory->save(path)) {
-        showError(*error);
-        return;
-    }
-    statusBar()->showMessage(tr("Wrote %L1 rows to %2").arg(m_trajectory->rows().size())
-                                 .arg(QDir::toNativeSeparators(path)), 5000);
 }
 
 void MainWindow::updateStatus()
@@ -954,7 +540,7 @@ void MainWindow::updatePlayAction(bool playing)
 
 void MainWindow::setPresentationMode(bool on)
 {
-    if (on == m_stageBar->isVisible())
+    if (on == m_stage->isStaged())
         return;
     if (on) {
         // Everything but the stage goes: docks, menus, toolbars, status bar;
@@ -968,23 +554,14 @@ void MainWindow::setPresentationMode(bool on)
         m_simulationToolBar->hide();
         m_fileToolBar->hide();
         statusBar()->hide();
-        m_canvas->setBoxMargin(4.0);
-        m_canvas->setOverlays(readoutsToStageBar(m_canvas->overlays()));
-        updateStageCaption();
-        m_stageBar->show();
+        m_stage->setStaged(true);
         applyCanvasLook();
-        updateStageReadout(); // shown now, so it fills in
         if (const QScreen* s = screen())
             setGeometry(s->geometry());
         showFullScreen();
     } else {
-        m_stageBar->hide();
+        m_stage->setStaged(false);
         applyCanvasLook();
-        m_canvas->setBoxMargin(10.0);
-        Overlays back = m_canvas->overlays();
-        back.readout = m_stageOverlays.readout;
-        back.totals = m_stageOverlays.totals;
-        m_canvas->setOverlays(back);
         menuBar()->show();
         m_simulationToolBar->show();
         m_fileToolBar->show();
@@ -993,156 +570,12 @@ void MainWindow::setPresentationMode(bool on)
         restoreState(m_normalDocks);
         restoreGeometry(m_normalGeometry);
     }
-    layoutStage();
-}
-
-// The stage view shows the readout and the totals in its bar, not on the
-// canvas: remembers which of them the canvas had, and returns the canvas's
-// overlays without them.
-Overlays MainWindow::readoutsToStageBar(Overlays overlays)
-{
-    m_stageOverlays = overlays;
-    overlays.readout = overlays.totals = false;
-    return overlays;
-}
-
-void MainWindow::updateStageReadout()
-{
-    if (!m_stageBar->isVisible())
-        return;
-    // Long lines in a row, short ones in a column, and in a row too when
-    // the long ones would have to shrink out of reading size.
-    const StageReadout text = stageReadoutText();
-    const bool wide = !m_stageBar->isVertical() && m_stageBar->readoutFits(text.wide);
-    m_stageBar->setReadout(wide ? text.wide : text.narrow);
-}
-
-// Both forms from one evaluation of the accelerations and the energy (each
-// a pass over every pair of balls when they attract).
-MainWindow::StageReadout MainWindow::stageReadoutText() const
-{
-    const sim::World& world = m_controller->world();
-    QStringList wide, narrow;
-    if (m_stageOverlays.readout && !world.balls().empty()) {
-        const sim::Matrix2X a = world.accelerations();
-        wide << WorldPainter::readoutText(world, m_canvas->selectedBall(), &a, true);
-        // Short lines, x and y side by side.
-        const int n = world.balls().size(), selected = m_canvas->selectedBall();
-        const int i = selected >= 0 && selected < n ? selected : 0;
-        const sim::Vec2 x = world.balls().position.col(i), v = world.balls().velocity.col(i);
-        // One decimal, or four significant digits from 100,000 on (a stiff
-        // spring's −1e+06 px/s², not −1000000.0).
-        auto num = [](double value) {
-            return std::abs(value) < 1e5 ? QString::number(value, 'f', 1) : QString::number(value, 'g', 4);
-        };
-        narrow << tr("ball %1   t = %2 s").arg(i).arg(world.time(), 0, 'f', 3)
-               << QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y()))
-               << QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y()))
-               << QStringLiteral("a (%1, %2) px/s²").arg(num(a(0, i)), num(a(1, i)))
-               << tr("speed %1 px/s").arg(v.norm(), 0, 'f', 1);
-    }
-    if (m_stageOverlays.totals) {
-        const sim::Energy e = world.energy();
-        const sim::Vec2 p = world.momentum();
-        wide << WorldPainter::totalsText(e, p, true);
-        // A column is narrow: there "energy" and "momentum" head lines of
-        // their own and the momentum's x and y take one line each, so no
-        // line is much wider than one number's; a row's short form needs
-        // the lines this saves.
-        const bool column = m_stageBar->isVertical();
-        const QString kinetic = QString::number(e.kinetic, 'g', 4);
-        if (column)
-            narrow << tr("energy") << tr("  kinetic %1").arg(kinetic);
-        else
-            narrow << tr("energy: kinetic %1").arg(kinetic);
-        narrow << tr("  potential %1").arg(e.potential, 0, 'g', 4) << tr("  total %1").arg(e.total(), 0, 'g', 4);
-        if (column)
-            narrow << tr("momentum") << tr("  x %1").arg(p.x(), 0, 'g', 4) << tr("  y %1").arg(p.y(), 0, 'g', 4);
-        else
-            narrow << tr("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
-    }
-    return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
-}
-
-void MainWindow::updateStageCaption()
-{
-    m_stageBar->setCaption(lessons::markupToPlainText(m_lesson.title),
-                           lessons::markupToPlainText(m_lesson.challenges.value(0)));
-}
-
-void MainWindow::resizeEvent(QResizeEvent* event)
-{
-    QMainWindow::resizeEvent(event);
-    layoutStage();
-}
-
-// In the stage view the bar takes the strip the box leaves: a column beside
-// it when the window is wider than the box (16:9 screens and a 3:2 box), a
-// row under it otherwise, so the box is as large as the window allows.
-void MainWindow::layoutStage()
-{
-    if (!m_stageBar->isVisible())
-        return;
-    const sim::BoxSettings& box = m_controller->world().settings().box;
-    const double aspect = box.width > 0 && box.height > 0 ? box.width / box.height : 1.5;
-    const QSize area = centralWidget()->size();
-    const double side = area.width() - aspect * area.height();      // px left beside a full-height box
-    const double below = area.height() - area.width() / aspect;      // px left under a full-width box
-    const bool vertical = side >= below;
-    const bool wasVertical = m_stageBar->isVertical();
-    m_stageBar->setVertical(vertical);
-    m_stageLayout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
-    // A row is as tall as its caption, readout and sliders need, up to a
-    // seventh of the screen (the box keeps over 80% of it); the sliders
-    // stay in the Parameters panel when they would not fit under that.
-    // Two sliders side by side in a column at least 320 px wide (one in a
-    // narrower one, so a label such as "Ball restitution" is not cut); in a
-    // row as many as fit its width.
-    const int columnWidth = std::max(200, static_cast<int>(side));
-    m_stageSliders->setColumns(vertical ? (columnWidth >= 320 ? 2 : 1)
-                                        : std::clamp(area.width() / 240, 1, std::max(1, m_stageSliders->count())));
-    int minimum = 200;
-    if (!vertical) {
-        // Sliders that do not fit under the cap wait for the Sliders button,
-        // which lets the bar take up to 2/5 of the screen to show them.
-        const int cap = std::max(96, area.height() / 7);
-        const bool sliders = m_stageSliders->count() > 0;
-        m_stageBar->unfitChallenge(); // its size hint at its own font, whatever room it had before
-        m_stageBar->setSlidersShown(sliders);
-        const bool fit = m_stageBar->sizeHint().height() <= cap;
-        m_stageSlidersAction->setVisible(sliders && !fit);
-        const bool asked = sliders && !fit && m_stageSlidersAction->isChecked();
-        m_stageBar->setSlidersShown(sliders && (fit || asked));
-        minimum = std::clamp(m_stageBar->sizeHint().height(), 96, cap);
-        if (asked) // the bar as without them, plus the rows of sliders
-            minimum = std::min(cap + m_stageSliders->sizeHint().height() + 8, area.height() * 2 / 5);
-    } else {
-        m_stageSlidersAction->setVisible(false);
-        m_stageBar->setSlidersShown(m_stageSliders->count() > 0);
-    }
-    const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
-    if (vertical) {
-        m_stageBar->setFixedWidth(strip);
-        m_stageBar->setMinimumHeight(0);
-        m_stageBar->setMaximumHeight(QWIDGETSIZE_MAX);
-    } else {
-        m_stageBar->setFixedHeight(strip);
-        m_stageBar->setMinimumWidth(0);
-        m_stageBar->setMaximumWidth(QWIDGETSIZE_MAX);
-    }
-    if (vertical != wasVertical)
-        updateStageReadout(); // short lines in a column, long ones in a row
+    m_stage->layoutStage();
 }
 
 void MainWindow::showError(const QString& message)
 {
     statusBar()->showMessage(tr("⚠ %1").arg(message), 8000);
-}
-
-void MainWindow::showHalted(const QString& reason)
-{
-    m_haltBanner->setText(tr("<b>Stopped:</b> %1").arg(reason.toHtmlEscaped()));
-    m_haltBanner->setVisible(!reason.isEmpty());
 }
 
 void MainWindow::showTimeDropped(double seconds)

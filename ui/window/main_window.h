@@ -1,8 +1,9 @@
 #pragma once
-// The workbench window: the canvas in the middle and four docks around it
-// (Lessons, Parameters, Plots, Inspector), one QAction per command shared by
-// menu and toolbar, a status bar with the step's numbers, and layout plus last
-// lesson kept in QSettings.
+// The workbench window: the stage (stage_view.h: the canvas, and in the stage
+// view the bar a class reads) in the middle and the docks around it (Lessons,
+// Parameters, Plots, Inspector, Predict, Stopwatch, Force editor, Accuracy,
+// Code), one QAction per command shared by menu and toolbar, a status bar
+// with the step's numbers, and layout plus last lesson kept in QSettings.
 
 #include "lessons/lesson.h"
 #include "ui/drawing/world_painter.h"
@@ -15,7 +16,6 @@
 #include <optional>
 
 class QAction;
-class QBoxLayout;
 class QDockWidget;
 class QLabel;
 class QMenu;
@@ -26,8 +26,8 @@ namespace forcelab {
 
 class AccuracyDock;
 class CodeDock;
-class StageBar;
-class StageSliders;
+class SettingsEditor;
+class StageView;
 class OverlayActions;
 class Canvas;
 class InspectorDock;
@@ -83,7 +83,6 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
-    void resizeEvent(QResizeEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
     void changeEvent(QEvent* event) override;
@@ -110,22 +109,14 @@ private slots:
     void updatePlayAction(bool playing);
     void showError(const QString& message);
     void showTimeDropped(double seconds);
-    void showHalted(const QString& reason);
     void setPresentationMode(bool on);
     void applyCanvasLook();
     void useCompactDocks();
-    void updateStageCaption();
-    void updateStageReadout();
-    Overlays readoutsToStageBar(Overlays overlays);
-    void layoutStage();
     void about();
 
 private:
-    struct StageReadout {
-        QString wide, narrow; // the readout and totals in long lines, and in short ones
-    };
-    StageReadout stageReadoutText() const;
-    void createActions();
+    void createSimulationActions();
+    void createFileActions();
     void createMenus();
     void createToolBars();
     void createDocks();
@@ -150,13 +141,11 @@ private:
     ForceEditorDock* m_forceEditorDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
-    StageBar* m_stageBar = nullptr;
-    StageSliders* m_stageSliders = nullptr;
+    SettingsEditor* m_editor = nullptr; // every control edits through it; owns the undo stack
+    StageView* m_stage = nullptr;       // the central widget: the canvas and the stage view's bar
     OverlayActions* m_overlayActions = nullptr;
-    QBoxLayout* m_stageLayout = nullptr;
     QByteArray m_normalGeometry; // before the stage view
     QByteArray m_normalDocks;
-    Overlays m_stageOverlays; // the canvas's overlays before the stage view took its readouts
     QAction* m_handbookAction = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
     Lesson m_lesson;
@@ -166,7 +155,6 @@ private:
     QAction* m_resetAction = nullptr;
     QAction* m_slowerAction = nullptr;
     QAction* m_fasterAction = nullptr;
-    QAction* m_stageSlidersAction = nullptr; // shows a row bar's sliders when they do not fit
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_openAction = nullptr;
@@ -196,7 +184,6 @@ private:
     QLabel* m_ballsLabel = nullptr;
     QLabel* m_pairsLabel = nullptr;
     QLabel* m_droppedLabel = nullptr;
-    QLabel* m_haltBanner = nullptr; // above the canvas while the world refuses to step
     QTimer* m_statusTimer = nullptr;
     QTimer* m_droppedTimer = nullptr;
     QElapsedTimer m_statusClock;

@@ -1,0 +1,225 @@
+#include "ui/stage/stage_view.h"
+
+#include "lessons/lesson_markup.h"
+#include "ui/canvas/canvas.h"
+#include "ui/canvas/history_recorder.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/stage/stage_bar.h"
+#include "ui/stage/stage_sliders.h"
+
+#include <QAction>
+#include <QBoxLayout>
+#include <QLabel>
+#include <QStyle>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab {
+
+StageView::StageView(SimulationController* controller, SettingsEditor* editor, QWidget* parent)
+    : QWidget(parent)
+    , m_controller(controller)
+    , m_editor(editor)
+{
+    setObjectName(QStringLiteral("stageView"));
+    m_canvas = new Canvas(m_controller, this);
+    // The record of the past, kept here for the canvas and whatever else
+    // shows it; made after the canvas so it records after the hand holds.
+    m_history = new HistoryRecorder(m_controller, this);
+    m_canvas->setHistory(m_history);
+    // The banner says, above the canvas, why the simulation stopped itself.
+    m_haltBanner = new QLabel(this);
+    m_haltBanner->setObjectName(QStringLiteral("haltBanner"));
+    m_haltBanner->setWordWrap(true);
+    m_haltBanner->setStyleSheet(QStringLiteral("QLabel { background: #fde2e1; color: #7a1410; "
+                                               "border-bottom: 2px solid #c0392b; padding: 8px; }"));
+    m_haltBanner->hide();
+    m_layout = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->setSpacing(0);
+    auto* column = new QVBoxLayout;
+    column->setSpacing(0);
+    column->addWidget(m_haltBanner);
+    column->addWidget(m_canvas, 1);
+    m_layout->addLayout(column, 1);
+    connect(m_controller, &SimulationController::haltedChanged, this, &StageView::showHalted);
+}
+
+void StageView::createBar(const QList<QAction*>& actions)
+{
+    // The row bar under the box has room for the lesson's sliders only on a
+    // wide screen; on a 4:3 projector this button makes the bar taller to
+    // show them (the box shrinks while they are shown).
+    m_slidersAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Sliders"), this);
+    m_slidersAction->setObjectName(QStringLiteral("stageSlidersAction"));
+    m_slidersAction->setCheckable(true);
+    m_slidersAction->setShortcut(Qt::Key_S);
+    m_slidersAction->setStatusTip(tr("Show the lesson's sliders under the box in the stage view (S)"));
+    m_slidersAction->setVisible(false);
+    connect(m_slidersAction, &QAction::toggled, this, &StageView::layoutStage);
+
+    m_bar = new StageBar(QList<QAction*>(actions) << m_slidersAction, this);
+    m_layout->addWidget(m_bar);
+    m_bar->hide();
+    m_sliders = new StageSliders(m_controller, m_editor, m_bar);
+    m_bar->setSliders(m_sliders);
+    connect(m_controller, &SimulationController::stepped, this, &StageView::updateReadout);
+    connect(m_bar, &StageBar::readoutRoomChanged, this, &StageView::updateReadout, Qt::QueuedConnection);
+}
+
+bool StageView::isStaged() const
+{
+    return m_bar && m_bar->isVisible();
+}
+
+void StageView::setStaged(bool on)
+{
+    if (on) {
+        m_canvas->setBoxMargin(4.0);
+        m_canvas->setOverlays(withoutReadouts(m_canvas->overlays()));
+        m_bar->setCaption(m_title, m_challenge);
+        m_bar->show();
+        updateReadout(); // shown now, so it fills in
+    } else {
+        m_bar->hide();
+        m_canvas->setBoxMargin(10.0);
+        Overlays back = m_canvas->overlays();
+        back.readout = m_ownOverlays.readout;
+        back.totals = m_ownOverlays.totals;
+        m_canvas->setOverlays(back);
+    }
+}
+
+void StageView::setLesson(const Lesson& lesson, const Overlays& overlays)
+{
+    setOverlays(overlays);
+    m_title = lessons::markupToPlainText(lesson.title);
+    m_challenge = lessons::markupToPlainText(lesson.challenges.value(0));
+    m_bar->setCaption(m_title, m_challenge);
+    updateReadout();
+    m_sliders->setLessonControls(lesson.controls);
+    layoutStage(); // the box's shape decides where the bar goes
+}
+
+void StageView::setOverlays(const Overlays& overlays)
+{
+    m_canvas->setOverlays(isStaged() ? withoutReadouts(overlays) : overlays);
+}
+
+void StageView::showHalted(const QString& reason)
+{
+    m_haltBanner->setText(tr("<b>Stopped:</b> %1").arg(reason.toHtmlEscaped()));
+    m_haltBanner->setVisible(!reason.isEmpty());
+}
+
+void StageView::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    layoutStage();
+}
+
+// The stage view shows the readout and the totals in its bar, not on the
+// canvas: remembers which of them the canvas had, and returns the canvas's
+// overlays without them.
+Overlays StageView::withoutReadouts(Overlays overlays)
+{
+    m_ownOverlays = overlays;
+    overlays.readout = overlays.totals = false;
+    return overlays;
+}
+
+void StageView::updateReadout()
+{
+    if (!isStaged())
+        return;
+    // Long lines in a row, short ones in a column, and in a row too when
+    // the long ones would have to shrink out of reading size.
+    const Readout text = readoutText();
+    const bool wide = !m_bar->isVertical() && m_bar->readoutFits(text.wide);
+    m_bar->setReadout(wide ? text.wide : text.narrow);
+}
+
+// Both forms from one evaluation of the accelerations and the energy (each
+// a pass over every pair of balls when they attract); the words and numbers
+// are the painter's (WorldPainter::readoutText), the one source of the
+// readout's text.
+StageView::Readout StageView::readoutText() const
+{
+    const sim::World& world = m_controller->world();
+    QStringList wide, narrow;
+    if (m_ownOverlays.readout && !world.balls().empty()) {
+        const sim::Matrix2X a = world.accelerations();
+        const int selected = m_canvas->selectedBall();
+        wide << WorldPainter::readoutText(world, selected, &a, WorldPainter::ReadoutShape::Wide);
+        narrow << WorldPainter::readoutText(world, selected, &a, WorldPainter::ReadoutShape::Short);
+    }
+    if (m_ownOverlays.totals) {
+        const sim::Energy e = world.energy();
+        const sim::Vec2 p = world.momentum();
+        wide << WorldPainter::totalsText(e, p, true);
+        narrow << WorldPainter::stageTotalsText(e, p, m_bar->isVertical());
+    }
+    return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
+}
+
+// In the stage view the bar takes the strip the box leaves: a column beside
+// it when the window is wider than the box (16:9 screens and a 3:2 box), a
+// row under it otherwise, so the box is as large as the window allows.
+void StageView::layoutStage()
+{
+    if (!isStaged())
+        return;
+    const sim::BoxSettings& box = m_controller->world().settings().box;
+    const double aspect = box.width > 0 && box.height > 0 ? box.width / box.height : 1.5;
+    const QSize area = size();
+    const double side = area.width() - aspect * area.height();      // px left beside a full-height box
+    const double below = area.height() - area.width() / aspect;      // px left under a full-width box
+    const bool vertical = side >= below;
+    const bool wasVertical = m_bar->isVertical();
+    m_bar->setVertical(vertical);
+    m_layout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+    // A row is as tall as its caption, readout and sliders need, up to a
+    // seventh of the screen (the box keeps over 80% of it); the sliders
+    // stay in the Parameters panel when they would not fit under that.
+    // Two sliders side by side in a column at least 320 px wide (one in a
+    // narrower one, so a label such as "Ball restitution" is not cut); in a
+    // row as many as fit its width.
+    const int columnWidth = std::max(200, static_cast<int>(side));
+    m_sliders->setColumns(vertical ? (columnWidth >= 320 ? 2 : 1)
+                                        : std::clamp(area.width() / 240, 1, std::max(1, m_sliders->count())));
+    int minimum = 200;
+    if (!vertical) {
+        // Sliders that do not fit under the cap wait for the Sliders button,
+        // which lets the bar take up to 2/5 of the screen to show them.
+        const int cap = std::max(96, area.height() / 7);
+        const bool sliders = m_sliders->count() > 0;
+        m_bar->unfitChallenge(); // its size hint at its own font, whatever room it had before
+        m_bar->setSlidersShown(sliders);
+        const bool fit = m_bar->sizeHint().height() <= cap;
+        m_slidersAction->setVisible(sliders && !fit);
+        const bool asked = sliders && !fit && m_slidersAction->isChecked();
+        m_bar->setSlidersShown(sliders && (fit || asked));
+        minimum = std::clamp(m_bar->sizeHint().height(), 96, cap);
+        if (asked) // the bar as without them, plus the rows of sliders
+            minimum = std::min(cap + m_sliders->sizeHint().height() + 8, area.height() * 2 / 5);
+    } else {
+        m_slidersAction->setVisible(false);
+        m_bar->setSlidersShown(m_sliders->count() > 0);
+    }
+    const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
+    if (vertical) {
+        m_bar->setFixedWidth(strip);
+        m_bar->setMinimumHeight(0);
+        m_bar->setMaximumHeight(QWIDGETSIZE_MAX);
+    } else {
+        m_bar->setFixedHeight(strip);
+        m_bar->setMinimumWidth(0);
+        m_bar->setMaximumWidth(QWIDGETSIZE_MAX);
+    }
+    if (vertical != wasVertical)
+        updateReadout(); // short lines in a column, long ones in a row
+}
+
+} // namespace forcelab

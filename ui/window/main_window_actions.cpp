@@ -1,0 +1,295 @@
+// The main window's commands: one QAction per command, made and set up in
+// one place, then placed in the menus and on the toolbars. Part of
+// MainWindow (main_window.h).
+#include "ui/window/main_window.h"
+
+#include "lessons/atomic_file.h"
+#include "lessons/lesson_markup.h"
+#include "ui/drawing/png_file.h"
+
+#include "ui/docks/accuracy_dock.h"
+#include "ui/canvas/canvas.h"
+#include "ui/window/overlay_actions.h"
+#include "ui/stage/stage_view.h"
+#include "ui/drawing/handbook.h"
+#include "ui/docks/code_dock.h"
+#include "ui/controls/settings_editor.h"
+#include "ui/docks/inspector_dock.h"
+#include "ui/docks/lessons_dock.h"
+#include "ui/controls/parameter_panel.h"
+#include "ui/docks/plots_dock.h"
+#include "ui/docks/predict_dock.h"
+#include "ui/docks/stopwatch_dock.h"
+#include "ui/docks/force_editor_dock.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/window/theme.h"
+#include "ui/docks/trajectory_export.h"
+
+#include "lessons/lesson_loader.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPainter>
+#include <QPixmap>
+#include <QRegularExpression>
+#include <QSaveFile>
+#include <QScreen>
+#include <QScrollArea>
+#include <QShortcut>
+#include <QSplitter>
+#include <QToolButton>
+#include <QBoxLayout>
+#include <QSettings>
+#include <QStatusBar>
+#include <QVBoxLayout>
+#include <QStyle>
+#include <QTabBar>
+#include <QTimer>
+#include <QToolBar>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+
+namespace forcelab {
+
+namespace {
+// A red dot: the usual sign for recording.
+QIcon recordIcon()
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(0x80, 0x10, 0x10), 1.5));
+    p.setBrush(QColor(0xd0, 0x20, 0x20));
+    p.drawEllipse(QRectF(6, 6, 20, 20));
+    return QIcon(pixmap);
+}
+} // namespace
+
+void MainWindow::createSimulationActions()
+{
+    m_playAction = new QAction(this);
+    m_playAction->setObjectName(QStringLiteral("playAction"));
+    m_playAction->setShortcut(Qt::Key_Space);
+    connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::togglePlay);
+    connect(m_controller, &SimulationController::playingChanged, this, &MainWindow::updatePlayAction);
+    updatePlayAction(m_controller->isPlaying());
+
+    m_stepAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("&Step"), this);
+    m_stepAction->setObjectName(QStringLiteral("stepAction"));
+    m_stepAction->setShortcuts({QKeySequence(Qt::Key_Right), QKeySequence(Qt::Key_Period)});
+    m_stepAction->setStatusTip(tr("Pause and advance by one time step dt (→ or .)"));
+    connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
+
+    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("&Reset"), this);
+    m_resetAction->setObjectName(QStringLiteral("resetAction"));
+    m_resetAction->setShortcut(Qt::Key_R);
+    m_resetAction->setStatusTip(tr("Start the lesson again with its own values (R)"));
+    connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLesson);
+
+    m_slowerAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("S&lower"), this);
+    m_slowerAction->setObjectName(QStringLiteral("slowerAction"));
+    m_slowerAction->setShortcut(Qt::Key_BracketLeft);
+    m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to 1/16× ([)"));
+    connect(m_slowerAction, &QAction::triggered, this, &MainWindow::slower);
+
+    m_fasterAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Faster"), this);
+    m_fasterAction->setObjectName(QStringLiteral("fasterAction"));
+    m_fasterAction->setShortcut(Qt::Key_BracketRight);
+    m_fasterAction->setStatusTip(tr("Double the speed, up to %1× (])").arg(SimulationController::kMaxTimeScale));
+    connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
+}
+
+void MainWindow::createFileActions()
+{
+    m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
+    m_openAction->setObjectName(QStringLiteral("openAction"));
+    m_openAction->setShortcut(QKeySequence::Open);
+    m_openAction->setIconText(tr("Open"));
+    m_openAction->setStatusTip(tr("Open a lesson file from disk"));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::openLessonFile);
+
+    m_saveAction = new QAction(style()->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save Scene as Lesson…"), this);
+    m_saveAction->setObjectName(QStringLiteral("saveAction"));
+    m_saveAction->setShortcut(QKeySequence::Save);
+    m_saveAction->setIconText(tr("Save"));
+    m_saveAction->setStatusTip(tr("Save the balls as they are now and the live settings as a lesson file"));
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveLessonFile);
+
+    m_screenshotAction = new QAction(style()->standardIcon(QStyle::SP_DesktopIcon), tr("Screens&hot…"), this);
+    m_screenshotAction->setIconText(tr("Picture"));
+    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
+    m_screenshotAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+    m_screenshotAction->setStatusTip(tr("Save a picture of the canvas as PNG"));
+    connect(m_screenshotAction, &QAction::triggered, this, [this] { saveScreenshot(1.0); });
+
+    m_recordAction = new QAction(recordIcon(), tr("Re&cord Trajectory"), this);
+    m_recordAction->setIconText(tr("Record"));
+    m_recordAction->setObjectName(QStringLiteral("recordAction"));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_recordAction->setStatusTip(tr("Record the path of the selected ball (or of all balls when none is selected)"));
+    connect(m_recordAction, &QAction::toggled, this, [this](bool on) {
+        if (on == m_trajectory->isRecording())
+            return;
+        if (on) {
+            m_trajectory->start(m_controller->world(), m_canvas->selectedBall());
+            statusBar()->showMessage(m_canvas->selectedBall() >= 0
+                                         ? tr("Recording ball #%1").arg(m_canvas->selectedBall())
+                                         : tr("Recording every ball"), 4000);
+        } else {
+            m_trajectory->stop();
+        }
+    });
+    connect(m_trajectory, &TrajectoryExport::recordingChanged, m_recordAction, &QAction::setChecked);
+
+    m_exportAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogDetailedView), tr("&Export Trajectory…"),
+                                 this);
+    m_exportAction->setIconText(tr("CSV"));
+    m_exportAction->setObjectName(QStringLiteral("exportAction"));
+    m_exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
+    connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportTrajectory);
+
+    m_handbookAction = new QAction(tr("Export Teacher &Handbook…"), this);
+    m_handbookAction->setObjectName(QStringLiteral("handbookAction"));
+    m_handbookAction->setStatusTip(tr("Write every lesson with its teacher notes as one printable HTML page"));
+    connect(m_handbookAction, &QAction::triggered, this, &MainWindow::exportHandbook);
+
+    m_previousAction = new QAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Previous Lesson"), this);
+    m_previousAction->setObjectName(QStringLiteral("previousLessonAction"));
+    m_previousAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Left));
+    connect(m_previousAction, &QAction::triggered, this, &MainWindow::previousLesson);
+    m_nextAction = new QAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Next Lesson"), this);
+    m_nextAction->setObjectName(QStringLiteral("nextLessonAction"));
+    m_nextAction->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Right));
+    connect(m_nextAction, &QAction::triggered, this, &MainWindow::nextLesson);
+
+    m_quitAction = new QAction(tr("&Quit"), this);
+    m_quitAction->setObjectName(QStringLiteral("quitAction"));
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_presentationAction = new QAction(tr("&Stage View (Projector)"), this);
+    m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcut(QKeySequence::FullScreen);
+    m_presentationAction->setStatusTip(
+        tr("The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)"));
+    m_presentationAction->setIconText(tr("Stage"));
+    m_presentationAction->setIcon(style()->standardIcon(QStyle::SP_TitleBarMaxButton));
+    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+
+    m_themeAction = new QAction(tr("P&rojector Theme"), this);
+    m_themeAction->setObjectName(QStringLiteral("themeAction"));
+    m_themeAction->setCheckable(true);
+    m_themeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_themeAction->setStatusTip(tr("White box, dark thick outlines, colour-blind-safe balls and larger text "
+                                   "everywhere (always on in the stage view)"));
+    connect(m_themeAction, &QAction::toggled, this, &MainWindow::setProjectorTheme);
+
+    m_screenshotDoubleAction = new QAction(tr("Picture at &Double Size…"), this);
+    m_screenshotDoubleAction->setObjectName(QStringLiteral("screenshotDoubleAction"));
+    m_screenshotDoubleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    m_screenshotDoubleAction->setStatusTip(tr("Save the stage at twice the screen's resolution, for print"));
+    connect(m_screenshotDoubleAction, &QAction::triggered, this, [this] { saveScreenshot(2.0); });
+
+    m_aboutAction = new QAction(tr("&About ForceLab"), this);
+    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_openAction);
+    file->addAction(m_saveAction);
+    file->addSeparator();
+    file->addAction(m_screenshotAction);
+    file->addAction(m_screenshotDoubleAction);
+    file->addAction(m_recordAction);
+    file->addAction(m_exportAction);
+    file->addAction(m_handbookAction);
+    file->addSeparator();
+    file->addAction(m_quitAction);
+
+    // Undo / Redo come from the Parameters panel's stack (createDocks).
+    menuBar()->addMenu(tr("&Edit"))->setObjectName(QStringLiteral("editMenu"));
+
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    simulation->addAction(m_playAction);
+    simulation->addAction(m_stepAction);
+    simulation->addAction(m_resetAction);
+    simulation->addSeparator();
+    simulation->addAction(m_slowerAction);
+    simulation->addAction(m_fasterAction);
+
+    QMenu* lessons = menuBar()->addMenu(tr("&Lesson"));
+    lessons->addAction(m_previousAction);
+    lessons->addAction(m_nextAction);
+
+    m_accuracyMenu = menuBar()->addMenu(tr("&Accuracy"));
+    m_accuracyMenu->setObjectName(QStringLiteral("accuracyMenu"));
+
+    // Also filled by createToolBars and createDocks with their toggle actions.
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addAction(m_themeAction);
+    m_viewMenu->addMenu(m_overlayActions->menu());
+    m_viewMenu->addSeparator();
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_aboutAction);
+}
+
+void MainWindow::createToolBars()
+{
+    m_simulationToolBar = addToolBar(tr("Simulation"));
+    m_simulationToolBar->setObjectName(QStringLiteral("simulationToolBar"));
+    m_simulationToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_simulationToolBar->addAction(m_playAction);
+    m_simulationToolBar->addAction(m_stepAction);
+    m_simulationToolBar->addAction(m_resetAction);
+    m_simulationToolBar->addSeparator();
+    m_simulationToolBar->addAction(m_slowerAction);
+    m_simulationToolBar->addAction(m_fasterAction);
+    m_simulationToolBar->addAction(m_presentationAction);
+    {
+        // The drawing aids, one click away: a button with the View menu's "Show" menu.
+        auto* show = new QToolButton(m_simulationToolBar);
+        show->setObjectName(QStringLiteral("showButton"));
+        show->setText(tr("Show"));
+        show->setIcon(style()->standardIcon(QStyle::SP_FileDialogContentsView));
+        show->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        show->setPopupMode(QToolButton::InstantPopup);
+        show->setMenu(m_overlayActions->menu());
+        show->setAccessibleName(tr("Show: what the stage draws"));
+        m_simulationToolBar->addWidget(show);
+    }
+
+    m_fileToolBar = addToolBar(tr("File"));
+    m_fileToolBar->setObjectName(QStringLiteral("fileToolBar"));
+    m_fileToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_fileToolBar->addAction(m_openAction);
+    m_fileToolBar->addAction(m_saveAction);
+    m_fileToolBar->addAction(m_screenshotAction);
+    m_fileToolBar->addAction(m_recordAction);
+    m_fileToolBar->addAction(m_exportAction);
+
+    m_viewMenu->addAction(m_simulationToolBar->toggleViewAction());
+    m_viewMenu->addAction(m_fileToolBar->toggleViewAction());
+    m_viewMenu->addSeparator();
+}
+
+} // namespace forcelab
