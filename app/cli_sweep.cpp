@@ -52,6 +52,100 @@ std::string sci(double v, int digits = 2)
     return s.str();
 }
 
+// One table per problem: every run's error and cost. Times are medians of
+// `repeats` runs.
+void printTable(std::ostream& out, const std::vector<ReferenceProblem>& problems, const std::vector<SweepRun>& rows,
+                int repeats)
+{
+    // The table.
+    out << "Work-precision sweep: position error at the end against the closed form, largest relative energy\n"
+           "error sampled at every step, cost. Times are medians of "
+        << repeats << " runs.\n";
+    for (const ReferenceProblem& p : problems) {
+        out << "\n" << p.name << ": " << p.what << " (end t = " << p.endTime << " s)\n";
+        out << std::left << std::setw(20) << "integrator" << std::right << std::setw(11) << "dt s" << std::setw(9)
+            << "tol" << std::setw(11) << "evals" << std::setw(12) << "pos err px" << std::setw(12) << "max|dE/E|"
+            << std::setw(11) << "ns/step" << std::setw(10) << "wall ms" << "\n";
+        for (const SweepRun& r : rows) {
+            if (r.problem != p.name)
+                continue;
+            out << std::left << std::setw(20) << toString(r.integrator) << std::right << std::setw(11) << sci(r.dt, 1)
+                << std::setw(9) << (r.tolerance > 0 ? sci(r.tolerance, 0) : "-") << std::setw(11)
+                << (r.blewUp ? "-" : std::to_string(r.evaluations)) << std::setw(12) << sci(r.positionError)
+                << std::setw(12) << sci(r.energyError) << std::setw(11)
+                << (r.blewUp ? "-" : sci(r.nsPerStepBall)) << std::setw(10) << (r.blewUp ? "-" : sci(r.wallMs))
+                << "\n";
+        }
+    }
+}
+
+// Fitted orders: slope of log(error) against log(dt), for every fixed-step
+// method with an order to fit.
+void printOrders(std::ostream& out, const std::vector<ReferenceProblem>& problems, const std::vector<SweepRun>& rows)
+{
+    out << "\nFitted order (slope of log error against log dt over the runs with 1e-10 < error / size < 1e-2):\n";
+    out << std::left << std::setw(20) << "problem";
+    // Every fixed-step method with an order to fit.
+    std::vector<IntegratorKind> fixed;
+    for (const IntegratorInfo& info : integrators())
+        if (!info.adaptive && info.order > 0.0)
+            fixed.push_back(info.kind);
+    for (IntegratorKind k : fixed)
+        out << std::right << std::setw(21) << std::string(toString(k)) + " (" +
+                                                   std::to_string(int(theoreticalOrder(k))) + ")";
+    out << "\n";
+    for (const ReferenceProblem& p : problems) {
+        out << std::left << std::setw(20) << p.name << std::right;
+        for (IntegratorKind k : fixed) {
+            const OrderFit f = fitOrder(rows, p, k);
+            std::ostringstream cell;
+            if (std::isnan(f.order))
+                cell << "- (" << f.points << " pts)";
+            else
+                cell << std::fixed << std::setprecision(2) << f.order << " (" << f.points << " pts)";
+            out << std::setw(21) << cell.str();
+        }
+        out << "\n";
+    }
+}
+
+// Long runs: the symplectic methods' energy error stays bounded, rk4's grows
+// in proportion to time.
+void printLongRuns(std::ostream& out, bool quick)
+{
+    const ReferenceProblem p = keplerProblem(0.5, 1000);
+    const std::vector<int> marks = quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
+    const double dt = 1.0 / 256;
+    out << "\nEnergy over long runs, Kepler e = 0.5, dt = 1/256 s: largest |dE/E| up to each number of orbits\n";
+    out << std::left << std::setw(20) << "integrator" << std::right;
+    for (int m : marks)
+        out << std::setw(14) << std::to_string(m) + " orbits";
+    out << std::setw(12) << "growth" << "\n";
+    for (IntegratorKind k : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Yoshida4,
+                             IntegratorKind::Rk4, IntegratorKind::Ias15}) {
+        Scene s = p.scene();
+        s.settings.time.integrator = k;
+        s.settings.time.dt = dt;
+        World world;
+        world.reset(s);
+        double worst = 0.0;
+        std::vector<double> at;
+        std::int64_t step = 0;
+        for (int m : marks) {
+            for (; step < std::int64_t(m) * 256; ++step) {
+                world.step();
+                worst = std::max(worst, p.energyError(world));
+            }
+            at.push_back(worst);
+        }
+        out << std::left << std::setw(20) << toString(k) << std::right;
+        for (double v : at)
+            out << std::setw(14) << sci(v);
+        out << std::setw(11) << std::fixed << std::setprecision(1) << at.back() / at.front() << "x"
+            << std::defaultfloat << "\n";
+    }
+}
+
 } // namespace
 
 void declareSweep(QCommandLineParser& p)
@@ -134,88 +228,11 @@ int sweepCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         << std::string(20, ' ') << "\n"
         << std::defaultfloat;
 
-    // The table.
-    out << "Work-precision sweep: position error at the end against the closed form, largest relative energy\n"
-           "error sampled at every step, cost. Times are medians of "
-        << repeats << " runs.\n";
-    for (const ReferenceProblem& p : problems) {
-        out << "\n" << p.name << ": " << p.what << " (end t = " << p.endTime << " s)\n";
-        out << std::left << std::setw(20) << "integrator" << std::right << std::setw(11) << "dt s" << std::setw(9)
-            << "tol" << std::setw(11) << "evals" << std::setw(12) << "pos err px" << std::setw(12) << "max|dE/E|"
-            << std::setw(11) << "ns/step" << std::setw(10) << "wall ms" << "\n";
-        for (const SweepRun& r : rows) {
-            if (r.problem != p.name)
-                continue;
-            out << std::left << std::setw(20) << toString(r.integrator) << std::right << std::setw(11) << sci(r.dt, 1)
-                << std::setw(9) << (r.tolerance > 0 ? sci(r.tolerance, 0) : "-") << std::setw(11)
-                << (r.blewUp ? "-" : std::to_string(r.evaluations)) << std::setw(12) << sci(r.positionError)
-                << std::setw(12) << sci(r.energyError) << std::setw(11)
-                << (r.blewUp ? "-" : sci(r.nsPerStepBall)) << std::setw(10) << (r.blewUp ? "-" : sci(r.wallMs))
-                << "\n";
-        }
-    }
+    printTable(out, problems, rows, repeats);
 
-    // Fitted orders: slope of log(error) against log(dt).
-    out << "\nFitted order (slope of log error against log dt over the runs with 1e-10 < error / size < 1e-2):\n";
-    out << std::left << std::setw(20) << "problem";
-    // Every fixed-step method with an order to fit.
-    std::vector<IntegratorKind> fixed;
-    for (const IntegratorInfo& info : integrators())
-        if (!info.adaptive && info.order > 0.0)
-            fixed.push_back(info.kind);
-    for (IntegratorKind k : fixed)
-        out << std::right << std::setw(21) << std::string(toString(k)) + " (" +
-                                                   std::to_string(int(theoreticalOrder(k))) + ")";
-    out << "\n";
-    for (const ReferenceProblem& p : problems) {
-        out << std::left << std::setw(20) << p.name << std::right;
-        for (IntegratorKind k : fixed) {
-            const OrderFit f = fitOrder(rows, p, k);
-            std::ostringstream cell;
-            if (std::isnan(f.order))
-                cell << "- (" << f.points << " pts)";
-            else
-                cell << std::fixed << std::setprecision(2) << f.order << " (" << f.points << " pts)";
-            out << std::setw(21) << cell.str();
-        }
-        out << "\n";
-    }
+    printOrders(out, problems, rows);
 
-    // Long runs: the symplectic methods' energy error stays bounded, rk4's
-    // grows in proportion to time.
-    {
-        const ReferenceProblem p = keplerProblem(0.5, 1000);
-        const std::vector<int> marks = o.quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
-        const double dt = 1.0 / 256;
-        out << "\nEnergy over long runs, Kepler e = 0.5, dt = 1/256 s: largest |dE/E| up to each number of orbits\n";
-        out << std::left << std::setw(20) << "integrator" << std::right;
-        for (int m : marks)
-            out << std::setw(14) << std::to_string(m) + " orbits";
-        out << std::setw(12) << "growth" << "\n";
-        for (IntegratorKind k : {IntegratorKind::SemiImplicitEuler, IntegratorKind::Verlet, IntegratorKind::Yoshida4,
-                                 IntegratorKind::Rk4, IntegratorKind::Ias15}) {
-            Scene s = p.scene();
-            s.settings.time.integrator = k;
-            s.settings.time.dt = dt;
-            World world;
-            world.reset(s);
-            double worst = 0.0;
-            std::vector<double> at;
-            std::int64_t step = 0;
-            for (int m : marks) {
-                for (; step < std::int64_t(m) * 256; ++step) {
-                    world.step();
-                    worst = std::max(worst, p.energyError(world));
-                }
-                at.push_back(worst);
-            }
-            out << std::left << std::setw(20) << toString(k) << std::right;
-            for (double v : at)
-                out << std::setw(14) << sci(v);
-            out << std::setw(11) << std::fixed << std::setprecision(1) << at.back() / at.front() << "x"
-                << std::defaultfloat << "\n";
-        }
-    }
+    printLongRuns(out, o.quick);
 
     if (csvFile) {
         std::ostringstream f;

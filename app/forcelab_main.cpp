@@ -16,9 +16,23 @@
 #include <cstdio>
 #include <optional>
 
-int main(int argc, char* argv[])
+namespace {
+
+// The options beside the lesson, declared once.
+struct Options {
+    QCommandLineOption help;
+    QCommandLineOption version;
+    QCommandLineOption screenshot;
+    QCommandLineOption after;
+    QCommandLineOption time;
+    QCommandLineOption size;
+    QCommandLineOption present;
+    QCommandLineOption benchRender;
+    QCommandLineOption select;
+};
+
+Options declareOptions(QCommandLineParser& parser)
 {
-    QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("A workbench for forces and collisions of 2D balls."));
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
@@ -45,10 +59,14 @@ int main(int argc, char* argv[])
                                     QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
     parser.addOptions({screenshot, after, time, size, present, select, benchRender});
+    return {help, version, screenshot, after, time, size, present, benchRender, select};
+}
 
-    // Read the arguments before any window system is needed: --help and
-    // --version work without a display, and a picture or a benchmark is
-    // drawn offscreen when there is none.
+// Reads the arguments before any window system is needed: --help and
+// --version work without a display, and a picture or a benchmark is drawn
+// offscreen when there is none. The exit code when the program ends here.
+std::optional<int> readArguments(QCommandLineParser& parser, const Options& o, int argc, char* argv[])
+{
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
@@ -56,33 +74,108 @@ int main(int argc, char* argv[])
         std::fprintf(stderr, "forcelab: %s (forcelab --help lists the options)\n", qPrintable(parser.errorText()));
         return 2;
     }
-    if (parser.isSet(help)) {
+    if (parser.isSet(o.help)) {
         // No application object yet, so Qt cannot know the program's name.
         std::fputs(qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"), QStringLiteral("forcelab"))),
                    stdout);
         return 0;
     }
-    if (parser.isSet(version)) {
+    if (parser.isSet(o.version)) {
         std::printf("ForceLab 0.1\n");
         return 0;
     }
     const bool display = !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
                          !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
     if (!display) {
-        if (!parser.isSet(screenshot) && !parser.isSet(benchRender)) {
+        if (!parser.isSet(o.screenshot) && !parser.isSet(o.benchRender)) {
             std::fprintf(stderr, "forcelab: there is no display to open the window on (DISPLAY is not set); start it "
                                  "on a desktop, or draw a picture offscreen with --screenshot FILE.png\n");
             return 2;
         }
         qputenv("QT_QPA_PLATFORM", "offscreen");
     }
+    return std::nullopt;
+}
+
+// For a picture: the window at the size asked for (`requested`), or the
+// whole screen's worth of workbench. False when --size is not a size.
+bool sizeForPicture(forcelab::MainWindow& window, const QCommandLineParser& parser, const Options& o,
+                    std::optional<QSize>& requested)
+{
+    if (parser.isSet(o.screenshot)) {
+        // The picture shows the whole screen's worth of workbench, or the size asked for.
+        if (parser.isSet(o.size)) {
+            const QStringList wh = parser.value(o.size).split(QLatin1Char('x'));
+            const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
+            if (wh.size() != 2 || w < 320 || h < 240 || w > 7680 || h > 4320) {
+                std::fprintf(stderr, "forcelab: --size: \"%s\" is not WxH between 320x240 and 7680x4320\n",
+                             qPrintable(parser.value(o.size)));
+                return false;
+            }
+            window.resize(w, h);
+            requested = QSize(w, h);
+        } else if (const QScreen* screen = window.screen()) {
+            window.setGeometry(screen->availableGeometry());
+        }
+    }
+    return true;
+}
+
+// Steps to --time (or runs for --after) and then saves the picture and
+// quits. False when one of those values is not a number in range.
+bool scheduleScreenshot(forcelab::MainWindow& window, const QCommandLineParser& parser, const Options& o)
+{
+    bool ok = false;
+    const double seconds = parser.value(o.after).toDouble(&ok);
+    if (!ok || !(seconds >= 0.0 && seconds <= 600.0)) {
+        std::fprintf(stderr, "forcelab: --after: \"%s\" is not a number of seconds from 0 to 600\n",
+                     qPrintable(parser.value(o.after)));
+        return false;
+    }
+    const QString file = parser.value(o.screenshot);
+    int wait = static_cast<int>(seconds * 1000.0);
+    if (parser.isSet(o.time)) {
+        const double t = parser.value(o.time).toDouble(&ok);
+        if (!ok || !(t >= 0.0 && t <= 3600.0)) {
+            std::fprintf(stderr, "forcelab: --time: \"%s\" is not a number of seconds from 0 to 3600\n",
+                         qPrintable(parser.value(o.time)));
+            return false;
+        }
+        forcelab::SimulationController* controller = window.controller();
+        const double dt = controller->world().settings().time.dt;
+        while (controller->world().time() < t - 0.5 * dt && !controller->world().halted())
+            controller->stepOnce();
+        wait = 200; // let the window lay itself out and paint
+    } else {
+        window.controller()->play(); // a lesson opens paused; --after shows it running
+    }
+    QTimer::singleShot(wait, &window, [&window, file] {
+        QString why;
+        if (!forcelab::writePngAtomically(file, window.grab().toImage(), &why)) {
+            std::fprintf(stderr, "forcelab: --screenshot: %s\n", qPrintable(why));
+            QApplication::exit(2);
+            return;
+        }
+        QApplication::quit();
+    });
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    QCommandLineParser parser;
+    const Options o = declareOptions(parser);
+    if (const std::optional<int> exit = readArguments(parser, o, argc, argv))
+        return *exit;
 
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("ForceLab"));
     QApplication::setApplicationName(QStringLiteral("ForceLab"));
     QApplication::setApplicationVersion(QStringLiteral("0.1"));
 
-    if (parser.isSet(benchRender)) {
+    if (parser.isSet(o.benchRender)) {
         const forcelab::RenderBenchOptions options;
         std::fputs(qPrintable(forcelab::formatRenderBench(forcelab::runRenderBench(options), options)), stdout);
         return 0;
@@ -92,7 +185,7 @@ int main(int argc, char* argv[])
     // A picture is taken with nobody at the screen: a lesson that does not
     // load is a line on stderr and exit code 2, not a dialog that waits for
     // a click for ever.
-    if (parser.isSet(screenshot) && !lessons.isEmpty()) {
+    if (parser.isSet(o.screenshot) && !lessons.isEmpty()) {
         const forcelab::LoadResult check = forcelab::LessonLoader::load(lessons.first());
         if (!check.ok()) {
             for (const QString& error : check.errors())
@@ -102,76 +195,29 @@ int main(int argc, char* argv[])
     }
     forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
     std::optional<QSize> requested; // --size
-    if (parser.isSet(screenshot)) {
-        // The picture shows the whole screen's worth of workbench, or the size asked for.
-        if (parser.isSet(size)) {
-            const QStringList wh = parser.value(size).split(QLatin1Char('x'));
-            const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
-            if (wh.size() != 2 || w < 320 || h < 240 || w > 7680 || h > 4320) {
-                std::fprintf(stderr, "forcelab: --size: \"%s\" is not WxH between 320x240 and 7680x4320\n",
-                             qPrintable(parser.value(size)));
-                return 2;
-            }
-            window.resize(w, h);
-            requested = QSize(w, h);
-        } else if (const QScreen* screen = window.screen()) {
-            window.setGeometry(screen->availableGeometry());
-        }
-    }
+    if (parser.isSet(o.screenshot) && !sizeForPicture(window, parser, o, requested))
+        return 2;
     window.show();
-    if (parser.isSet(present)) {
+    if (parser.isSet(o.present)) {
         window.findChild<QAction*>(QStringLiteral("presentationAction"))->setChecked(true);
         if (requested) { // a picture of the stage at the size asked for, whatever the screen
             window.showNormal();
             window.setGeometry(QRect(QPoint(0, 0), *requested));
         }
     }
-    if (parser.isSet(select)) {
+    if (parser.isSet(o.select)) {
         bool ok = false;
-        const int ball = parser.value(select).toInt(&ok);
+        const int ball = parser.value(o.select).toInt(&ok);
         const int count = window.controller()->world().balls().size();
         if (!ok || ball < 0 || ball >= count) {
             std::fprintf(stderr, "forcelab: --select: \"%s\" is not a ball number from 0 to %d\n",
-                         qPrintable(parser.value(select)), count - 1);
+                         qPrintable(parser.value(o.select)), count - 1);
             return 2;
         }
         window.canvas()->setSelectedBall(ball);
     }
 
-    if (parser.isSet(screenshot)) {
-        bool ok = false;
-        const double seconds = parser.value(after).toDouble(&ok);
-        if (!ok || !(seconds >= 0.0 && seconds <= 600.0)) {
-            std::fprintf(stderr, "forcelab: --after: \"%s\" is not a number of seconds from 0 to 600\n",
-                         qPrintable(parser.value(after)));
-            return 2;
-        }
-        const QString file = parser.value(screenshot);
-        int wait = static_cast<int>(seconds * 1000.0);
-        if (parser.isSet(time)) {
-            const double t = parser.value(time).toDouble(&ok);
-            if (!ok || !(t >= 0.0 && t <= 3600.0)) {
-                std::fprintf(stderr, "forcelab: --time: \"%s\" is not a number of seconds from 0 to 3600\n",
-                             qPrintable(parser.value(time)));
-                return 2;
-            }
-            forcelab::SimulationController* controller = window.controller();
-            const double dt = controller->world().settings().time.dt;
-            while (controller->world().time() < t - 0.5 * dt && !controller->world().halted())
-                controller->stepOnce();
-            wait = 200; // let the window lay itself out and paint
-        } else {
-            window.controller()->play(); // a lesson opens paused; --after shows it running
-        }
-        QTimer::singleShot(wait, &window, [&window, file] {
-            QString why;
-            if (!forcelab::writePngAtomically(file, window.grab().toImage(), &why)) {
-                std::fprintf(stderr, "forcelab: --screenshot: %s\n", qPrintable(why));
-                QApplication::exit(2);
-                return;
-            }
-            QApplication::quit();
-        });
-    }
+    if (parser.isSet(o.screenshot) && !scheduleScreenshot(window, parser, o))
+        return 2;
     return QApplication::exec();
 }

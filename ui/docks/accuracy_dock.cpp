@@ -120,7 +120,42 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     createDriftGroup(drift);
     tabs->addTab(drift, tr("Drift"));
 
-    // --- Ghost -------------------------------------------------------------
+    tabs->addTab(createGhostTab(), tr("Ghost"));
+    tabs->addTab(createTradeOffTab(), tr("Trade-off"));
+    setWidget(tabs);
+
+    connect(m_ghostMode, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
+    connect(m_ghostIntegrator, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
+    connect(m_ghostDivider, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
+    connect(m_ghostShown, &QCheckBox::toggled, this, [this](bool on) {
+        Overlays o = m_canvas->overlays();
+        o.ghost = on;
+        m_canvas->setOverlays(o);
+    });
+    connect(m_controller, &SimulationController::ghostChanged, this, &AccuracyDock::onGhostChanged);
+    connect(m_controller, &SimulationController::stepped, this, [this] {
+        recordSeparation();
+        if (isVisible())
+            updateNumbers();
+    });
+    // The books cost force evaluations: kept only while someone looks at them.
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        m_controller->mutableWorld().setAccounting(visible);
+        updateNumbers();
+    });
+    // Opened from the menu while tabbed behind the plots: bring it to the front.
+    connect(toggleViewAction(), &QAction::triggered, this, [this](bool on) {
+        if (on)
+            raise();
+    });
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &AccuracyDock::studyFinished);
+    onGhostChanged();
+}
+
+// The ghost: a second run beside the live one, with its settings and the
+// distance between the two runs over time.
+QWidget* AccuracyDock::createGhostTab()
+{
     auto* ghost = new QWidget;
     auto* ghostLayout = new QVBoxLayout(ghost);
     auto* ghostForm = new QFormLayout;
@@ -169,9 +204,13 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     separationView->setRenderHint(QPainter::Antialiasing);
     separationView->setMinimumHeight(160);
     ghostLayout->addWidget(separationView, 1);
-    tabs->addTab(ghost, tr("Ghost"));
+    return ghost;
+}
 
-    // --- Trade-off -----------------------------------------------------------
+// The trade-off: every integrator at several steps on the current scene,
+// error against cost, measured in the background.
+QWidget* AccuracyDock::createTradeOffTab()
+{
     m_tradeOffAction = new QAction(tr("Measure the &Trade-off"), this);
     m_tradeOffAction->setObjectName(QStringLiteral("tradeOffAction"));
     m_tradeOffAction->setStatusTip(tr("Run the current scene with every integrator at several steps and plot "
@@ -215,35 +254,7 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     m_tradeOffView->setRenderHint(QPainter::Antialiasing);
     m_tradeOffView->setMinimumHeight(200);
     studyLayout->addWidget(m_tradeOffView, 1);
-    tabs->addTab(study, tr("Trade-off"));
-    setWidget(tabs);
-
-    connect(m_ghostMode, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
-    connect(m_ghostIntegrator, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
-    connect(m_ghostDivider, &QComboBox::currentIndexChanged, this, &AccuracyDock::applyGhost);
-    connect(m_ghostShown, &QCheckBox::toggled, this, [this](bool on) {
-        Overlays o = m_canvas->overlays();
-        o.ghost = on;
-        m_canvas->setOverlays(o);
-    });
-    connect(m_controller, &SimulationController::ghostChanged, this, &AccuracyDock::onGhostChanged);
-    connect(m_controller, &SimulationController::stepped, this, [this] {
-        recordSeparation();
-        if (isVisible())
-            updateNumbers();
-    });
-    // The books cost force evaluations: kept only while someone looks at them.
-    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        m_controller->mutableWorld().setAccounting(visible);
-        updateNumbers();
-    });
-    // Opened from the menu while tabbed behind the plots: bring it to the front.
-    connect(toggleViewAction(), &QAction::triggered, this, [this](bool on) {
-        if (on)
-            raise();
-    });
-    connect(&m_watcher, &QFutureWatcherBase::finished, this, &AccuracyDock::studyFinished);
-    onGhostChanged();
+    return study;
 }
 
 AccuracyDock::~AccuracyDock()

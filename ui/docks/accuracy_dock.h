@@ -79,6 +79,8 @@ public slots:
     void restartDrift();
 
 private:
+    QWidget* createGhostTab();
+    QWidget* createTradeOffTab();
     enum class Study { TradeOff, Convergence };
     void createDriftGroup(QWidget* page);
     void updateNumbers();
