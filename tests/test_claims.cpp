@@ -2,6 +2,7 @@
 // whose answer is known, and the verdicts (holds, fails, cannot be measured).
 
 #include "sim/studies/claims.h"
+#include "sim/world/scene_keys.h"
 
 #include "sim_check.h"
 
@@ -379,4 +380,18 @@ TEST_CASE("TestClaims::setChangesTheRandomBallsRanges")
     c.set = {{"spawn.fully_inside", 0.5}};
     r = checkClaim(s, c);
     VERIFY2(!r.holds && r.explanation.find("not a switch") != std::string::npos, r.explanation.c_str());
+}
+
+// A value a claim sets out of its key's range names the range as every
+// other message does (sim/world/number_text.h).
+TEST_CASE("TestClaims::aSceneKeyOutOfRangeNamesItsRange")
+{
+    Scene scene;
+    const auto problem = setSceneKey(scene, "spawn.count", -1.0);
+    REQUIRE(problem.has_value());
+    CHECK(problem->rfind("-1 is outside [0, ", 0) == 0);
+    CHECK(problem->back() == ']');
+    const auto half = setSceneKey(scene, "spawn.count", 2.5);
+    REQUIRE(half.has_value());
+    CHECK(*half == "2.5 is not a whole number");
 }

@@ -1,5 +1,7 @@
 #include "sim/world/scene_keys.h"
 
+#include "sim/world/number_text.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -83,13 +85,6 @@ std::optional<std::string> find(Scene& scene, std::string_view key, Target& t)
     return std::nullopt;
 }
 
-std::string number(double v)
-{
-    char buf[32];
-    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, ec == std::errc() ? end : buf);
-}
-
 } // namespace
 
 std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, double value)
@@ -98,11 +93,11 @@ std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, doubl
     if (auto problem = find(scene, key, t))
         return problem;
     if (!std::isfinite(value) || value < t.lo || value > t.hi)
-        return number(value) + " is outside " + number(t.lo) + " to " + number(t.hi);
+        return numberText(value) + " is outside " + rangeText(t.lo, t.hi);
     if ((t.integer || t.seed) && value != std::floor(value))
-        return number(value) + " is not a whole number";
+        return numberText(value) + " is not a whole number";
     if (t.flag && value != 0.0 && value != 1.0)
-        return number(value) + " is not a switch (true or false)";
+        return numberText(value) + " is not a switch (true or false)";
     if (t.number)
         *t.number = value;
     else if (t.integer)
@@ -117,11 +112,11 @@ std::optional<std::string> setSceneKey(Scene& scene, std::string_view key, doubl
 std::optional<std::string> checkSpawnRanges(const SpawnSettings& spawn)
 {
     if (spawn.minSpeed > spawn.maxSpeed)
-        return "the slowest speed, spawn.speed.0 = " + number(spawn.minSpeed) + " px/s, is above the fastest, " +
-               number(spawn.maxSpeed) + " px/s";
+        return "the slowest speed, spawn.speed.0 = " + numberText(spawn.minSpeed) + " px/s, is above the fastest, " +
+               numberText(spawn.maxSpeed) + " px/s";
     if (spawn.minRadius > spawn.maxRadius)
-        return "the smallest radius, spawn.radius.0 = " + number(spawn.minRadius) + " px, is above the largest, " +
-               number(spawn.maxRadius) + " px";
+        return "the smallest radius, spawn.radius.0 = " + numberText(spawn.minRadius) + " px, is above the largest, " +
+               numberText(spawn.maxRadius) + " px";
     return std::nullopt;
 }
 
