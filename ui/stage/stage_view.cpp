@@ -92,9 +92,8 @@ void StageView::setStaged(bool on)
     }
 }
 
-void StageView::setLesson(const Lesson& lesson, const Overlays& overlays)
+void StageView::setLesson(const Lesson& lesson)
 {
-    setOverlays(overlays);
     m_title = lessons::markupToPlainText(lesson.title);
     m_challenge = lessons::markupToPlainText(lesson.challenges.value(0));
     m_bar->setCaption(m_title, m_challenge);

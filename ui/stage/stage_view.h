@@ -45,8 +45,8 @@ public:
     /// canvas to the bar and back.
     void setStaged(bool on);
 
-    /// A new lesson: its overlays, caption and sliders.
-    void setLesson(const Lesson& lesson, const Overlays& overlays);
+    /// A new lesson: its caption and sliders (its overlays come first, through setOverlays).
+    void setLesson(const Lesson& lesson);
     /// The canvas's overlays (in the stage view, without the readouts the bar shows).
     void setOverlays(const Overlays& overlays);
 

@@ -379,6 +379,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_lesson = lesson;
     Overlays overlays = Overlays::fromNames(lesson.overlays);
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
+    m_stage->setOverlays(overlays);
     m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
     m_canvas->setSelectedBall(-1);
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
@@ -392,7 +393,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
         m_forceEditorDock->raise(); // the lesson is about writing a law
     else if (!m_plotsDock->isHidden())
         m_plotsDock->raise();
-    m_stage->setLesson(lesson, overlays);
+    m_stage->setLesson(lesson);
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab")
                                           : tr("%1 — ForceLab").arg(lessons::markupToPlainText(lesson.title)));
     m_lessonsDock->setCurrentLesson(lesson);
