@@ -61,6 +61,42 @@ void BallState::append(const Ball& b)
     set(n, b);
 }
 
+void BallState::insert(int i, const Ball& b)
+{
+    const int n = size();
+    resize(n + 1);
+    // Shift the tail up one column, last first, then write the new ball.
+    for (int k = n; k > i; --k) {
+        position.col(k) = position.col(k - 1);
+        velocity.col(k) = velocity.col(k - 1);
+        home.col(k) = home.col(k - 1);
+        radius[k] = radius[k - 1];
+        mass[k] = mass[k - 1];
+        inverseMass[k] = inverseMass[k - 1];
+        charge[k] = charge[k - 1];
+        color[static_cast<std::size_t>(k)] = color[static_cast<std::size_t>(k - 1)];
+        colliding[static_cast<std::size_t>(k)] = colliding[static_cast<std::size_t>(k - 1)];
+    }
+    set(i, b);
+}
+
+void BallState::remove(int i)
+{
+    const int n = size();
+    for (int k = i; k + 1 < n; ++k) {
+        position.col(k) = position.col(k + 1);
+        velocity.col(k) = velocity.col(k + 1);
+        home.col(k) = home.col(k + 1);
+        radius[k] = radius[k + 1];
+        mass[k] = mass[k + 1];
+        inverseMass[k] = inverseMass[k + 1];
+        charge[k] = charge[k + 1];
+        color[static_cast<std::size_t>(k)] = color[static_cast<std::size_t>(k + 1)];
+        colliding[static_cast<std::size_t>(k)] = colliding[static_cast<std::size_t>(k + 1)];
+    }
+    resize(n - 1);
+}
+
 void BallState::set(int i, const Ball& b)
 {
     position.col(i) = b.position;

@@ -62,6 +62,11 @@ struct BallState {
     void assign(std::span<const Ball> balls);
     /// Appends one ball (O(N): for spawning one ball at a time, not for building).
     void append(const Ball& ball);
+    /// Inserts one ball before index i (0 ≤ i ≤ size()); the balls from i on
+    /// move up by one. O(N): for editing a scene by hand.
+    void insert(int i, const Ball& ball);
+    /// Removes ball i; the balls after it move down by one. O(N).
+    void remove(int i);
     /// Writes ball i; a mass of 0 becomes sphereMass(radius).
     void set(int i, const Ball& ball);
     Ball ball(int i) const;
