@@ -46,6 +46,8 @@ inline constexpr Range kBallPosition{-1e7, 1e7, false, false, "px"};
 inline constexpr Range kBallVelocity{-1e7, 1e7, false, false, "px/s"};
 inline constexpr Range kRadius{sim::kMinRadius, sim::kMaxRadius, false, false, "px"};
 inline constexpr Range kMass{sim::kMinMass, sim::kMaxMass, false, false, "mass units"};
+/// Density of a listed ball: its mass is density × (4/3) π r³ (1: the default).
+inline constexpr Range kDensity{1e-12, 1e12, false, false, ""};
 inline constexpr Range kCharge{-sim::kMaxCharge, sim::kMaxCharge, false, false, "charge units"};
 inline constexpr Range kSpawnSpeed{0.0, 1e7, false, false, "px/s"};
 inline constexpr Range kClaimTime{0.0, 3600.0, false, false, "s"};       ///< a claim's `at`

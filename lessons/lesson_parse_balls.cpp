@@ -3,6 +3,8 @@
 
 #include "lesson_parse_sections.h"
 
+#include "sim/world/number_text.h"
+
 namespace forcelab::lessons::parsing {
 
 void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
@@ -12,7 +14,7 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
         r.fail(base, QStringLiteral("%1 balls is more than the limit of %2").arg(balls.size()).arg(kMaxBalls));
         return;
     }
-    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "q", "color"};
+    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "density", "q", "color"};
     out.clear();
     out.reserve(static_cast<std::size_t>(balls.size()));
     for (qsizetype i = 0; i < balls.size(); ++i) {
@@ -33,6 +35,20 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
         r.number(o, p, "vy", range::kBallVelocity, b.velocity.y());
         r.number(o, p, "r", range::kRadius, b.radius);
         r.number(o, p, "mass", range::kMass, b.mass);
+        // A density instead of a mass: m = density × (4/3) π r³, so a lesson
+        // can make a small heavy ball without working out its mass.
+        if (double density = 0.0; o.contains("density") && r.number(o, p, "density", range::kDensity, density)) {
+            if (o.contains("mass"))
+                r.fail(join(p, "density"), QStringLiteral("give the ball a mass or a density, not both"));
+            else if (const double m = density * sim::sphereMass(b.radius); !(m >= sim::kMinMass && m <= sim::kMaxMass))
+                r.fail(join(p, "density"),
+                       QStringLiteral("%1 makes a mass of %2, outside %3")
+                           .arg(QString::fromStdString(sim::numberText(density)),
+                                QString::fromStdString(sim::roundedText(m, 3)),
+                                QString::fromStdString(sim::rangeText(sim::kMinMass, sim::kMaxMass, "mass units"))));
+            else
+                b.mass = m;
+        }
         r.number(o, p, "q", range::kCharge, b.charge);
         if (o.contains("color"))
             r.colourValue(o.value("color"), join(p, "color"), b.color);
