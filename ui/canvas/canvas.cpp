@@ -383,6 +383,11 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
         update();
         return;
     }
+    m_lastPointer = event->position();
+    if (m_arrow.ball >= 0) {
+        arrowTo(event->position(), event->modifiers());
+        return;
+    }
     if (m_press.ball >= 0) { // pressed on a ball: taken once the pointer has moved far enough
         if ((event->buttons() & Qt::LeftButton) &&
             (event->position() - m_press.at).manhattanLength() >= QApplication::startDragDistance())
@@ -412,6 +417,11 @@ void Canvas::mousePressEvent(QMouseEvent* event)
     }
     if (event->button() == Qt::LeftButton) {
         const int ball = ballAt(event->position());
+        if (grabsArrow(event->position(), event->modifiers(), ball)) {
+            startArrowDrag((event->modifiers() & Qt::AltModifier) && ball >= 0 ? ball : m_options.selected);
+            arrowTo(event->position(), event->modifiers());
+            return;
+        }
         setSelectedBall(ball);
         if (ball >= 0) {
             // Select it and arm a grab; pointer forces stay off while the
@@ -432,6 +442,11 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         update();
         return;
     }
+    if (event->button() == Qt::LeftButton && m_arrow.ball >= 0) {
+        arrowTo(event->position(), event->modifiers());
+        finishArrowDrag();
+        return;
+    }
     if (event->button() == Qt::LeftButton && m_press.ball >= 0) { // a click: it selected, nothing else
         m_press = Press();
         sendPointer(event->position(), true, false);
@@ -450,13 +465,9 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         const std::pair<qint64, sim::Vec2>& last = samples.back();
         const double seconds = static_cast<double>(last.first - start->first) * 1e-3;
         const sim::Vec2 velocity = seconds > 0.0 ? sim::Vec2((last.second - start->second) / seconds) : sim::Vec2(0, 0);
-        const int ball = m_drag.ball;
+        const Drag drag = m_drag;
         m_drag = Drag();
-        sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
-        if (ball < balls.size())
-            balls.velocity.col(ball) = velocity;
-        m_history->forgetVelocities(); // the hand changed a velocity: no collision "before" from it
-        m_controller->notifyBallsChanged();
+        finishDrag(drag, velocity);
     }
     sendPointer(event->position(), true, (event->buttons() & Qt::LeftButton) != 0);
 }
@@ -477,6 +488,7 @@ void Canvas::startDrag(const QPointF& widget, qint64 timestampMs)
     if (press.ball >= m_controller->world().balls().size())
         return;
     m_drag.ball = press.ball;
+    m_drag.before = m_controller->world().balls().ball(press.ball);
     m_drag.offset = sim::Vec2(m_controller->world().balls().position.col(press.ball)) - widgetToWorld(press.at);
     m_drag.samples.clear();
     dragTo(press.at, press.ms);
@@ -523,6 +535,12 @@ void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
 
 void Canvas::onSceneChanged()
 {
+    if (m_arrow.ball >= 0) { // a new scene ends an arrow drag with no edit
+        m_options.autoArrows = m_arrow.autoArrows;
+        m_options.velocityScale = m_arrow.velocityScale;
+        m_options.arrowFactor = m_arrow.arrowFactor;
+        m_arrow = ArrowDrag();
+    }
     m_drag = Drag();
     m_press = Press();
     m_previousTime = -1.0; // the recorder starts over too

@@ -13,17 +13,21 @@
 #include "ui/drawing/view_transform.h"
 #include "ui/drawing/world_painter.h"
 
+#include "sim/world/ball_state.h"
 #include "sim/world/types.h"
 
 #include <QImage>
 #include <QPainter>
 #include <QWidget>
 
+class QMenu;
+
 #include <deque>
 #include <vector>
 
 namespace forcelab {
 
+class SettingsEditor;
 class SimulationController;
 
 class Canvas : public QWidget {
@@ -125,7 +129,49 @@ public:
     /// Whether the "press Space to run" banner is shown (paused at t = 0).
     bool showsStartHint() const;
 
+    /// The edit path for balls changed by hand (a drag, the velocity arrow,
+    /// the right-click menu, the ball actions): each edit is one undo step.
+    /// Without one a drag still moves the ball, with no undo step. Not owned.
+    void setEditor(SettingsEditor* editor);
+    SettingsEditor* editor() const { return m_editor; }
+
+    /// Where the tip of ball i's velocity arrow is drawn (widget px), at the
+    /// scale the arrows are drawn with now.
+    QPointF velocityTip(int ball) const;
+    /// The ball whose velocity arrow is being dragged, or −1.
+    int arrowBall() const { return m_arrow.ball; }
+    /// px: a press this close to the tip of the selected ball's velocity
+    /// arrow (drawn when the velocity overlay is on), and not on a ball,
+    /// takes the arrow; Alt + press on any ball takes its arrow too.
+    static constexpr double kTipGrabPixels = 14.0;
+    /// px/s: with Ctrl held, a dragged velocity snaps to multiples of this per component.
+    static constexpr double kVelocitySnap = 10.0;
+
+    /// The right-click menu for a widget point: on a ball, edit, stop,
+    /// duplicate, copy and delete it; on empty space, add or paste a ball there.
+    void fillContextMenu(QMenu& menu, const QPointF& at);
+
+    /// The ball a new one copies its size from: the selected one, or a 15 px ball.
+    sim::Ball newBallTemplate() const;
+
+public slots:
+    /// Adds a ball (the size of the selected one, at rest) at a widget point;
+    /// moved to touching if it would overlap. Selects it.
+    void addBallAt(const QPointF& widget);
+    /// Adds a ball at the middle of the box (the Add Ball action).
+    void addBall();
+    void deleteSelectedBall();
+    void duplicateSelectedBall();
+    /// Copies the selected ball to the clipboard (as a lesson file's ball).
+    void copySelectedBall();
+    /// Adds the ball on the clipboard at a widget point (its own place when
+    /// `widget` is null).
+    void pasteBallAt(const QPointF& widget);
+    void pasteBall();
+
 signals:
+    /// "Edit" of the right-click menu: show ball `index` in the ball table.
+    void editBallRequested(int index);
     void selectedBallChanged(int index);
     /// The overlays changed (by a lesson, an action or a panel).
     void overlaysChanged();
@@ -136,6 +182,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
 
 private:
     void paintStartHint(QPainter& p) const;
@@ -157,6 +204,17 @@ private:
         sim::Vec2 offset{0, 0}; // ball centre minus pointer, world px
         sim::Vec2 target{0, 0}; // where the held ball is kept, world px
         std::deque<std::pair<qint64, sim::Vec2>> samples; // (event ms, pointer world px)
+        sim::Ball before; // the ball when it was taken (what Undo puts back)
+    };
+    // A drag of a velocity arrow's tip: the ball's velocity follows the tip,
+    // at the arrow scale frozen at the press.
+    struct ArrowDrag {
+        int ball = -1;
+        sim::Ball before;       // what Undo puts back
+        double scale = 0.0;     // s: arrow length per speed, frozen for the drag
+        bool autoArrows = false; // the canvas's own settings, put back at the end
+        double velocityScale = 0.25;
+        double arrowFactor = 1.0;
     };
 
     void sendPointer(const QPointF& widget, bool inside, bool pressed);
@@ -165,6 +223,14 @@ private:
     void holdDraggedBall();
     void dragTo(const QPointF& widget, qint64 timestampMs);
     void startDrag(const QPointF& widget, qint64 timestampMs);
+    /// The drop of a dragged ball with `velocity`: one undo step (from where
+    /// it was taken) through the editor.
+    void finishDrag(const Drag& drag, const sim::Vec2& velocity);
+    bool grabsArrow(const QPointF& widget, Qt::KeyboardModifiers modifiers, int ballUnder) const;
+    void startArrowDrag(int ball);
+    void arrowTo(const QPointF& widget, Qt::KeyboardModifiers modifiers);
+    void finishArrowDrag();
+    void showNote(const QString& message, bool refused);
 
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
@@ -178,6 +244,9 @@ private:
     HistoryRecorder* m_history = nullptr; // the canvas's own (a child) or its owner's
     Drag m_drag;
     Press m_press;
+    ArrowDrag m_arrow;
+    SettingsEditor* m_editor = nullptr; // not owned
+    QPointF m_lastPointer; // widget px, the last pointer position over the canvas (for notes)
     qint64 m_frames = 0;
     double m_lastPaintMs = 0.0;
 };

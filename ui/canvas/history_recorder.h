@@ -33,6 +33,10 @@ public:
     /// Trails behind every ball (up to TrailRecorder::kMaxBalls) or the selected ball only.
     void setTrailScope(TrailRecorder::Scope scope);
 
+    /// Starts every record over (balls were added or removed by hand, so the
+    /// balls' indices no longer match the paths recorded).
+    void startOver() { clear(); }
+
     /// The hand changed a velocity: the next collision has no "before" from it.
     void forgetVelocities() { m_previousVelocity.resize(0, 0); }
 

@@ -86,4 +86,58 @@ QString rounded(double value, double scale, int digits)
     return QString::number(r, 'f', std::max(0, -last));
 }
 
+namespace {
+
+QString superscript(int n)
+{
+    static const QString digits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+    QString out = n < 0 ? QStringLiteral("⁻") : QString();
+    for (const QChar c : QString::number(std::abs(n)))
+        out += digits[c.digitValue()];
+    return out;
+}
+
+// Fixed-point digits without trailing zeros ("1.50" → "1.5", "2." → "2").
+QString trimmedFixed(double v, int decimals)
+{
+    QString text = QString::number(v, 'f', std::max(0, decimals));
+    if (text.contains(QLatin1Char('.'))) {
+        while (text.endsWith(QLatin1Char('0')))
+            text.chop(1);
+        if (text.endsWith(QLatin1Char('.')))
+            text.chop(1);
+    }
+    return text;
+}
+
+} // namespace
+
+QString humanNumber(double value, int digits)
+{
+    if (std::isnan(value))
+        return QStringLiteral("—");
+    if (std::isinf(value))
+        return value > 0 ? QStringLiteral("∞") : QStringLiteral("−∞");
+    if (value == 0.0)
+        return QStringLiteral("0");
+    digits = std::max(1, digits);
+    int exponent = static_cast<int>(std::floor(std::log10(std::abs(value))));
+    QString text;
+    if (exponent >= 6 || exponent < -3) {
+        double mantissa = value / std::pow(10.0, exponent);
+        // Rounding may carry into another digit (9.9996 → 10.00).
+        if (std::abs(std::round(mantissa * std::pow(10.0, digits - 1))) >= std::pow(10.0, digits)) {
+            ++exponent;
+            mantissa = value / std::pow(10.0, exponent);
+        }
+        text = trimmedFixed(mantissa, digits - 1) + QStringLiteral(" × 10") + superscript(exponent);
+    } else {
+        text = trimmedFixed(value, digits - 1 - exponent);
+    }
+    text.replace(QLatin1Char('-'), QChar(0x2212));
+    if (text == QStringLiteral("−0"))
+        text = QStringLiteral("0");
+    return text;
+}
+
 } // namespace forcelab

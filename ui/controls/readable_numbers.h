@@ -40,4 +40,9 @@ QString countText(long long n, const QString& one, const QString& many);
 /// "-12" and rounded(-12.34567, 100) is "-12.3".
 QString rounded(double value, double scale, int digits = 4);
 
+/// `value` with `digits` significant digits as a student writes it: "12.35",
+/// "0.0042", "−3" (a true minus sign), and from 10⁶ up or below 10⁻³ with a
+/// power of ten: "4.2 × 10⁹", "1.5 × 10⁻⁵". "—" for not-a-number, "∞" for infinity.
+QString humanNumber(double value, int digits = 4);
+
 } // namespace forcelab

@@ -1,8 +1,13 @@
 #include "ui/controls/settings_editor.h"
 
 #include "ui/canvas/simulation_controller.h"
+#include "ui/controls/ball_commands.h"
 #include "ui/controls/parameter_commands.h"
 
+#include "sim/world/ball_placement.h"
+#include "sim/world/number_text.h"
+
+#include <QLocale>
 #include <QUndoStack>
 
 namespace forcelab {
@@ -45,6 +50,99 @@ bool SettingsEditor::editTimeScale(double scale, int session)
         return false;
     m_undoStack->push(new TimeScaleCommand(m_controller, before, scale, session));
     return m_controller->timeScale() != before;
+}
+
+std::optional<sim::Ball> SettingsEditor::checkedBall(const sim::Ball& ball, int ignore, bool place)
+{
+    const sim::Ball one[] = {ball};
+    if (auto error = sim::validateBalls(one)) {
+        // "balls.0.r: …" names the field; the ball is the one being edited.
+        QString key = QString::fromStdString(error->keyPath).section(QLatin1Char('.'), 2);
+        emit ballEditNote(tr("%1: %2").arg(key, QString::fromStdString(error->message)), true);
+        return std::nullopt;
+    }
+    if (!(ball.mass >= sim::kMinMass && ball.mass <= sim::kMaxMass)) { // a typed mass is never "0: by its size"
+        emit ballEditNote(tr("mass: %1 is outside %2")
+                              .arg(QString::fromStdString(sim::numberText(ball.mass)),
+                                   QString::fromStdString(sim::rangeText(sim::kMinMass, sim::kMaxMass))),
+                          true);
+        return std::nullopt;
+    }
+    sim::Ball checked = ball;
+    if (!place)
+        return checked;
+    const sim::World& world = m_controller->world();
+    const sim::Placement placement = sim::placeBall(world.balls(), world.settings(), ball.position, ball.radius, ignore);
+    if (!placement.ok) {
+        emit ballEditNote(tr("Not placed: %1").arg(QString::fromStdString(placement.why)), true);
+        return std::nullopt;
+    }
+    if (placement.moved)
+        emit ballEditNote(tr("Moved to (%1, %2) px, touching, so it does not overlap")
+                              .arg(QString::fromStdString(sim::roundedText(placement.position.x(), 6)),
+                                   QString::fromStdString(sim::roundedText(placement.position.y(), 6))),
+                          false);
+    checked.position = placement.position;
+    return checked;
+}
+
+bool SettingsEditor::editBall(const QString& text, int index, const sim::Ball& after, unsigned fields, EditMerge merge)
+{
+    const sim::BallState& balls = m_controller->world().balls();
+    if (index < 0 || index >= balls.size())
+        return false;
+    const sim::Ball before = balls.ball(index);
+    sim::Ball wanted = before;
+    copyBallFields(wanted, after, fields);
+    const bool place = (fields & (kBallPosition | kBallRadius)) != 0;
+    const std::optional<sim::Ball> checked = checkedBall(wanted, index, place);
+    if (!checked)
+        return false;
+    if (checked->position != wanted.position)
+        fields |= kBallPosition;
+    m_undoStack->push(
+        new BallCommand(m_controller, BallCommand::Kind::Change, text, index, before, *checked, fields, merge.id, merge.session));
+    return true;
+}
+
+int SettingsEditor::addBall(const QString& text, const sim::Ball& ball)
+{
+    const int count = m_controller->world().balls().size();
+    if (count >= sim::kMaxBalls) {
+        emit ballEditNote(tr("Not added: the world holds at most %1 balls").arg(QLocale().toString(sim::kMaxBalls)), true);
+        return -1;
+    }
+    sim::Ball wanted = ball;
+    if (wanted.mass <= 0.0)
+        wanted.mass = sim::sphereMass(wanted.radius);
+    const std::optional<sim::Ball> checked = checkedBall(wanted, -1, true);
+    if (!checked)
+        return -1;
+    m_undoStack->push(new BallCommand(m_controller, BallCommand::Kind::Add, text, count, *checked, *checked, kBallAllFields));
+    emit ballCountChanged();
+    return count;
+}
+
+bool SettingsEditor::removeBall(int index)
+{
+    const sim::BallState& balls = m_controller->world().balls();
+    if (index < 0 || index >= balls.size())
+        return false;
+    const sim::Ball ball = balls.ball(index);
+    m_undoStack->push(new BallCommand(m_controller, BallCommand::Kind::Remove, tr("Delete ball %1").arg(index), index,
+                                      ball, ball, kBallAllFields));
+    emit ballCountChanged();
+    return true;
+}
+
+int SettingsEditor::duplicateBall(int index)
+{
+    const sim::BallState& balls = m_controller->world().balls();
+    if (index < 0 || index >= balls.size())
+        return -1;
+    sim::Ball copy = balls.ball(index);
+    copy.position.x() += 2.0 * copy.radius * (1.0 + sim::kTouchingGap); // beside it, touching
+    return addBall(tr("Duplicate ball %1").arg(index), copy);
 }
 
 } // namespace forcelab

@@ -6,12 +6,14 @@
 // applies it). An edit the controller refuses leaves no step on the stack and
 // returns false, so the control that made it can go back to the world's value.
 
+#include "sim/world/ball_state.h"
 #include "sim/world/scene.h"
 #include "sim/world/world_settings.h"
 
 #include <QObject>
 
 #include <functional>
+#include <optional>
 
 class QUndoStack;
 
@@ -44,7 +46,32 @@ public:
     /// when the speed did not change (already at that speed, or out of range).
     bool editTimeScale(double scale, int session = -1);
 
+    /// Sets the `fields` (ui/controls/ball_commands.h) of ball `index` to
+    /// `after`'s as one undo step. Each number is checked against its range;
+    /// a new position or radius that would put the ball in a wall or in
+    /// another ball moves it to touching (said through ballEditNote). False,
+    /// with the reason said through ballEditNote, when refused.
+    bool editBall(const QString& text, int index, const sim::Ball& after, unsigned fields, EditMerge merge = {});
+    /// Adds `ball` as the last ball (moved to touching like editBall); its
+    /// index, or −1 when refused (the ball limit, a value out of range, no room).
+    int addBall(const QString& text, const sim::Ball& ball);
+    /// Removes ball `index` as one undo step. False when there is no such ball.
+    bool removeBall(int index);
+    /// Adds a copy of ball `index` beside it (to the right, touching, or
+    /// wherever the nearest free place is): the copy's index, or −1.
+    int duplicateBall(int index);
+
+signals:
+    /// What a ball edit did that its maker did not ask for, or why it was
+    /// refused: one sentence for the pointer or the status bar.
+    void ballEditNote(const QString& message, bool refused);
+    /// Balls were added or removed (indices after them moved).
+    void ballCountChanged();
+
 private:
+    /// The ball checked and placed: nullopt (and the note said) when refused.
+    std::optional<sim::Ball> checkedBall(const sim::Ball& ball, int ignore, bool place);
+
     SimulationController* m_controller; // not owned
     QUndoStack* m_undoStack;
 };

@@ -2,6 +2,8 @@
 
 #include "lessons/lesson_markup.h"
 #include "ui/canvas/canvas.h"
+#include "ui/controls/ball_table.h"
+#include "ui/controls/settings_editor.h"
 #include "ui/canvas/history_recorder.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/stage/stage_bar.h"
@@ -11,6 +13,7 @@
 #include <QBoxLayout>
 #include <QLabel>
 #include <QStyle>
+#include <QTableView>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -29,6 +32,9 @@ StageView::StageView(SimulationController* controller, SettingsEditor* editor, Q
     // shows it; made after the canvas so it records after the hand holds.
     m_history = new HistoryRecorder(m_controller, this);
     m_canvas->setHistory(m_history);
+    m_canvas->setEditor(m_editor);
+    // Balls added or removed shift the indices the paths are kept by.
+    connect(m_editor, &SettingsEditor::ballCountChanged, m_history, &HistoryRecorder::startOver);
     // The banner says, above the canvas, why the simulation stopped itself.
     m_haltBanner = new QLabel(this);
     m_haltBanner->setObjectName(QStringLiteral("haltBanner"));
@@ -43,6 +49,12 @@ StageView::StageView(SimulationController* controller, SettingsEditor* editor, Q
     column->setSpacing(0);
     column->addWidget(m_haltBanner);
     column->addWidget(m_canvas, 1);
+    // The ball table under the box in the stage view (the Balls button).
+    m_ballTable = new BallTable(m_controller, m_editor, {}, this);
+    m_ballTable->hide();
+    column->addWidget(m_ballTable);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_ballTable, &BallTable::setSelectedBall);
+    connect(m_ballTable, &BallTable::ballSelected, m_canvas, &Canvas::setSelectedBall);
     m_layout->addLayout(column, 1);
     connect(m_controller, &SimulationController::haltedChanged, this, &StageView::showHalted);
 }
@@ -60,13 +72,31 @@ void StageView::createBar(const QList<QAction*>& actions)
     m_slidersAction->setVisible(false);
     connect(m_slidersAction, &QAction::toggled, this, &StageView::layoutStage);
 
-    m_bar = new StageBar(QList<QAction*>(actions) << m_slidersAction, this);
+    m_ballsAction = new QAction(style()->standardIcon(QStyle::SP_FileDialogListView), tr("Balls"), this);
+    m_ballsAction->setObjectName(QStringLiteral("stageBallsAction"));
+    m_ballsAction->setCheckable(true);
+    m_ballsAction->setShortcut(Qt::Key_T);
+    m_ballsAction->setStatusTip(tr("Show every ball's numbers under the box, to type new ones (T)"));
+    connect(m_ballsAction, &QAction::toggled, this, [this](bool on) {
+        m_ballTable->setVisible(on && isStaged());
+        layoutStage();
+    });
+
+    m_bar = new StageBar(QList<QAction*>(actions) << m_slidersAction << m_ballsAction, this);
     m_layout->addWidget(m_bar);
     m_bar->hide();
     m_sliders = new StageSliders(m_controller, m_editor, m_bar);
     m_bar->setSliders(m_sliders);
     connect(m_controller, &SimulationController::stepped, this, &StageView::updateReadout);
     connect(m_bar, &StageBar::readoutRoomChanged, this, &StageView::updateReadout, Qt::QueuedConnection);
+}
+
+void StageView::showBallTable(int index)
+{
+    m_ballsAction->setChecked(true);
+    m_ballTable->setVisible(isStaged());
+    m_ballTable->setSelectedBall(index);
+    m_ballTable->view()->setFocus();
 }
 
 bool StageView::isStaged() const
@@ -81,9 +111,11 @@ void StageView::setStaged(bool on)
         m_canvas->setOverlays(withoutReadouts(m_canvas->overlays()));
         m_bar->setCaption(m_title, m_challenge);
         m_bar->show();
+        m_ballTable->setVisible(m_ballsAction->isChecked());
         updateReadout(); // shown now, so it fills in
     } else {
         m_bar->hide();
+        m_ballTable->hide(); // the window's Balls dock shows them
         m_canvas->setBoxMargin(10.0);
         Overlays back = m_canvas->overlays();
         back.readout = m_ownOverlays.readout;

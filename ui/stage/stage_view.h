@@ -17,6 +17,7 @@ class QLabel;
 
 namespace forcelab {
 
+class BallTable;
 class Canvas;
 class HistoryRecorder;
 class SettingsEditor;
@@ -53,6 +54,13 @@ public:
     /// Puts the bar beside the box or under it, sized to what it holds.
     void layoutStage();
 
+    /// Shows the stage's ball table under the box with ball `index` selected
+    /// (the canvas's "Edit its numbers" in the stage view).
+    void showBallTable(int index);
+    BallTable* ballTable() const { return m_ballTable; }
+    /// The bar's Balls button: shows or hides the ball table.
+    QAction* ballsAction() const { return m_ballsAction; }
+
 public slots:
     /// Why the simulation stopped itself; empty hides the banner.
     void showHalted(const QString& reason);
@@ -78,6 +86,8 @@ private:
     StageBar* m_bar = nullptr;
     StageSliders* m_sliders = nullptr;
     QAction* m_slidersAction = nullptr; // shows a row bar's sliders when they do not fit
+    QAction* m_ballsAction = nullptr;   // shows the ball table under the box
+    BallTable* m_ballTable = nullptr;
     Overlays m_ownOverlays; // the canvas's overlays before the bar took its readouts
     QString m_title;
     QString m_challenge;

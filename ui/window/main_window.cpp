@@ -6,6 +6,7 @@
 
 #include "ui/docks/accuracy_dock.h"
 #include "ui/canvas/canvas.h"
+#include "ui/controls/ball_table.h"
 #include "ui/window/overlay_actions.h"
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
@@ -29,6 +30,7 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
+#include <QTableView>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -105,6 +107,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_trajectory = new TrajectoryExport(m_controller, this);
 
     createSimulationActions();
+    createBallActions();
     createFileActions();
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
@@ -158,6 +161,14 @@ void MainWindow::createDocks()
     // The plots, the code and the accuracy tools share the right column with
     // the Inspector, as tabs under the parameters: the stage keeps the whole
     // height of the window, and opening one of them never shrinks it.
+    m_ballTable = new BallTable(m_controller, m_editor, {m_addBallAction, m_duplicateBallAction, m_deleteBallAction});
+    m_ballsDock = new QDockWidget(tr("Balls"), this);
+    m_ballsDock->setObjectName(QStringLiteral("ballsDock"));
+    m_ballsDock->setWidget(m_ballTable);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_ballTable, &BallTable::setSelectedBall);
+    connect(m_ballTable, &BallTable::ballSelected, m_canvas, &Canvas::setSelectedBall);
+    connect(m_canvas, &Canvas::editBallRequested, this, &MainWindow::editBall);
+
     m_plotsDock = new PlotsDock(m_controller, this);
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
@@ -167,7 +178,7 @@ void MainWindow::createDocks()
     connect(m_canvas, &Canvas::selectedBallChanged, m_stopwatchDock, &StopwatchDock::setBall);
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
                               static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
-                              static_cast<QDockWidget*>(m_codeDock),
+                              static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_ballsDock),
                               static_cast<QDockWidget*>(m_accuracyDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
@@ -188,8 +199,9 @@ void MainWindow::createDocks()
     m_redoAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     m_redoAction->setIcon(style()->standardIcon(QStyle::SP_ArrowRight));
     if (QMenu* edit = menuBar()->findChild<QMenu*>(QStringLiteral("editMenu"))) {
-        edit->addAction(m_undoAction);
-        edit->addAction(m_redoAction);
+        const QList<QAction*> after = edit->actions();
+        edit->insertAction(after.value(0), m_undoAction);
+        edit->insertAction(after.value(0), m_redoAction);
     }
     m_simulationToolBar->addSeparator();
     m_simulationToolBar->addAction(m_undoAction);
@@ -199,6 +211,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_parametersDock->toggleViewAction());
     m_viewMenu->addAction(m_plotsDock->toggleViewAction());
     m_viewMenu->addAction(m_inspectorDock->toggleViewAction());
+    m_viewMenu->addAction(m_ballsDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
@@ -572,6 +585,18 @@ void MainWindow::setPresentationMode(bool on)
         restoreGeometry(m_normalGeometry);
     }
     m_stage->layoutStage();
+}
+
+void MainWindow::editBall(int index)
+{
+    if (m_stage->isStaged()) {
+        m_stage->showBallTable(index);
+        return;
+    }
+    m_ballsDock->show();
+    m_ballsDock->raise();
+    m_ballTable->setSelectedBall(index);
+    m_ballTable->view()->setFocus();
 }
 
 void MainWindow::showError(const QString& message)

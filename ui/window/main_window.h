@@ -30,6 +30,7 @@ class SettingsEditor;
 class StageView;
 class OverlayActions;
 class Canvas;
+class BallTable;
 class InspectorDock;
 class LessonsDock;
 class ParameterPanel;
@@ -116,6 +117,10 @@ private slots:
 
 private:
     void createSimulationActions();
+    /// Add, delete, duplicate, copy and paste a ball (the canvas does them).
+    void createBallActions();
+    /// Shows ball `index` in the Balls table (the dock, or the stage's panel).
+    void editBall(int index);
     void createFileActions();
     void createMenus();
     void createToolBars();
@@ -134,6 +139,8 @@ private:
     ParameterPanel* m_parameters = nullptr;
     LessonsDock* m_lessonsDock = nullptr;
     InspectorDock* m_inspectorDock = nullptr;
+    QDockWidget* m_ballsDock = nullptr;
+    BallTable* m_ballTable = nullptr;
     QDockWidget* m_parametersDock = nullptr;
     PlotsDock* m_plotsDock = nullptr;
     PredictDock* m_predictDock = nullptr;
@@ -156,6 +163,12 @@ private:
     QAction* m_slowerAction = nullptr;
     QAction* m_fasterAction = nullptr;
     QAction* m_undoAction = nullptr;
+    // Ball edits on the canvas (createBallActions).
+    QAction* m_addBallAction = nullptr;
+    QAction* m_deleteBallAction = nullptr;
+    QAction* m_duplicateBallAction = nullptr;
+    QAction* m_copyBallAction = nullptr;
+    QAction* m_pasteBallAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_openAction = nullptr;
     QAction* m_saveAction = nullptr;

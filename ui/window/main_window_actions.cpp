@@ -112,6 +112,47 @@ void MainWindow::createSimulationActions()
     connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
 }
 
+void MainWindow::createBallActions()
+{
+    m_addBallAction = new QAction(tr("&Add Ball"), this);
+    m_addBallAction->setObjectName(QStringLiteral("addBallAction"));
+    m_addBallAction->setShortcuts({QKeySequence(Qt::Key_Insert), QKeySequence(Qt::Key_B)});
+    m_addBallAction->setToolTip(tr("Add a ball in the middle of the box (B). Right-click the stage to add one "
+                                   "where you click."));
+    connect(m_addBallAction, &QAction::triggered, m_canvas, &Canvas::addBall);
+
+    m_deleteBallAction = new QAction(tr("&Delete Ball"), this);
+    m_deleteBallAction->setObjectName(QStringLiteral("deleteBallAction"));
+    m_deleteBallAction->setShortcut(QKeySequence::Delete);
+    connect(m_deleteBallAction, &QAction::triggered, m_canvas, &Canvas::deleteSelectedBall);
+
+    m_duplicateBallAction = new QAction(tr("D&uplicate Ball"), this);
+    m_duplicateBallAction->setObjectName(QStringLiteral("duplicateBallAction"));
+    m_duplicateBallAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    connect(m_duplicateBallAction, &QAction::triggered, m_canvas, &Canvas::duplicateSelectedBall);
+
+    m_copyBallAction = new QAction(tr("&Copy Ball"), this);
+    m_copyBallAction->setObjectName(QStringLiteral("copyBallAction"));
+    m_copyBallAction->setShortcut(QKeySequence::Copy);
+    connect(m_copyBallAction, &QAction::triggered, m_canvas, &Canvas::copySelectedBall);
+
+    m_pasteBallAction = new QAction(tr("&Paste Ball"), this);
+    m_pasteBallAction->setObjectName(QStringLiteral("pasteBallAction"));
+    m_pasteBallAction->setShortcut(QKeySequence::Paste);
+    connect(m_pasteBallAction, &QAction::triggered, m_canvas, &Canvas::pasteBall);
+
+    // The actions on the selected ball wait for a selection.
+    auto sync = [this](int selected) {
+        for (QAction* action : {m_deleteBallAction, m_duplicateBallAction, m_copyBallAction})
+            action->setEnabled(selected >= 0);
+    };
+    connect(m_canvas, &Canvas::selectedBallChanged, this, sync);
+    sync(m_canvas->selectedBall());
+    for (QAction* action : {m_addBallAction, m_deleteBallAction, m_duplicateBallAction, m_copyBallAction,
+                            m_pasteBallAction})
+        addAction(action); // their keys work on the stage too, where the menus are hidden
+}
+
 void MainWindow::createFileActions()
 {
     m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
@@ -224,8 +265,13 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(m_quitAction);
 
-    // Undo / Redo come from the Parameters panel's stack (createDocks).
-    menuBar()->addMenu(tr("&Edit"))->setObjectName(QStringLiteral("editMenu"));
+    // Undo / Redo come from the editor's stack (createDocks), above these.
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setObjectName(QStringLiteral("editMenu"));
+    edit->addSeparator();
+    for (QAction* action : {m_addBallAction, m_duplicateBallAction, m_deleteBallAction, m_copyBallAction,
+                            m_pasteBallAction})
+        edit->addAction(action);
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
     simulation->addAction(m_playAction);
@@ -265,6 +311,7 @@ void MainWindow::createToolBars()
     m_simulationToolBar->addAction(m_slowerAction);
     m_simulationToolBar->addAction(m_fasterAction);
     m_simulationToolBar->addAction(m_presentationAction);
+    m_simulationToolBar->addAction(m_addBallAction);
     {
         // The drawing aids, one click away: a button with the View menu's "Show" menu.
         auto* show = new QToolButton(m_simulationToolBar);

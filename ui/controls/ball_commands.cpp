@@ -1,0 +1,124 @@
+#include "ui/controls/ball_commands.h"
+
+#include "ui/canvas/simulation_controller.h"
+
+namespace forcelab {
+
+void writeBallFields(sim::BallState& balls, int index, const sim::Ball& ball, unsigned fields)
+{
+    if (fields & kBallPosition)
+        balls.position.col(index) = ball.position;
+    if (fields & kBallVelocity)
+        balls.velocity.col(index) = ball.velocity;
+    if (fields & kBallRadius)
+        balls.radius[index] = ball.radius;
+    if (fields & kBallMass)
+        balls.setMass(index, ball.mass);
+    if (fields & kBallCharge)
+        balls.charge[index] = ball.charge;
+    if (fields & kBallColour)
+        balls.color[static_cast<std::size_t>(index)] = ball.color;
+}
+
+void copyBallFields(sim::Ball& to, const sim::Ball& from, unsigned fields)
+{
+    if (fields & kBallPosition)
+        to.position = from.position;
+    if (fields & kBallVelocity)
+        to.velocity = from.velocity;
+    if (fields & kBallRadius)
+        to.radius = from.radius;
+    if (fields & kBallMass)
+        to.mass = from.mass;
+    if (fields & kBallCharge)
+        to.charge = from.charge;
+    if (fields & kBallColour)
+        to.color = from.color;
+}
+
+BallCommand::BallCommand(SimulationController* controller, Kind kind, const QString& text, int index,
+                         const sim::Ball& before, const sim::Ball& after, unsigned fields, int mergeId, int session)
+    : QUndoCommand(text)
+    , m_controller(controller)
+    , m_kind(kind)
+    , m_index(index)
+    , m_before(before)
+    , m_after(after)
+    , m_fields(fields)
+    , m_mergeId(mergeId)
+    , m_session(session)
+{
+}
+
+// Every ball edit is checked by SettingsEditor before the command is made;
+// these only guard against a world that no longer has the ball (a reset or a
+// new random set of balls between the edit and its undo).
+void BallCommand::change(const sim::Ball& to)
+{
+    sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+    if (m_index < balls.size())
+        writeBallFields(balls, m_index, to, m_fields);
+    m_controller->notifyBallsChanged();
+}
+
+void BallCommand::insert()
+{
+    sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+    if (m_index <= balls.size())
+        balls.insert(m_index, m_after);
+    m_controller->notifyBallsChanged();
+}
+
+void BallCommand::remove()
+{
+    sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+    if (m_index < balls.size())
+        balls.remove(m_index);
+    m_controller->notifyBallsChanged();
+}
+
+void BallCommand::undo()
+{
+    switch (m_kind) {
+    case Kind::Change:
+        change(m_before);
+        break;
+    case Kind::Add:
+        remove();
+        break;
+    case Kind::Remove: {
+        sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
+        if (m_index <= balls.size())
+            balls.insert(m_index, m_before);
+        m_controller->notifyBallsChanged();
+        break;
+    }
+    }
+}
+
+void BallCommand::redo()
+{
+    switch (m_kind) {
+    case Kind::Change:
+        change(m_after);
+        break;
+    case Kind::Add:
+        insert();
+        break;
+    case Kind::Remove:
+        remove();
+        break;
+    }
+}
+
+bool BallCommand::mergeWith(const QUndoCommand* other)
+{
+    const auto* o = static_cast<const BallCommand*>(other);
+    if (o->m_kind != Kind::Change || m_kind != Kind::Change || o->m_mergeId != m_mergeId ||
+        o->m_session != m_session || o->m_index != m_index || o->m_fields != m_fields)
+        return false;
+    m_after = o->m_after;
+    return true;
+}
+
+} // namespace forcelab
