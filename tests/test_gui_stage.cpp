@@ -121,14 +121,14 @@ void GuiStageTest::stageFillsTheScreen()
     QVERIFY2(readout->text().contains(QStringLiteral("ball 0")), qPrintable(readout->text()));
     QVERIFY(!window.canvas()->overlays().readout);
     QCOMPARE(title->text(), window.lesson().title);
-    // Play, Step, Reset, Slower, Faster (and Sliders, when the lesson's
-    // sliders do not fit the bar).
+    // Play, Step, Reset, Slower, Faster, Balls (and Sliders, when the
+    // lesson's sliders do not fit the bar).
     auto* slidersAction = window.findChild<QAction*>(QStringLiteral("stageSlidersAction"));
     QList<QToolButton*> buttons;
     for (QToolButton* b : window.findChild<QWidget*>(QStringLiteral("stageBar"))->findChildren<QToolButton*>())
         if (b->defaultAction() != slidersAction)
             buttons << b;
-    QCOMPARE(buttons.size(), 5);
+    QCOMPARE(buttons.size(), 6);
     for (QToolButton* b : buttons)
         QVERIFY(b->isVisible() && b->height() >= 56);
     // Run from the stage bar.

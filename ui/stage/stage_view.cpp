@@ -82,7 +82,7 @@ void StageView::createBar(const QList<QAction*>& actions)
         layoutStage();
     });
 
-    m_bar = new StageBar(QList<QAction*>(actions) << m_slidersAction << m_ballsAction, this);
+    m_bar = new StageBar(QList<QAction*>(actions) << m_ballsAction << m_slidersAction, this);
     m_layout->addWidget(m_bar);
     m_bar->hide();
     m_sliders = new StageSliders(m_controller, m_editor, m_bar);
