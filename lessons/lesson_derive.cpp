@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 namespace forcelab::lessons {
 
@@ -158,11 +157,207 @@ QString deriveId(const QStringList& wishes, const QString& title, const QString&
     return id;
 }
 
+namespace {
+
+/// A derived lesson as it is made: the lesson, what was dropped, and where
+/// each kept claim and question was in the old lesson.
+struct Deriving {
+    const Lesson& from;
+    const DeriveChoices& choices;
+    DerivedLesson out;
+    std::vector<int> claimFrom;   ///< old index of each kept claim
+    std::vector<int> predictFrom; ///< old index of each kept question
+    QStringList keptLines;        ///< the text's list of kept claims' sentences
+
+    Lesson& lesson() { return out.lesson; }
+    bool keepClaims(const sim::Scene& scene, const sim::ClaimProgress& progress);
+    void keepPredictions();
+    bool dropUnfound();
+    bool dropUnbacked();
+    void dropClaim(std::size_t k, const QString& why);
+};
+
+/// Why a claim cannot run on `scene`: more steps than a claim may take.
+bool tooLong(const sim::Claim& claim, const sim::Scene& scene)
+{
+    double dt = scene.settings.time.dt, substeps = scene.settings.time.substeps;
+    for (const auto& [key, value] : claim.set) {
+        if (key == "time.dt")
+            dt = value;
+        else if (key == "time.substeps")
+            substeps = value;
+    }
+    return !(dt > 0.0) || std::ceil(claim.at / dt) * std::max(1.0, substeps) > kMaxClaimSteps;
+}
+
+/// Runs every claim of the old lesson that can stay on `scene`; false when
+/// `progress` stopped it.
+bool Deriving::keepClaims(const sim::Scene& scene, const sim::ClaimProgress& progress)
+{
+    const std::vector<QStringList> fields = claimFields(from);
+    const std::size_t n = from.claims.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const sim::Claim& claim = from.claims[k];
+        const QString says = QString::fromStdString(claim.text);
+        const QStringList& where = fields[k];
+        const bool inText = where.contains(QStringLiteral("text"));
+        const bool canStay = inText || std::any_of(where.begin(), where.end(), [&](const QString& f) {
+                                 return (choices.keepTeacherNotes && isNoteField(f)) ||
+                                        f.startsWith(QLatin1String("predict."));
+                             });
+        if (!canStay) {
+            out.droppedClaims.push_back(
+                {int(k), says,
+                 where.isEmpty()
+                     ? QStringLiteral("its sentence is not in the lesson")
+                     : QStringLiteral("its sentence is in %1, which the new lesson does not keep").arg(labels(where))});
+            continue;
+        }
+        if (tooLong(claim, scene)) {
+            out.droppedClaims.push_back(
+                {int(k), says, QStringLiteral("with this time step it would take more steps than a claim may run")});
+            continue;
+        }
+        sim::ClaimProgress each;
+        if (progress)
+            each = [&progress, k, n](double done) { return progress((double(k) + done) / double(n)); };
+        const sim::ClaimResult result = sim::checkClaim(scene, claim, each);
+        if (result.cancelled)
+            return false;
+        if (!result.holds) {
+            out.droppedClaims.push_back({int(k), says, QString::fromStdString(result.explanation), true});
+            continue;
+        }
+        claimFrom.push_back(int(k));
+        lesson().claims.push_back(claim);
+        // A line of its own, unless the sentence check finds the quote in the
+        // lines already listed: it marks only the first place a quote is, so a
+        // second line with the same words would be left with nothing to back it.
+        if (inText && !quotedIn(keptLines, claim))
+            keptLines << keptLine(claim.text);
+    }
+    return true;
+}
+
+/// The questions whose answer is still measured, renumbered.
+void Deriving::keepPredictions()
+{
+    for (std::size_t j = 0; j < from.predict.size(); ++j) {
+        const Prediction& p = from.predict[j];
+        const auto at = std::find(claimFrom.begin(), claimFrom.end(), p.claim);
+        if (at == claimFrom.end()) {
+            QString why = QStringLiteral("the claim that answers it was dropped");
+            for (const DroppedClaim& d : out.droppedClaims)
+                if (d.index == p.claim)
+                    why += QStringLiteral(" (%1)").arg(d.why);
+            out.droppedPredictions.push_back({int(j), markupToPlainText(p.ask), why});
+            continue;
+        }
+        Prediction q = p;
+        q.claim = int(at - claimFrom.begin());
+        lesson().predict.push_back(q);
+        predictFrom.push_back(int(j));
+    }
+}
+
+/// Drops kept claim `k` and the questions it answers.
+void Deriving::dropClaim(std::size_t k, const QString& why)
+{
+    Lesson& l = lesson();
+    out.droppedClaims.push_back({claimFrom[k], QString::fromStdString(l.claims[k].text), why});
+    l.claims.erase(l.claims.begin() + std::ptrdiff_t(k));
+    claimFrom.erase(claimFrom.begin() + std::ptrdiff_t(k));
+    for (std::size_t j = 0; j < l.predict.size();) {
+        if (l.predict[j].claim == int(k)) {
+            out.droppedPredictions.push_back({predictFrom[j], markupToPlainText(l.predict[j].ask),
+                                              QStringLiteral("the claim that answers it was dropped")});
+            l.predict.erase(l.predict.begin() + std::ptrdiff_t(j));
+            predictFrom.erase(predictFrom.begin() + std::ptrdiff_t(j));
+            continue;
+        }
+        if (l.predict[j].claim > int(k))
+            --l.predict[j].claim;
+        ++j;
+    }
+}
+
+/// Drops one not_measured entry or claim whose sentence is no longer in
+/// the lesson, or a setting entry whose numbers the scene no longer sets;
+/// false when there is none.
+bool Deriving::dropUnfound()
+{
+    Lesson& l = lesson();
+    const SentenceReport report = checkSentences(l);
+    std::vector<bool> claimFound(l.claims.size()), entryFound(l.notMeasured.size());
+    for (const LessonSentence& s : report.sentences) {
+        for (const int k : s.claims)
+            claimFound[std::size_t(k)] = true;
+        for (const int k : s.notMeasured)
+            entryFound[std::size_t(k)] = true;
+    }
+    if (const auto e = std::find(entryFound.begin(), entryFound.end(), false); e != entryFound.end()) {
+        l.notMeasured.erase(l.notMeasured.begin() + (e - entryFound.begin()));
+        return true;
+    }
+    static const QRegularExpression entryProblem(QStringLiteral("^not_measured\\.(\\d+):"));
+    for (const QString& problem : report.problems)
+        if (const auto m = entryProblem.match(problem); m.hasMatch()) {
+            l.notMeasured.erase(l.notMeasured.begin() + m.captured(1).toInt());
+            return true;
+        }
+    if (const auto c = std::find(claimFound.begin(), claimFound.end(), false); c != claimFound.end()) {
+        dropClaim(std::size_t(c - claimFound.begin()), QStringLiteral("its sentence was in a teacher note that was left out"));
+        return true;
+    }
+    return false;
+}
+
+/// Leaves out the question or teacher note holding the first sentence with
+/// a number nothing backs any more; false when there is none. Such a
+/// sentence in the typed text is a problem instead.
+bool Deriving::dropUnbacked()
+{
+    Lesson& l = lesson();
+    const SentenceReport report = checkSentences(l);
+    const auto unbacked = std::find_if(report.sentences.begin(), report.sentences.end(), [](const LessonSentence& s) {
+        return !s.trigger.isEmpty() && s.claims.empty() && s.notMeasured.empty();
+    });
+    if (unbacked == report.sentences.end())
+        return false;
+    const QString why =
+        QStringLiteral("%1 says “%2”, which nothing measures any more").arg(quotedText(unbacked->text), unbacked->trigger);
+    if (unbacked->field.startsWith(QLatin1String("predict."))) {
+        const int j = indexAfter(unbacked->field, QStringLiteral("predict."));
+        out.droppedPredictions.push_back({predictFrom[std::size_t(j)], markupToPlainText(l.predict[std::size_t(j)].ask), why});
+        l.predict.erase(l.predict.begin() + j);
+        predictFrom.erase(predictFrom.begin() + j);
+        return true;
+    }
+    if (unbacked->field == QLatin1String("teacher.goal")) {
+        out.droppedNotes << QStringLiteral("the goal: %1").arg(why);
+        l.teacher.goal.clear();
+        return true;
+    }
+    if (unbacked->field.startsWith(QLatin1String("teacher.misconceptions."))) {
+        const int i = indexAfter(unbacked->field, QStringLiteral("teacher.misconceptions."));
+        out.droppedNotes << QStringLiteral("misconception %1: %2").arg(i + 1).arg(why);
+        l.teacher.misconceptions.removeAt(i);
+        return true;
+    }
+    // In the typed text: unmeasuredSentences() has said so already, unless
+    // the sentence check reads it differently.
+    if (out.problems.isEmpty())
+        out.problems << why;
+    return false;
+}
+
+} // namespace
+
 DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const DeriveChoices& choices,
                            const sim::ClaimProgress& progress)
 {
-    DerivedLesson out;
-    Lesson& l = out.lesson;
+    Deriving d{from, choices, {}, {}, {}, {}};
+    Lesson& l = d.lesson();
     l.format = from.format;
     l.title = choices.title.simplified().toHtmlEscaped();
     l.id = deriveId(choices.ids, choices.title, from.id);
@@ -172,93 +367,24 @@ DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const De
     l.compare = from.compare;
     l.scene = scene;
     if (l.title.isEmpty())
-        out.problems << QStringLiteral("The lesson needs a title.");
+        d.out.problems << QStringLiteral("The lesson needs a title.");
     for (const QString& s : unmeasuredSentences(from, choices.text))
-        out.problems << QStringLiteral("%1 has a number or a comparison (“%2”) that no claim measures on this scene. "
-                                       "Write it without, or add a claim to the file later.")
-                            .arg(quotedText(s), numberOrComparison(s));
+        d.out.problems << QStringLiteral("%1 has a number or a comparison (“%2”) that no claim measures on this scene. "
+                                         "Write it without, or add a claim to the file later.")
+                              .arg(quotedText(s), numberOrComparison(s));
 
-    // The claims: kept where they still hold and their sentence can stay.
-    const std::vector<QStringList> fields = claimFields(from);
-    std::vector<int> keptFrom;   // old index of each kept claim
-    QStringList keptLines;       // the text's list of kept sentences, each once
-    const sim::TimeSettings& time = scene.settings.time;
-    const std::size_t n = from.claims.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        const sim::Claim& claim = from.claims[k];
-        const QString says = QString::fromStdString(claim.text);
-        const QStringList& where = fields[k];
-        const bool inText = where.contains(QStringLiteral("text"));
-        const bool canStay = inText || std::any_of(where.begin(), where.end(), [&](const QString& f) {
-                                 return (choices.keepTeacherNotes && isNoteField(f)) || f.startsWith(QLatin1String("predict."));
-                             });
-        if (!canStay) {
-            out.droppedClaims.push_back(
-                {int(k), says,
-                 where.isEmpty() ? QStringLiteral("its sentence is not in the lesson")
-                                 : QStringLiteral("its sentence is in %1, which the new lesson does not keep").arg(labels(where))});
-            continue;
-        }
-        double dt = time.dt, substeps = time.substeps;
-        for (const auto& [key, value] : claim.set) {
-            if (key == "time.dt")
-                dt = value;
-            else if (key == "time.substeps")
-                substeps = value;
-        }
-        if (!(dt > 0.0) || std::ceil(claim.at / dt) * std::max(1.0, substeps) > kMaxClaimSteps) {
-            out.droppedClaims.push_back({int(k), says, QStringLiteral("with this time step it would take more steps "
-                                                                      "than a claim may run")});
-            continue;
-        }
-        sim::ClaimProgress each;
-        if (progress)
-            each = [&progress, k, n](double done) { return progress((double(k) + done) / double(n)); };
-        const sim::ClaimResult result = sim::checkClaim(scene, claim, each);
-        if (result.cancelled) {
-            out.cancelled = true;
-            out.problems << QStringLiteral("Stopped before every claim was measured.");
-            return out;
-        }
-        if (!result.holds) {
-            out.droppedClaims.push_back({int(k), says, QString::fromStdString(result.explanation), true});
-            continue;
-        }
-        keptFrom.push_back(int(k));
-        l.claims.push_back(claim);
-        // A line of its own, unless the sentence check finds the quote in the
-        // lines already listed: it marks only the first place a quote is, so a
-        // second line with the same words would be left with nothing to back it.
-        if (inText && !quotedIn(keptLines, claim))
-            keptLines << keptLine(claim.text);
+    if (!d.keepClaims(scene, progress)) {
+        d.out.cancelled = true;
+        d.out.problems << QStringLiteral("Stopped before every claim was measured.");
+        return d.out;
     }
-
-    l.text = plainToMarkup(choices.text) + keptList(keptLines);
+    l.text = plainToMarkup(choices.text) + keptList(d.keptLines);
     if (choices.keepTeacherNotes) {
         l.teacher.goal = from.teacher.goal;
         l.teacher.minutes = from.teacher.minutes;
         l.teacher.misconceptions = from.teacher.misconceptions;
     }
-
-    // The questions whose answer is still measured, renumbered.
-    std::vector<int> predictFrom;
-    for (std::size_t j = 0; j < from.predict.size(); ++j) {
-        const Prediction& p = from.predict[j];
-        const auto at = std::find(keptFrom.begin(), keptFrom.end(), p.claim);
-        if (at == keptFrom.end()) {
-            QString why = QStringLiteral("the claim that answers it was dropped");
-            for (const DroppedClaim& d : out.droppedClaims)
-                if (d.index == p.claim)
-                    why += QStringLiteral(" (%1)").arg(d.why);
-            out.droppedPredictions.push_back({int(j), markupToPlainText(p.ask), why});
-            continue;
-        }
-        Prediction q = p;
-        q.claim = int(at - keptFrom.begin());
-        l.predict.push_back(q);
-        predictFrom.push_back(int(j));
-    }
-
+    d.keepPredictions();
     l.notMeasured = from.notMeasured;
     // The credit sentence names another lesson, so its numbers are not about this scene.
     const QString credit = creditSentence(from);
@@ -269,88 +395,21 @@ DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const De
 
     // Until the sentence check has nothing to say: drop what is no longer
     // in the lesson, then whatever says a number nothing backs any more.
-    static const QRegularExpression notMeasuredProblem(QStringLiteral("^not_measured\\.(\\d+):"));
-    for (int round = 0; round < 10000; ++round) {
-        const SentenceReport report = checkSentences(l);
-        std::vector<bool> claimFound(l.claims.size()), entryFound(l.notMeasured.size());
-        for (const LessonSentence& s : report.sentences) {
-            for (const int k : s.claims)
-                claimFound[std::size_t(k)] = true;
-            for (const int k : s.notMeasured)
-                entryFound[std::size_t(k)] = true;
-        }
-        if (const auto e = std::find(entryFound.begin(), entryFound.end(), false); e != entryFound.end()) {
-            l.notMeasured.erase(l.notMeasured.begin() + (e - entryFound.begin()));
-            continue;
-        }
-        bool changed = false;
-        for (const QString& problem : report.problems)
-            if (const auto m = notMeasuredProblem.match(problem); m.hasMatch()) {
-                l.notMeasured.erase(l.notMeasured.begin() + m.captured(1).toInt());
-                changed = true;
-                break;
-            }
-        if (changed)
-            continue;
-        if (const auto c = std::find(claimFound.begin(), claimFound.end(), false); c != claimFound.end()) {
-            const std::size_t k = std::size_t(c - claimFound.begin());
-            out.droppedClaims.push_back({keptFrom[k], QString::fromStdString(l.claims[k].text),
-                                         QStringLiteral("its sentence was in a teacher note that was left out")});
-            l.claims.erase(l.claims.begin() + std::ptrdiff_t(k));
-            keptFrom.erase(keptFrom.begin() + std::ptrdiff_t(k));
-            for (std::size_t j = 0; j < l.predict.size();) {
-                if (l.predict[j].claim == int(k)) {
-                    out.droppedPredictions.push_back({predictFrom[j], markupToPlainText(l.predict[j].ask),
-                                                      QStringLiteral("the claim that answers it was dropped")});
-                    l.predict.erase(l.predict.begin() + std::ptrdiff_t(j));
-                    predictFrom.erase(predictFrom.begin() + std::ptrdiff_t(j));
-                    continue;
-                }
-                if (l.predict[j].claim > int(k))
-                    --l.predict[j].claim;
-                ++j;
-            }
-            continue;
-        }
-        // A sentence with a number nothing backs: leave out what holds it.
-        const auto unbacked = std::find_if(report.sentences.begin(), report.sentences.end(), [](const LessonSentence& s) {
-            return !s.trigger.isEmpty() && s.claims.empty() && s.notMeasured.empty();
-        });
-        if (unbacked == report.sentences.end())
-            break;
-        const QString why = QStringLiteral("%1 says “%2”, which nothing measures any more")
-                                .arg(quotedText(unbacked->text), unbacked->trigger);
-        if (unbacked->field.startsWith(QLatin1String("predict."))) {
-            const int j = indexAfter(unbacked->field, QStringLiteral("predict."));
-            out.droppedPredictions.push_back({predictFrom[std::size_t(j)], markupToPlainText(l.predict[std::size_t(j)].ask), why});
-            l.predict.erase(l.predict.begin() + j);
-            predictFrom.erase(predictFrom.begin() + j);
-        } else if (unbacked->field == QLatin1String("teacher.goal")) {
-            out.droppedNotes << QStringLiteral("the goal: %1").arg(why);
-            l.teacher.goal.clear();
-        } else if (unbacked->field.startsWith(QLatin1String("teacher.misconceptions."))) {
-            const int i = indexAfter(unbacked->field, QStringLiteral("teacher.misconceptions."));
-            out.droppedNotes << QStringLiteral("misconception %1: %2").arg(i + 1).arg(why);
-            l.teacher.misconceptions.removeAt(i);
-        } else {
-            // In the typed text: already a problem (unmeasuredSentences).
-            if (out.problems.isEmpty())
-                out.problems << why;
-            break;
-        }
+    // Each round drops one thing, so this ends.
+    while (d.dropUnfound() || d.dropUnbacked()) {
     }
 
     if (const auto p = checkMarkup(l.title, kMaxProseChars))
-        out.problems << QStringLiteral("The title: %1").arg(p->message);
+        d.out.problems << QStringLiteral("The title: %1").arg(p->message);
     if (const auto p = checkMarkup(l.text, kMaxTextChars))
-        out.problems << QStringLiteral("The text: %1").arg(p->message);
-    if (out.problems.isEmpty()) {
+        d.out.problems << QStringLiteral("The text: %1").arg(p->message);
+    if (d.out.problems.isEmpty()) {
         // What `forcelab-cli validate` reads: the file must load as it is saved.
         const LoadResult back = LessonLoader::loadBytes(saveLesson(l), l.id);
         if (!back.ok())
-            out.problems << back.errors();
+            d.out.problems << back.errors();
     }
-    return out;
+    return d.out;
 }
 
 QString deriveSummary(const DerivedLesson& derived)
