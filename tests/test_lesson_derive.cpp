@@ -34,6 +34,16 @@ QString sceneDifference(const sim::Scene& a, const sim::Scene& b)
     for (const sim::Parameter& p : sim::parameters())
         if (p.get && !sameBits(p.get(a.settings), p.get(b.settings)))
             return QString::fromUtf8(p.key.data(), qsizetype(p.key.size()));
+    if (a.settings.time.seed != b.settings.time.seed)
+        return QStringLiteral("time.seed");
+    const sim::CustomForceSettings &c = a.settings.custom, &d = b.settings.custom;
+    if (c.enabled != d.enabled || c.acceleration != d.acceleration || c.fx != d.fx || c.fy != d.fy ||
+        c.potential != d.potential || c.constants.size() != d.constants.size())
+        return QStringLiteral("models.custom");
+    for (std::size_t i = 0; i < c.constants.size(); ++i)
+        if (c.constants[i].name != d.constants[i].name || !sameBits(c.constants[i].value, d.constants[i].value) ||
+            !sameBits(c.constants[i].min, d.constants[i].min) || !sameBits(c.constants[i].max, d.constants[i].max))
+            return QStringLiteral("models.custom.constants.%1").arg(i);
     if (a.balls.size() != b.balls.size())
         return QStringLiteral("the number of balls");
     for (std::size_t i = 0; i < a.balls.size(); ++i) {
