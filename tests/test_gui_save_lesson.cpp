@@ -34,6 +34,7 @@ class GuiSaveLessonTest : public QObject {
     Q_OBJECT
 private slots:
     void savedSceneIsANewLessonWhoseClaimsHold();
+    void escapeSavesNothing();
 };
 
 void GuiSaveLessonTest::savedSceneIsANewLessonWhoseClaimsHold()
@@ -123,6 +124,37 @@ void GuiSaveLessonTest::savedSceneIsANewLessonWhoseClaimsHold()
     QVERIFY2(shown.contains(QStringLiteral("Half as bouncy")) && !shown.contains(QStringLiteral("Stage 29")) &&
                  shown.contains(QStringLiteral("Compare <this> & the lesson it is based on.")),
              qPrintable(shown));
+}
+
+void GuiSaveLessonTest::escapeSavesNothing()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("never.json"));
+    MainWindow window;
+    QVERIFY(window.openLesson(QStringLiteral("the-line-of-impact")));
+    window.controller()->pause();
+    bool seen = false;
+    QTimer poll;
+    poll.setInterval(5);
+    connect(&poll, &QTimer::timeout, this, [&] {
+        auto* dialog = qobject_cast<SaveLessonDialog*>(QApplication::activeModalWidget());
+        if (!dialog)
+            return;
+        poll.stop();
+        auto* file = dialog->findChild<QLineEdit*>(QStringLiteral("lessonFileEdit"));
+        if (file)
+            file->setText(path);
+        QTest::keyClick(dialog, Qt::Key_Escape);
+        seen = !dialog->isVisible(); // Escape closed it
+        if (dialog->isVisible())
+            dialog->reject();
+    });
+    poll.start();
+    window.findChild<QAction*>(QStringLiteral("saveAction"))->trigger();
+    QVERIFY(seen);
+    QVERIFY(!QFileInfo::exists(path));
+    QCOMPARE(window.lesson().title, QStringLiteral("The line of impact"));
 }
 
 QTEST_MAIN(GuiSaveLessonTest)
