@@ -17,6 +17,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cstring>
 
 using namespace forcelab;
@@ -95,6 +96,7 @@ private slots:
     void lesson29WithLessBounceKeepsMomentum();
     void typedTextIsEscapedAndItsNumbersRefused();
     void idsAreValidAndNew();
+    void progressCanStopIt();
 };
 
 void TestLessonDerive::derivedLessonsReopenAndHold_data()
@@ -278,6 +280,31 @@ void TestLessonDerive::idsAreValidAndNew()
     QCOMPARE(lessons::deriveId({}, QStringLiteral("Überall"), old), QStringLiteral("berall"));
     QCOMPARE(lessons::deriveId({}, QStringLiteral("???"), old), QStringLiteral("saved-scene"));
     QCOMPARE(lessons::deriveId({}, QString(80, QLatin1Char('a')), old).size(), 64);
+}
+
+void TestLessonDerive::progressCanStopIt()
+{
+    const Lesson from = loaded(QStringLiteral(FORCELAB_LESSON_DIR "/29-the-line-of-impact.json"));
+    std::vector<double> seen;
+    const lessons::DerivedLesson stopped =
+        lessons::deriveLesson(from, from.scene, lessons::defaultDeriveChoices(from), [&](double done) {
+            seen.push_back(done);
+            return done < 0.1;
+        });
+    QVERIFY(stopped.cancelled);
+    QVERIFY(!stopped.ok());
+    QVERIFY(!seen.empty() && seen.back() >= 0.1 && seen.back() < 0.2); // claim 1 of 17 was running
+    QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+
+    seen.clear();
+    const lessons::DerivedLesson whole =
+        lessons::deriveLesson(from, from.scene, lessons::defaultDeriveChoices(from), [&](double done) {
+            seen.push_back(done);
+            return true;
+        });
+    QVERIFY(whole.ok() && !whole.cancelled);
+    QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+    QVERIFY(seen.back() <= 1.0);
 }
 
 QTEST_GUILESS_MAIN(TestLessonDerive)
