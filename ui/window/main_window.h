@@ -6,6 +6,7 @@
 // with the step's numbers, and layout plus last lesson kept in QSettings.
 
 #include "lessons/lesson.h"
+#include "lessons/lesson_derive.h"
 #include "ui/drawing/world_painter.h"
 
 #include <QElapsedTimer>
@@ -60,8 +61,13 @@ public:
     /// The running scene as a lesson: the lesson's text with the live
     /// settings, every current ball listed and no random spawning.
     Lesson currentSceneAsLesson() const;
-    /// Writes currentSceneAsLesson() to `path`. On failure shows the error in
-    /// the status bar and returns false.
+    /// Saves the running scene to `path` as a new lesson made from the one on
+    /// screen (lessons::deriveLesson: the new title and text, only the claims
+    /// and questions that still hold; the file's name as its id when valid).
+    /// The status bar says what was dropped. On failure shows the error in
+    /// the status bar and returns false. Without choices: the Save dialog's
+    /// starting ones (lessons::defaultDeriveChoices).
+    bool saveLessonTo(const QString& path, const lessons::DeriveChoices& choices);
     bool saveLessonTo(const QString& path);
     /// Writes a picture of the stage to `path` (PNG): laid out as large as
     /// the screen would show it, at the screen's device pixel ratio times `scale`.

@@ -10,6 +10,7 @@
 #include "ui/docks/accuracy_dock.h"
 #include "ui/canvas/canvas.h"
 #include "ui/window/overlay_actions.h"
+#include "ui/window/save_lesson_dialog.h"
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
@@ -104,29 +105,46 @@ Lesson MainWindow::currentSceneAsLesson() const
 
 bool MainWindow::saveLessonTo(const QString& path)
 {
-    Lesson lesson = currentSceneAsLesson();
-    // The file's name as its id, when it makes a valid one.
-    static const QRegularExpression validId(QStringLiteral("^[A-Za-z0-9_-]{1,64}$"));
-    if (const QString stem = QFileInfo(path).completeBaseName(); validId.match(stem).hasMatch())
-        lesson.id = stem;
+    return saveLessonTo(path, lessons::defaultDeriveChoices(m_lesson));
+}
+
+bool MainWindow::saveLessonTo(const QString& path, const lessons::DeriveChoices& choices)
+{
+    // A new lesson, not the old one with another scene: its own title, text
+    // and id, and only the claims and questions that hold on this scene.
+    lessons::DeriveChoices wished = choices;
+    wished.ids.prepend(QFileInfo(path).completeBaseName()); // the file's name as its id, when it makes a valid one
+    QApplication::setOverrideCursor(Qt::WaitCursor);        // the claims run here, as `forcelab-cli check` runs them
+    const lessons::DerivedLesson derived = lessons::deriveLesson(m_lesson, currentSceneAsLesson().scene, wished);
+    QApplication::restoreOverrideCursor();
+    if (!derived.ok()) {
+        showError(tr("Lesson not saved: %1").arg(derived.problems.join(QLatin1Char(' '))));
+        return false;
+    }
     QString why;
-    if (!lessons::writeFileAtomically(path, saveLesson(lesson), &why)) {
+    if (!lessons::writeFileAtomically(path, saveLesson(derived.lesson), &why)) {
         showError(tr("Lesson not saved: %1").arg(why));
         return false;
     }
-    statusBar()->showMessage(tr("Saved %n ball(s) and the settings to %1", nullptr, int(lesson.scene.balls.size()))
-                                 .arg(QDir::toNativeSeparators(path)), 5000);
+    statusBar()->showMessage(tr("Saved %n ball(s) and the settings to %1 as “%2”. %3", nullptr,
+                                int(derived.lesson.scene.balls.size()))
+                                 .arg(QDir::toNativeSeparators(path),
+                                      lessons::markupToPlainText(derived.lesson.title), lessons::deriveSummary(derived)),
+                             30000);
     return true;
 }
 
 void MainWindow::saveLessonFile()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Scene as Lesson"), suggestedFileName("json"),
-                                                      tr("Lesson files (*.json)"));
-    if (path.isEmpty())
+    const QString suggested =
+        QDir(m_lastDirectory.isEmpty() ? QDir::homePath() : m_lastDirectory)
+            .filePath(lessons::deriveId({}, lessons::defaultDeriveChoices(m_lesson).title, m_lesson.id) +
+                      QStringLiteral(".json"));
+    SaveLessonDialog dialog(m_lesson, suggested, this);
+    if (dialog.exec() != QDialog::Accepted)
         return;
-    m_lastDirectory = QFileInfo(path).absolutePath();
-    saveLessonTo(path);
+    m_lastDirectory = QFileInfo(dialog.path()).absolutePath();
+    saveLessonTo(dialog.path(), dialog.choices());
 }
 
 QString MainWindow::lessonsFolder()
