@@ -21,6 +21,9 @@ SettingsCommand::SettingsCommand(SimulationController* controller, const QString
 void SettingsCommand::undo()
 {
     m_controller->setSettings(m_before);
+    if (m_undoCut >= 0 && m_controller->restoreFuture(m_undoCut))
+        m_redoCut = m_controller->lastCut();
+    m_undoCut = -1;
 }
 
 void SettingsCommand::redo()
@@ -28,6 +31,14 @@ void SettingsCommand::redo()
     // Refused (only the first time can it be: later redos put back settings
     // the world once took): the stack drops the command.
     const bool accepted = m_controller->setSettings(m_after);
+    if (accepted) {
+        // The future this edit cuts (or, on a redo made at the latest step,
+        // the one restoring the edited future cuts) is what undo brings back.
+        m_undoCut = m_controller->lastCut();
+        if (m_redoCut >= 0 && m_controller->restoreFuture(m_redoCut) && m_undoCut < 0)
+            m_undoCut = m_controller->lastCut();
+        m_redoCut = -1;
+    }
     setObsolete(!accepted);
     if (m_report)
         *std::exchange(m_report, nullptr) = accepted;
@@ -39,6 +50,8 @@ bool SettingsCommand::mergeWith(const QUndoCommand* other)
     if (o->isObsolete() || o->m_mergeId != m_mergeId || o->m_session != m_session)
         return false;
     m_after = o->m_after;
+    if (m_undoCut < 0)
+        m_undoCut = o->m_undoCut;
     return true;
 }
 

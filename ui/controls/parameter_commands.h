@@ -43,6 +43,10 @@ private:
     int m_mergeId;
     int m_session;
     bool* m_report = nullptr;
+    // An edit made behind the latest recorded step cuts the steps after it
+    // (sim/world/timeline.h): undo brings them back, redo the edited ones.
+    int m_undoCut = -1; // the future the edit cut, for undo (-1: none)
+    int m_redoCut = -1; // the edited future an undo cut, for redo (-1: none)
 };
 
 /// A new number of random balls (or other spawn settings): the world restarts.
