@@ -106,6 +106,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 
     createSimulationActions();
     createFileActions();
+    createTimeActions(); // Step Back and the timeline bar
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
     // Escape leaves the stage view.

@@ -116,6 +116,7 @@ private slots:
 
 private:
     void createSimulationActions();
+    void createTimeActions();
     void createFileActions();
     void createMenus();
     void createToolBars();
@@ -152,6 +153,7 @@ private:
 
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
+    QAction* m_stepBackAction = nullptr;
     QAction* m_resetAction = nullptr;
     QAction* m_slowerAction = nullptr;
     QAction* m_fasterAction = nullptr;
