@@ -31,6 +31,13 @@ TimelineBar::TimelineBar(SimulationController* controller, QWidget* parent)
     m_slider->setObjectName(QStringLiteral("timelineSlider"));
     m_slider->setToolTip(tr("The recorded past: drag to see the world at any step of it"));
     m_label->setObjectName(QStringLiteral("timelineLabel"));
+    m_back->setAccessibleName(tr("Step back"));
+    m_forward->setAccessibleName(tr("Step forward"));
+    m_slider->setAccessibleName(tr("Timeline: the recorded steps"));
+    m_label->setAccessibleName(tr("Time shown, of the time recorded"));
+    m_back->setAutoRaise(true);
+    m_forward->setAutoRaise(true);
+    m_slider->setMinimumWidth(120);
     m_label->setMinimumWidth(m_label->fontMetrics().horizontalAdvance(timeText(9999.99, 9999.99)));
 
     auto* layout = new QHBoxLayout(this);
