@@ -106,7 +106,6 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 
     createSimulationActions();
     createFileActions();
-    createTimeActions(); // Step Back and the timeline bar
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
     // Escape leaves the stage view.
@@ -114,6 +113,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
     createMenus();
     createToolBars();
+    createTimeActions(); // Step Back and the timeline bar
     installEventFilter(new ReadableDockTabs(this));
     createDocks();
     createStatusBar();

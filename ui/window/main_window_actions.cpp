@@ -80,8 +80,9 @@ QIcon recordIcon()
 } // namespace
 
 // Going back in time: Step Back (← or , mirroring Step's → and .) and the
-// timeline bar (step back, the scrubber over the recorded past, step) along
-// the bottom of the window.
+// timeline bar (step back, the scrubber over the recorded past, step) in a
+// toolbar of its own, on the row of the others: a row of its own would take
+// the box's height.
 void MainWindow::createTimeActions()
 {
     m_stepBackAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Step &Back"), this);
@@ -93,7 +94,7 @@ void MainWindow::createTimeActions()
     auto* timeBar = new QToolBar(tr("Timeline"), this);
     timeBar->setObjectName(QStringLiteral("timelineToolBar"));
     timeBar->addWidget(new TimelineBar(m_controller, timeBar));
-    addToolBar(Qt::BottomToolBarArea, timeBar);
+    addToolBar(Qt::TopToolBarArea, timeBar);
     // The stage view shows the stage alone (leaving it restores the bar with the layout).
     connect(m_presentationAction, &QAction::toggled, timeBar, [timeBar](bool staged) {
         if (staged)
