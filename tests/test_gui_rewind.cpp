@@ -124,6 +124,7 @@ private slots:
     void draggingTheScrubberShowsTheRecordedWorld();
     void anEditInThePastIsUndoneWithItsFuture();
     void undoOfASettingsEditBringsTheFutureBack();
+    void aBallHeldWhilePlayingIsReplayed();
     void stepBackActionOfTheWindow();
 };
 
@@ -251,6 +252,33 @@ void GuiRewindTest::undoOfASettingsEditBringsTheFutureBack()
     QVERIFY(c.seekStep(50));
     QCOMPARE(snap(c.world()).steps, edited.steps);
     QVERIFY(sameBits(c.world().balls().position, edited.position));
+}
+
+// The canvas holds a dragged ball after every frame of a playing world
+// without telling the controller (Canvas::onStepped): the record must still
+// re-run to what was shown.
+void GuiRewindTest::aBallHeldWhilePlayingIsReplayed()
+{
+    SimulationController c;
+    QVERIFY(!c.setScene(scene()));
+    stepLive(c, 20);
+    std::vector<Snapshot> shown;
+    for (int k = 0; k < 15; ++k) {
+        stepLive(c, c.world().stepCount() + 1);
+        sim::BallState& balls = c.mutableWorld().mutableBalls();
+        balls.position.col(1) = sim::Vec2(300.0 + 5.0 * k, 200.0);
+        balls.velocity.col(1).setZero();
+        shown.push_back(snap(c.world()));
+    }
+    stepLive(c, 40);
+    const Snapshot latest = snap(c.world());
+    QVERIFY(c.seekStep(10));
+    for (const Snapshot& s : shown) {
+        QVERIFY(c.seekStep(s.steps));
+        QVERIFY(sameWorld(c.world(), s));
+    }
+    QVERIFY(c.seekStep(40));
+    QVERIFY(sameWorld(c.world(), latest));
 }
 
 void GuiRewindTest::stepBackActionOfTheWindow()
