@@ -125,6 +125,7 @@ private slots:
     void anEditInThePastIsUndoneWithItsFuture();
     void undoOfASettingsEditBringsTheFutureBack();
     void aBallHeldWhilePlayingIsReplayed();
+    void undoOfARespawnBringsTheRunBack();
     void stepBackActionOfTheWindow();
 };
 
@@ -279,6 +280,32 @@ void GuiRewindTest::aBallHeldWhilePlayingIsReplayed()
     }
     QVERIFY(c.seekStep(40));
     QVERIFY(sameWorld(c.world(), latest));
+}
+
+void GuiRewindTest::undoOfARespawnBringsTheRunBack()
+{
+    const std::vector<Snapshot> never = reference(scene(), 60);
+    SimulationController c;
+    SettingsEditor editor(&c);
+    QVERIFY(!c.setScene(scene()));
+    stepLive(c, 60);
+    sim::SpawnSettings more;
+    more.count = 3;
+    QVERIFY(editor.editSpawn(QStringLiteral("3 balls"), more));
+    QCOMPARE(c.world().balls().size(), 7);
+    QCOMPARE(c.world().stepCount(), std::int64_t{0});
+    stepLive(c, 20);
+    const Snapshot respawned = snap(c.world());
+    editor.undoStack()->undo();
+    QVERIFY(sameWorld(c.world(), never[0]));
+    QCOMPARE(c.latestStep(), std::int64_t{60});
+    QVERIFY(c.seekStep(60));
+    QVERIFY(sameWorld(c.world(), never[60]));
+    editor.undoStack()->redo();
+    QCOMPARE(c.world().balls().size(), 7);
+    QCOMPARE(c.latestStep(), std::int64_t{20});
+    QVERIFY(c.seekStep(20));
+    QVERIFY(sameWorld(c.world(), respawned));
 }
 
 void GuiRewindTest::stepBackActionOfTheWindow()

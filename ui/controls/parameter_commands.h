@@ -63,6 +63,10 @@ private:
     sim::SpawnSettings m_before;
     sim::SpawnSettings m_after;
     bool* m_report = nullptr;
+    // The run a respawn ended is a cut (sim/world/timeline.h): undo brings it
+    // back, at its start, with its recorded past; redo the respawned run.
+    int m_undoCut = -1;
+    int m_redoCut = -1;
 };
 
 /// A new time scale (slow motion, fast forward).
