@@ -188,6 +188,7 @@ void World::setPointer(const PointerInput& pointer)
     if (pointer == m_inputs.pointer)
         return;
     m_inputs.pointer = pointer;
+    ++m_pointerChanges;
     m_integrator.invalidate();
 }
 

@@ -63,6 +63,11 @@ public:
 
     void setPointer(const PointerInput& pointer);
     const PointerInput& pointer() const { return m_inputs.pointer; }
+    /// How many times setPointer changed the pointer (1 each). A change, even
+    /// one undone before the next step, makes the integrator start afresh, so
+    /// a replay must know it happened, not only where the pointer ended
+    /// (sim/world/timeline.h). Not part of the state: a replay may count differently.
+    std::uint64_t pointerChanges() const { return m_pointerChanges; }
 
     /// Advances the world by settings().time.dt, unless it is halted.
     void step();
@@ -143,6 +148,7 @@ private:
     bool m_gaveUp = false;  // an adaptive integrator gave up in this step
     double m_stuckSubStep = 0.0; // s, > 0 when it gave up because even a sub-step this short missed the tolerance
     std::int64_t m_stepCount = 0;
+    std::uint64_t m_pointerChanges = 0; // see pointerChanges()
     StepStats m_last;
     StepStats m_totals;
     // The books of the accounting (see setAccounting).

@@ -13,6 +13,7 @@ HistoryRecorder::HistoryRecorder(SimulationController* controller, QObject* pare
     setObjectName(QStringLiteral("historyRecorder"));
     connect(m_controller, &SimulationController::stepped, this, &HistoryRecorder::record);
     connect(m_controller, &SimulationController::sceneChanged, this, &HistoryRecorder::clear);
+    connect(m_controller, &SimulationController::seeked, this, &HistoryRecorder::clear); // paths restart where it jumped
 }
 
 void HistoryRecorder::setRecorded(const Overlays& overlays)

@@ -17,6 +17,7 @@ SimulationController::SimulationController(QObject* parent)
     m_timer.setInterval(kFrameIntervalMs);
     connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
     m_clock.start();
+    m_timeline.start(m_world);
 }
 
 std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
@@ -50,10 +51,104 @@ bool SimulationController::setSettings(const sim::WorldSettings& settings)
                 emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
                 pane.world.reset();
             }
+    m_timeline.settingsEdited(m_world);
     emit settingsChanged();
     emit stepped(); // a paused canvas shows the change (walls, markers)
+    emit timelineChanged();
     checkHalted();
     return true;
+}
+
+void SimulationController::notifyBallsChanged()
+{
+    m_previous.resize(2, 0); // moved by hand: nothing to blend with
+    m_timeline.edited(m_world);
+    noteRecorded();
+    emit stepped();
+    emit timelineChanged();
+}
+
+// Takes the next step: the recorded one while the world is behind the
+// latest, else a new one, recorded.
+void SimulationController::stepWorld()
+{
+    if (m_world.stepCount() < m_timeline.latestStep()) {
+        m_timeline.replayStep(m_world);
+        noteRecorded();
+        if (m_ghost)
+            m_ghost->setPointer(m_world.pointer());
+        return;
+    }
+    if (m_pendingPointer) {
+        m_world.setPointer(*m_pendingPointer);
+        if (m_ghost)
+            m_ghost->setPointer(*m_pendingPointer);
+        m_pendingPointer.reset();
+    }
+    // A ball held by the hand while playing is moved between steps without
+    // notifyBallsChanged: an edit all the same, or the record would not re-run.
+    const sim::BallState& balls = m_world.balls();
+    if (m_recordedSteps == m_world.stepCount() &&
+        (balls.position.cols() != m_recordedPosition.cols() || balls.position != m_recordedPosition ||
+         balls.velocity != m_recordedVelocity))
+        m_timeline.edited(m_world);
+    m_world.step();
+    m_timeline.afterStep(m_world);
+    noteRecorded();
+}
+
+// The balls as the timeline knows them now: a later difference is an edit.
+void SimulationController::noteRecorded()
+{
+    m_recordedPosition = m_world.balls().position;
+    m_recordedVelocity = m_world.balls().velocity;
+    m_recordedSteps = m_world.stepCount();
+}
+
+bool SimulationController::stepBack()
+{
+    pause();
+    return seekStep(m_world.stepCount() - 1);
+}
+
+bool SimulationController::seekStep(std::int64_t step)
+{
+    pause();
+    if (step == m_world.stepCount() && step <= m_timeline.latestStep())
+        return true;
+    const bool accounting = m_world.accounting();
+    if (!m_timeline.seek(step, m_world))
+        return false;
+    afterSeek(accounting);
+    return true;
+}
+
+bool SimulationController::restoreFuture(int cutId)
+{
+    const bool accounting = m_world.accounting();
+    if (!m_timeline.restoreCut(cutId, m_world))
+        return false;
+    afterSeek(accounting);
+    return true;
+}
+
+// The world jumped: the ghost and the panes start over from it (simplest
+// consistent choice: their own past is not recorded), the views redraw. The
+// energy books follow the Accuracy dock's switch, not the checkpoint's.
+void SimulationController::afterSeek(bool accounting)
+{
+    if (m_world.accounting() != accounting)
+        m_world.setAccounting(accounting);
+    noteRecorded();
+    m_accumulator = 0.0;
+    m_previous.resize(2, 0);
+    restartGhost();
+    restartPanes();
+    emit seeked();
+    emit settingsChanged(); // the settings in force at that step
+    emit stepped();
+    emit timelineChanged();
+    checkHalted();
 }
 
 // The world refuses to step while its motion would blow up. The controller
@@ -71,6 +166,11 @@ void SimulationController::checkHalted()
 
 void SimulationController::setPointer(const sim::PointerInput& pointer)
 {
+    if (m_world.stepCount() < m_timeline.latestStep()) {
+        m_pendingPointer = pointer; // the record's pointer acts until the latest step
+        return;
+    }
+    m_pendingPointer.reset();
     m_world.setPointer(pointer);
     if (m_ghost)
         m_ghost->setPointer(pointer);
@@ -103,11 +203,13 @@ int SimulationController::advance(double elapsedSeconds)
     for (int k = 0; k < steps && !m_world.halted(); ++k) {
         if (slow && k == steps - 1)
             m_previous = m_world.balls().position;
-        m_world.step();
+        stepWorld();
     }
     stepGhost();
-    if (steps > 0)
+    if (steps > 0) {
         emit stepped();
+        emit timelineChanged();
+    }
     else if (m_playing && m_timeScale < 1.0)
         emit framePassed();
     checkHalted();
@@ -162,9 +264,10 @@ void SimulationController::stepOnce()
     pause();
     m_accumulator = 0.0;
     m_previous.resize(2, 0);
-    m_world.step();
+    stepWorld();
     stepGhost();
     emit stepped();
+    emit timelineChanged();
     checkHalted();
 }
 
@@ -185,10 +288,13 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
     m_spawn = spawn;
     m_accumulator = 0.0;
     m_clock.restart();
+    m_timeline.edited(m_world); // back at step 0: the run so far is a cut an undo can bring back
+    noteRecorded();
     restartGhost();
     restartPanes();
     emit sceneChanged();
     emit stepped();
+    emit timelineChanged();
     return true;
 }
 
@@ -211,11 +317,15 @@ void SimulationController::startedScene()
     m_previous.resize(2, 0);
     m_droppedTime = 0.0;
     m_clock.restart();
+    m_timeline.start(m_world);
+    noteRecorded();
+    m_pendingPointer.reset();
     restartGhost();
     restartPanes();
     emit sceneChanged();
     emit settingsChanged();
     emit stepped();
+    emit timelineChanged();
     checkHalted();
 }
 

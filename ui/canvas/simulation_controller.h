@@ -8,6 +8,7 @@
 // hidden or minimised).
 
 #include "sim/world/scene.h"
+#include "sim/world/timeline.h"
 #include "sim/world/world.h"
 #include "lessons/lesson.h"
 
@@ -30,11 +31,25 @@ public:
     /// For tools that move balls directly (tests, drag-and-throw). Emit
     /// nothing; call notifyBallsChanged() after editing.
     sim::World& mutableWorld() { return m_world; }
-    void notifyBallsChanged()
-    {
-        m_previous.resize(2, 0); // moved by hand: nothing to blend with
-        emit stepped();
-    }
+    /// After balls were moved by hand: the timeline takes a checkpoint (and
+    /// cuts the future when the world was behind its latest step).
+    void notifyBallsChanged();
+
+    /// The live world's past (sim/world/timeline.h): every step the
+    /// controller takes is recorded; setSettings, notifyBallsChanged and
+    /// respawn are edits; a new scene or a reset starts it afresh. While the
+    /// world is behind the latest recorded step, playing and stepOnce re-run
+    /// the recorded steps (their logged pointer, not the live one: pointer
+    /// moves wait until the world is back at the latest step).
+    const sim::Timeline& timeline() const { return m_timeline; }
+    std::int64_t earliestStep() const { return m_timeline.earliestStep(); }
+    std::int64_t latestStep() const { return m_timeline.latestStep(); }
+    /// The cut the last edit made (an undo command keeps it), or -1.
+    int lastCut() const { return m_timeline.lastCut(); }
+    /// Brings back the future that edit `cutId` cut, after its own change was
+    /// undone: the world goes to the step of the edit, as it was before it.
+    /// The ghost and compare panes restart there. False when it is gone.
+    bool restoreFuture(int cutId);
 
     /// In slow motion (time scale below 1, while playing), where the canvas
     /// draws the balls: the last step's start and end positions mixed by the
@@ -124,8 +139,15 @@ public slots:
     void pause();
     void setPlaying(bool playing);
     void togglePlay();
-    /// Pauses and advances exactly one step of dt.
+    /// Pauses and advances exactly one step of dt (re-runs the recorded one
+    /// when the world is behind the latest recorded step).
     void stepOnce();
+    /// Pauses and goes one step back (false at the earliest recorded step).
+    bool stepBack();
+    /// Pauses and shows the recorded world at `step` in [earliestStep(),
+    /// latestStep()]; the ghost and the compare panes restart from it (their
+    /// own past is not kept), trails are cleared. False when out of range.
+    bool seekStep(std::int64_t step);
     /// Restarts the scene with the lesson's own settings, balls and spawn settings.
     void reset();
     void setTimeScale(double scale);
@@ -148,9 +170,17 @@ signals:
     void haltedChanged(const QString& reason);
     /// The ghost was switched, restarted or refused its settings.
     void ghostChanged();
+    /// The recorded span or the world's place in it changed.
+    void timelineChanged();
+    /// The world jumped to another recorded step (a seek, a step back, a
+    /// restored future): paths drawn so far no longer lead to it.
+    void seeked();
 
 private:
     void tick();
+    void stepWorld();
+    void afterSeek(bool accounting);
+    void noteRecorded();
     void updateTimer();
     void checkHalted();
     void restartGhost();
@@ -159,6 +189,11 @@ private:
     sim::WorldSettings ghostSettings(const sim::WorldSettings& live) const;
 
     sim::World m_world;
+    sim::Timeline m_timeline;
+    std::optional<sim::PointerInput> m_pendingPointer; // the live pointer, held while re-running the record
+    sim::Matrix2X m_recordedPosition; // px, the balls as the last recorded step left them
+    sim::Matrix2X m_recordedVelocity; // px/s
+    std::int64_t m_recordedSteps = -1; // step count of that record (-1: none)
     QString m_haltReason; // the last reason reported by haltedChanged
     sim::Scene m_scene;
     sim::SpawnSettings m_spawn; // of the running world

@@ -18,9 +18,34 @@ SettingsCommand::SettingsCommand(SimulationController* controller, const QString
 {
 }
 
+namespace {
+// After an undo's own change (which may have cut the edited future),
+// brings back the future the edit cut. Returns the cut holding the edited
+// future, for redo: the one the restore made, else the undo's own.
+int restoreCutFuture(SimulationController* controller, int undoCut)
+{
+    int redoCut = controller->lastCut();
+    if (undoCut >= 0 && controller->restoreFuture(undoCut) && controller->lastCut() >= 0)
+        redoCut = controller->lastCut();
+    return redoCut;
+}
+
+// After a redo's own change (which cut the future the undo brought back):
+// brings back the edited future. Returns the cut holding the other, for undo.
+int restoreEditedFuture(SimulationController* controller, int redoCut)
+{
+    int undoCut = controller->lastCut();
+    if (redoCut >= 0 && controller->restoreFuture(redoCut) && undoCut < 0)
+        undoCut = controller->lastCut();
+    return undoCut;
+}
+} // namespace
+
 void SettingsCommand::undo()
 {
     m_controller->setSettings(m_before);
+    m_redoCut = restoreCutFuture(m_controller, m_undoCut);
+    m_undoCut = -1;
 }
 
 void SettingsCommand::redo()
@@ -28,6 +53,12 @@ void SettingsCommand::redo()
     // Refused (only the first time can it be: later redos put back settings
     // the world once took): the stack drops the command.
     const bool accepted = m_controller->setSettings(m_after);
+    if (accepted) {
+        // The future this edit cuts (or, on a redo made at the latest step,
+        // the one restoring the edited future cuts) is what undo brings back.
+        m_undoCut = restoreEditedFuture(m_controller, m_redoCut);
+        m_redoCut = -1;
+    }
     setObsolete(!accepted);
     if (m_report)
         *std::exchange(m_report, nullptr) = accepted;
@@ -39,6 +70,8 @@ bool SettingsCommand::mergeWith(const QUndoCommand* other)
     if (o->isObsolete() || o->m_mergeId != m_mergeId || o->m_session != m_session)
         return false;
     m_after = o->m_after;
+    if (m_undoCut < 0)
+        m_undoCut = o->m_undoCut;
     return true;
 }
 
@@ -54,11 +87,17 @@ SpawnCommand::SpawnCommand(SimulationController* controller, const QString& text
 void SpawnCommand::undo()
 {
     m_controller->respawn(m_before);
+    m_redoCut = restoreCutFuture(m_controller, m_undoCut);
+    m_undoCut = -1;
 }
 
 void SpawnCommand::redo()
 {
     const bool accepted = m_controller->respawn(m_after);
+    if (accepted) {
+        m_undoCut = restoreEditedFuture(m_controller, m_redoCut);
+        m_redoCut = -1;
+    }
     setObsolete(!accepted);
     if (m_report)
         *std::exchange(m_report, nullptr) = accepted;

@@ -43,6 +43,10 @@ private:
     int m_mergeId;
     int m_session;
     bool* m_report = nullptr;
+    // An edit made behind the latest recorded step cuts the steps after it
+    // (sim/world/timeline.h): undo brings them back, redo the edited ones.
+    int m_undoCut = -1; // the future the edit cut, for undo (-1: none)
+    int m_redoCut = -1; // the edited future an undo cut, for redo (-1: none)
 };
 
 /// A new number of random balls (or other spawn settings): the world restarts.
@@ -59,6 +63,10 @@ private:
     sim::SpawnSettings m_before;
     sim::SpawnSettings m_after;
     bool* m_report = nullptr;
+    // The run a respawn ended is a cut (sim/world/timeline.h): undo brings it
+    // back, at its start, with its recorded past; redo the respawned run.
+    int m_undoCut = -1;
+    int m_redoCut = -1;
 };
 
 /// A new time scale (slow motion, fast forward).

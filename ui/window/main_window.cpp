@@ -116,6 +116,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
     createMenus();
     createToolBars();
+    createTimeActions(); // Step Back and the timeline bar
     installEventFilter(new ReadableDockTabs(this));
     createDocks();
     createStatusBar();

@@ -127,6 +127,7 @@ private:
     void createBallActions();
     /// Shows ball `index` in the Balls table (the dock, or the stage's panel).
     void editBall(int index);
+    void createTimeActions();
     void createFileActions();
     void createMenus();
     void createToolBars();
@@ -165,6 +166,7 @@ private:
 
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
+    QAction* m_stepBackAction = nullptr;
     QAction* m_resetAction = nullptr;
     QAction* m_slowerAction = nullptr;
     QAction* m_fasterAction = nullptr;

@@ -23,6 +23,7 @@
 #include "ui/docks/force_editor_dock.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/window/theme.h"
+#include "ui/controls/timeline_bar.h"
 #include "ui/docks/trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
@@ -77,6 +78,29 @@ QIcon recordIcon()
     return QIcon(pixmap);
 }
 } // namespace
+
+// Going back in time: Step Back (← or , mirroring Step's → and .) and the
+// timeline bar (step back, the scrubber over the recorded past, step) in a
+// toolbar of its own, on the row of the others: a row of its own would take
+// the box's height.
+void MainWindow::createTimeActions()
+{
+    m_stepBackAction = new QAction(style()->standardIcon(QStyle::SP_MediaSkipBackward), tr("Step &Back"), this);
+    m_stepBackAction->setObjectName(QStringLiteral("stepBackAction"));
+    m_stepBackAction->setShortcuts({QKeySequence(Qt::Key_Left), QKeySequence(Qt::Key_Comma)});
+    m_stepBackAction->setStatusTip(tr("Pause and go back by one time step dt, to the world as it was (← or ,)"));
+    connect(m_stepBackAction, &QAction::triggered, m_controller, &SimulationController::stepBack);
+    addAction(m_stepBackAction);
+    auto* timeBar = new QToolBar(tr("Timeline"), this);
+    timeBar->setObjectName(QStringLiteral("timelineToolBar"));
+    timeBar->addWidget(new TimelineBar(m_controller, timeBar));
+    addToolBar(Qt::TopToolBarArea, timeBar);
+    // The stage view shows the stage alone (leaving it restores the bar with the layout).
+    connect(m_presentationAction, &QAction::toggled, timeBar, [timeBar](bool staged) {
+        if (staged)
+            timeBar->hide();
+    });
+}
 
 void MainWindow::createSimulationActions()
 {
