@@ -159,6 +159,7 @@ private slots:
     void lesson30TwoBallsIn();
     void lesson31DoubleSpeedAndHeavier();
     void aLessonMayGiveADensity();
+    void anEditInThePastIsANewFutureUndoneToTheOld();
 };
 
 // The whole round: a ball added with the right-click menu, dragged with the
@@ -511,6 +512,30 @@ void GuiEditingTest::aLessonMayGiveADensity()
     QVERIFY(std::abs(w.balls().mass[0] - 19.3 * sim::sphereMass(20.0)) <= 1e-12 * w.balls().mass[0]);
     const QModelIndex density = w.table()->model()->index(w.ballTable()->rowOf(0), BallTableModel::Density);
     QCOMPARE(density.data().toString(), QStringLiteral("19.3"));
+}
+
+// Rewound to step 30 of 90, a typed speed starts a new future (the record
+// ends at step 30); Undo brings back the old one: the world at step 30 and,
+// sought again, at step 90 are bit for bit those of the run never edited.
+void GuiEditingTest::anEditInThePastIsANewFutureUndoneToTheOld()
+{
+    Workbench w(QStringLiteral("the-line-of-impact"));
+    QVERIFY(w.ready());
+    SimulationController* c = w.controller();
+    for (int k = 0; k < 90; ++k)
+        c->stepOnce();
+    const sim::BallState at90 = w.balls();
+    QVERIFY(c->seekStep(30));
+    const sim::BallState at30 = w.balls();
+    QCOMPARE(c->latestStep(), std::int64_t(90));
+    QVERIFY(w.type(0, BallTableModel::Vx, QStringLiteral("-15")));
+    QCOMPARE(w.balls().velocity(0, 0), -15.0);
+    QCOMPARE(c->latestStep(), std::int64_t(30));
+    w.undo()->undo();
+    QVERIFY(sameBalls(w.balls(), at30));
+    QCOMPARE(c->latestStep(), std::int64_t(90));
+    QVERIFY(c->seekStep(90));
+    QVERIFY(sameBalls(w.balls(), at90));
 }
 
 QTEST_MAIN(GuiEditingTest)

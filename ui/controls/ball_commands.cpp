@@ -1,6 +1,7 @@
 #include "ui/controls/ball_commands.h"
 
 #include "ui/canvas/simulation_controller.h"
+#include "ui/controls/parameter_commands.h"
 
 namespace forcelab {
 
@@ -79,6 +80,21 @@ void BallCommand::remove()
 
 void BallCommand::undo()
 {
+    undoEdit();
+    // An edit made in the past started a new future; undone, the old one comes back.
+    m_redoCut = restoreCutFuture(m_controller, m_undoCut);
+    m_undoCut = -1;
+}
+
+void BallCommand::redo()
+{
+    redoEdit();
+    m_undoCut = restoreEditedFuture(m_controller, m_redoCut);
+    m_redoCut = -1;
+}
+
+void BallCommand::undoEdit()
+{
     switch (m_kind) {
     case Kind::Change:
         change(m_before);
@@ -96,7 +112,7 @@ void BallCommand::undo()
     }
 }
 
-void BallCommand::redo()
+void BallCommand::redoEdit()
 {
     switch (m_kind) {
     case Kind::Change:
@@ -118,6 +134,8 @@ bool BallCommand::mergeWith(const QUndoCommand* other)
         o->m_session != m_session || o->m_index != m_index || o->m_fields != m_fields)
         return false;
     m_after = o->m_after;
+    if (m_undoCut < 0)
+        m_undoCut = o->m_undoCut;
     return true;
 }
 

@@ -5,7 +5,8 @@
 // it is the edit. A change writes only the fields it edits, so undoing a new
 // mass while the ball flies on puts back the mass and leaves its path alone;
 // undone at once, every field is back bit for bit. One drag of a ball, of its
-// arrow or of a slider merges into one step.
+// arrow or of a slider merges into one step. Made in the past (after a
+// rewind), an edit starts a new future; its undo brings back the old one.
 
 #include "sim/world/ball_state.h"
 
@@ -52,6 +53,8 @@ public:
     int index() const { return m_index; }
 
 private:
+    void undoEdit();
+    void redoEdit();
     void change(const sim::Ball& to);
     void insert();
     void remove();
@@ -64,6 +67,8 @@ private:
     unsigned m_fields;
     int m_mergeId;
     int m_session;
+    int m_undoCut = -1; // the timeline's cut holding the future this edit replaced (undo brings it back)
+    int m_redoCut = -1; // the cut holding the edited future, after an undo
 };
 
 } // namespace forcelab

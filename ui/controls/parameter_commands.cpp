@@ -18,10 +18,6 @@ SettingsCommand::SettingsCommand(SimulationController* controller, const QString
 {
 }
 
-namespace {
-// After an undo's own change (which may have cut the edited future),
-// brings back the future the edit cut. Returns the cut holding the edited
-// future, for redo: the one the restore made, else the undo's own.
 int restoreCutFuture(SimulationController* controller, int undoCut)
 {
     int redoCut = controller->lastCut();
@@ -30,8 +26,6 @@ int restoreCutFuture(SimulationController* controller, int undoCut)
     return redoCut;
 }
 
-// After a redo's own change (which cut the future the undo brought back):
-// brings back the edited future. Returns the cut holding the other, for undo.
 int restoreEditedFuture(SimulationController* controller, int redoCut)
 {
     int undoCut = controller->lastCut();
@@ -39,7 +33,6 @@ int restoreEditedFuture(SimulationController* controller, int redoCut)
         undoCut = controller->lastCut();
     return undoCut;
 }
-} // namespace
 
 void SettingsCommand::undo()
 {

@@ -16,6 +16,16 @@ namespace forcelab {
 
 class SimulationController;
 
+/// After an undo's own change (which may have cut the edited future),
+/// brings back the future the edit cut (`undoCut`, −1 for none). Returns the
+/// cut holding the edited future, for redo: the one the restore made, else
+/// the undo's own.
+int restoreCutFuture(SimulationController* controller, int undoCut);
+/// After a redo's own change (which cut the future the undo brought back):
+/// brings back the edited future (`redoCut`). Returns the cut holding the
+/// other, for undo.
+int restoreEditedFuture(SimulationController* controller, int redoCut);
+
 /// A change of the world's settings.
 class SettingsCommand : public QUndoCommand {
 public:
