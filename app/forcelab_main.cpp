@@ -29,6 +29,7 @@ struct Options {
     QCommandLineOption present;
     QCommandLineOption benchRender;
     QCommandLineOption select;
+    QCommandLineOption ballTable;
 };
 
 Options declareOptions(QCommandLineParser& parser)
@@ -58,8 +59,11 @@ Options declareOptions(QCommandLineParser& parser)
     const QCommandLineOption select(QStringLiteral("select"),
                                     QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
-    parser.addOptions({screenshot, after, time, size, present, select, benchRender});
-    return {help, version, screenshot, after, time, size, present, benchRender, select};
+    const QCommandLineOption ballTable(QStringLiteral("ball-table"),
+                                       QStringLiteral("Show the table of the balls (the Balls dock, or under the box "
+                                                      "with --present), with the selected ball."));
+    parser.addOptions({screenshot, after, time, size, present, select, ballTable, benchRender});
+    return {help, version, screenshot, after, time, size, present, benchRender, select, ballTable};
 }
 
 // Reads the arguments before any window system is needed: --help and
@@ -216,6 +220,8 @@ int main(int argc, char* argv[])
         }
         window.canvas()->setSelectedBall(ball);
     }
+    if (parser.isSet(o.ballTable))
+        window.editBall(window.canvas()->selectedBall());
 
     if (parser.isSet(o.screenshot) && !scheduleScreenshot(window, parser, o))
         return 2;

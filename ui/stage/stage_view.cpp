@@ -13,6 +13,7 @@
 #include <QBoxLayout>
 #include <QLabel>
 #include <QStyle>
+#include <QHeaderView>
 #include <QTableView>
 #include <QVBoxLayout>
 
@@ -81,6 +82,11 @@ void StageView::createBar(const QList<QAction*>& actions)
         m_ballTable->setVisible(on && isStaged());
         layoutStage();
     });
+    // Read from the back of the room: the table's text as large as the sliders'.
+    QFont large = m_ballTable->font();
+    large.setPointSizeF(large.pointSizeF() * 1.35);
+    m_ballTable->setFont(large);
+    m_ballTable->view()->horizontalHeader()->setFont(large);
 
     m_bar = new StageBar(QList<QAction*>(actions) << m_ballsAction << m_slidersAction, this);
     m_layout->addWidget(m_bar);
@@ -95,6 +101,7 @@ void StageView::showBallTable(int index)
 {
     m_ballsAction->setChecked(true);
     m_ballTable->setVisible(isStaged());
+    layoutStage();
     m_ballTable->setSelectedBall(index);
     m_ballTable->view()->setFocus();
 }
@@ -204,7 +211,14 @@ void StageView::layoutStage()
         return;
     const sim::BoxSettings& box = m_controller->world().settings().box;
     const double aspect = box.width > 0 && box.height > 0 ? box.width / box.height : 1.5;
-    const QSize area = size();
+    QSize area = size();
+    if (m_ballTable->isVisibleTo(this)) {
+        // The ball table takes a quarter of the height under the box (at
+        // least four rows); the box and the bar share the rest.
+        const int rows = std::clamp(area.height() / 4, 150, 280);
+        m_ballTable->setFixedHeight(rows);
+        area.rheight() -= rows;
+    }
     const double side = area.width() - aspect * area.height();      // px left beside a full-height box
     const double below = area.height() - area.width() / aspect;      // px left under a full-width box
     const bool vertical = side >= below;

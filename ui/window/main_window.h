@@ -79,6 +79,10 @@ public:
     /// The projector theme (View menu; always on in the stage view).
     void setProjectorTheme(bool on);
 
+    /// Shows the Balls table (the dock, or under the box in the stage view)
+    /// with ball `index` selected (−1: none), its keyboard focus in the table.
+    void editBall(int index);
+
     SimulationController* controller() const { return m_controller; }
     Canvas* canvas() const { return m_canvas; }
     ParameterPanel* parameterPanel() const { return m_parameters; }
@@ -125,8 +129,6 @@ private:
     void createSimulationActions();
     /// Add, delete, duplicate, copy and paste a ball (the canvas does them).
     void createBallActions();
-    /// Shows ball `index` in the Balls table (the dock, or the stage's panel).
-    void editBall(int index);
     void createTimeActions();
     void createFileActions();
     void createMenus();

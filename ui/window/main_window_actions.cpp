@@ -136,9 +136,29 @@ void MainWindow::createSimulationActions()
     connect(m_fasterAction, &QAction::triggered, this, &MainWindow::faster);
 }
 
+namespace {
+
+// A ball with a plus: the Add Ball icon (no standard icon means "new ball").
+QIcon addBallIcon()
+{
+    QPixmap pixmap(64, 64);
+    pixmap.fill(Qt::transparent);
+    QPainter p(&pixmap);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(0x2d3340), 3));
+    p.setBrush(QColor(0x3090d0));
+    p.drawEllipse(QRectF(6, 6, 52, 52));
+    p.setPen(QPen(Qt::white, 7, Qt::SolidLine, Qt::RoundCap));
+    p.drawLine(QPointF(32, 19), QPointF(32, 45));
+    p.drawLine(QPointF(19, 32), QPointF(45, 32));
+    return QIcon(pixmap);
+}
+
+} // namespace
+
 void MainWindow::createBallActions()
 {
-    m_addBallAction = new QAction(tr("&Add Ball"), this);
+    m_addBallAction = new QAction(addBallIcon(), tr("&Add Ball"), this);
     m_addBallAction->setObjectName(QStringLiteral("addBallAction"));
     m_addBallAction->setShortcuts({QKeySequence(Qt::Key_Insert), QKeySequence(Qt::Key_B)});
     m_addBallAction->setToolTip(tr("Add a ball in the middle of the box (B). Right-click the stage to add one "
