@@ -27,6 +27,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTest>
@@ -209,15 +210,18 @@ void GuiEditingTest::addDragArrowDeleteAndUndo()
     const sim::BallState aimed = w.balls();
 
     // Delete it with the key.
+    QSignalSpy recount(canvas->editor(), &SettingsEditor::ballCountChanged);
     canvas->setFocus();
     QTest::keyClick(canvas, Qt::Key_Delete);
     QCOMPARE(w.balls().size(), 2);
     QVERIFY(sameBalls(w.balls(), start));
+    QCOMPARE(recount.count(), 1); // the paths kept by index start over
 
     // Four steps, each undone bit for bit, then redone.
     QCOMPARE(w.undo()->count(), 4);
     w.undo()->undo();
     QVERIFY(sameBalls(w.balls(), aimed));
+    QCOMPARE(recount.count(), 2); // its undo too
     w.undo()->undo();
     QCOMPARE(sim::Vec2(w.balls().position.col(2)), dropped);
     QCOMPARE(w.balls().velocity(0, 2), 0.0);

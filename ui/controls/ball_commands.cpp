@@ -68,6 +68,8 @@ void BallCommand::insert()
     if (m_index <= balls.size())
         balls.insert(m_index, m_after);
     m_controller->notifyBallsChanged();
+    if (m_countChanged)
+        m_countChanged();
 }
 
 void BallCommand::remove()
@@ -76,6 +78,8 @@ void BallCommand::remove()
     if (m_index < balls.size())
         balls.remove(m_index);
     m_controller->notifyBallsChanged();
+    if (m_countChanged)
+        m_countChanged();
 }
 
 void BallCommand::undo()
@@ -107,6 +111,8 @@ void BallCommand::undoEdit()
         if (m_index <= balls.size())
             balls.insert(m_index, m_before);
         m_controller->notifyBallsChanged();
+        if (m_countChanged)
+            m_countChanged();
         break;
     }
     }

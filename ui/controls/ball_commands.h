@@ -12,6 +12,8 @@
 
 #include <QUndoCommand>
 
+#include <functional>
+
 namespace forcelab {
 
 class SimulationController;
@@ -49,6 +51,10 @@ public:
     int id() const override { return m_kind == Kind::Change ? m_mergeId : -1; }
     bool mergeWith(const QUndoCommand* other) override;
 
+    /// Called after every insertion or removal (redo, undo): the indices
+    /// after it moved, so views kept by index start over.
+    void onCountChanged(std::function<void()> callback) { m_countChanged = std::move(callback); }
+
     Kind kind() const { return m_kind; }
     int index() const { return m_index; }
 
@@ -67,6 +73,7 @@ private:
     unsigned m_fields;
     int m_mergeId;
     int m_session;
+    std::function<void()> m_countChanged;
     int m_undoCut = -1; // the timeline's cut holding the future this edit replaced (undo brings it back)
     int m_redoCut = -1; // the cut holding the edited future, after an undo
 };

@@ -136,9 +136,8 @@ bool BallTableModel::setData(const QModelIndex& index, const QVariant& value, in
     bool ok = false;
     const double v = value.toDouble(&ok);
     if (!ok || !std::isfinite(v)) {
-        emit m_editor->ballEditNote(tr("%1: \"%2\" is not a number").arg(headerData(index.column(), Qt::Horizontal).toString(),
-                                                                    value.toString().left(40)),
-                                    true);
+        const QString column = headerData(index.column(), Qt::Horizontal).toString();
+        emit m_editor->ballEditNote(tr("%1: \"%2\" is not a number").arg(column, value.toString().left(40)), true);
         return false;
     }
     const QString what = headerData(index.column(), Qt::Horizontal).toString();

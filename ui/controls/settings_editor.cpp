@@ -101,7 +101,8 @@ bool SettingsEditor::editBall(const QString& text, int index, const sim::Ball& a
     if (checked->position != wanted.position)
         fields |= kBallPosition;
     m_undoStack->push(
-        new BallCommand(m_controller, BallCommand::Kind::Change, text, index, before, *checked, fields, merge.id, merge.session));
+        new BallCommand(m_controller, BallCommand::Kind::Change, text, index, before, *checked, fields, merge.id,
+                        merge.session));
     return true;
 }
 
@@ -109,7 +110,8 @@ int SettingsEditor::addBall(const QString& text, const sim::Ball& ball)
 {
     const int count = m_controller->world().balls().size();
     if (count >= sim::kMaxBalls) {
-        emit ballEditNote(tr("Not added: the world holds at most %1 balls").arg(QLocale().toString(sim::kMaxBalls)), true);
+        emit ballEditNote(tr("Not added: the world holds at most %1 balls").arg(QLocale().toString(sim::kMaxBalls)),
+                          true);
         return -1;
     }
     sim::Ball wanted = ball;
@@ -118,8 +120,10 @@ int SettingsEditor::addBall(const QString& text, const sim::Ball& ball)
     const std::optional<sim::Ball> checked = checkedBall(wanted, -1, true);
     if (!checked)
         return -1;
-    m_undoStack->push(new BallCommand(m_controller, BallCommand::Kind::Add, text, count, *checked, *checked, kBallAllFields));
-    emit ballCountChanged();
+    auto* command =
+        new BallCommand(m_controller, BallCommand::Kind::Add, text, count, *checked, *checked, kBallAllFields);
+    command->onCountChanged([this] { emit ballCountChanged(); });
+    m_undoStack->push(command);
     return count;
 }
 
@@ -129,9 +133,10 @@ bool SettingsEditor::removeBall(int index)
     if (index < 0 || index >= balls.size())
         return false;
     const sim::Ball ball = balls.ball(index);
-    m_undoStack->push(new BallCommand(m_controller, BallCommand::Kind::Remove, tr("Delete ball %1").arg(index), index,
-                                      ball, ball, kBallAllFields));
-    emit ballCountChanged();
+    auto* command = new BallCommand(m_controller, BallCommand::Kind::Remove, tr("Delete ball %1").arg(index), index,
+                                    ball, ball, kBallAllFields);
+    command->onCountChanged([this] { emit ballCountChanged(); });
+    m_undoStack->push(command);
     return true;
 }
 

@@ -65,7 +65,8 @@ signals:
     /// What a ball edit did that its maker did not ask for, or why it was
     /// refused: one sentence for the pointer or the status bar.
     void ballEditNote(const QString& message, bool refused);
-    /// Balls were added or removed (indices after them moved).
+    /// Balls were added or removed, by an edit or its undo or redo (the
+    /// indices after them moved).
     void ballCountChanged();
 
 private:
