@@ -17,6 +17,7 @@
 #include <QStandardPaths>
 #include <QStyle>
 #include <QStyleOptionSlider>
+#include <QMenu>
 #include <QTest>
 #include <QUndoStack>
 #include <QToolButton>
@@ -322,6 +323,11 @@ void GuiRewindTest::stepBackActionOfTheWindow()
     auto* back = window.findChild<QAction*>(QStringLiteral("stepBackAction"));
     QVERIFY(step && back);
     QVERIFY(back->shortcuts().contains(QKeySequence(Qt::Key_Left)));
+    // In the Simulation menu, right after Step.
+    auto* menu = window.findChild<QMenu*>(QStringLiteral("simulationMenu"));
+    QVERIFY(menu);
+    const QList<QAction*> items = menu->actions();
+    QCOMPARE(items.indexOf(back), items.indexOf(step) + 1);
     // The Step action, with the pointer moves of the reference.
     const auto stepTo = [&](std::int64_t to) {
         while (c->world().stepCount() < to) {

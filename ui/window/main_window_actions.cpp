@@ -91,6 +91,8 @@ void MainWindow::createTimeActions()
     m_stepBackAction->setStatusTip(tr("Pause and go back by one time step dt, to the world as it was (← or ,)"));
     connect(m_stepBackAction, &QAction::triggered, m_controller, &SimulationController::stepBack);
     addAction(m_stepBackAction);
+    if (auto* simulation = menuBar()->findChild<QMenu*>(QStringLiteral("simulationMenu")))
+        simulation->insertAction(m_resetAction, m_stepBackAction); // after Step
     auto* timeBar = new QToolBar(tr("Timeline"), this);
     timeBar->setObjectName(QStringLiteral("timelineToolBar"));
     timeBar->addWidget(new TimelineBar(m_controller, timeBar));
@@ -318,6 +320,7 @@ void MainWindow::createMenus()
         edit->addAction(action);
 
     QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    simulation->setObjectName(QStringLiteral("simulationMenu"));
     simulation->addAction(m_playAction);
     simulation->addAction(m_stepAction);
     simulation->addAction(m_resetAction);
