@@ -61,39 +61,39 @@ void BallState::append(const Ball& b)
     set(n, b);
 }
 
+namespace {
+
+// Ball `from`'s every entry written over ball `to`'s (insert and remove shift
+// the balls after an index by one).
+void copyBall(BallState& s, int from, int to)
+{
+    s.position.col(to) = s.position.col(from);
+    s.velocity.col(to) = s.velocity.col(from);
+    s.home.col(to) = s.home.col(from);
+    s.radius[to] = s.radius[from];
+    s.mass[to] = s.mass[from];
+    s.inverseMass[to] = s.inverseMass[from];
+    s.charge[to] = s.charge[from];
+    s.color[static_cast<std::size_t>(to)] = s.color[static_cast<std::size_t>(from)];
+    s.colliding[static_cast<std::size_t>(to)] = s.colliding[static_cast<std::size_t>(from)];
+}
+
+} // namespace
+
 void BallState::insert(int i, const Ball& b)
 {
     const int n = size();
     resize(n + 1);
-    // Shift the tail up one column, last first, then write the new ball.
-    for (int k = n; k > i; --k) {
-        position.col(k) = position.col(k - 1);
-        velocity.col(k) = velocity.col(k - 1);
-        home.col(k) = home.col(k - 1);
-        radius[k] = radius[k - 1];
-        mass[k] = mass[k - 1];
-        inverseMass[k] = inverseMass[k - 1];
-        charge[k] = charge[k - 1];
-        color[static_cast<std::size_t>(k)] = color[static_cast<std::size_t>(k - 1)];
-        colliding[static_cast<std::size_t>(k)] = colliding[static_cast<std::size_t>(k - 1)];
-    }
+    for (int k = n; k > i; --k) // the tail up one, last first
+        copyBall(*this, k - 1, k);
     set(i, b);
 }
 
 void BallState::remove(int i)
 {
     const int n = size();
-    for (int k = i; k + 1 < n; ++k) {
-        position.col(k) = position.col(k + 1);
-        velocity.col(k) = velocity.col(k + 1);
-        home.col(k) = home.col(k + 1);
-        radius[k] = radius[k + 1];
-        mass[k] = mass[k + 1];
-        inverseMass[k] = inverseMass[k + 1];
-        charge[k] = charge[k + 1];
-        color[static_cast<std::size_t>(k)] = color[static_cast<std::size_t>(k + 1)];
-        colliding[static_cast<std::size_t>(k)] = colliding[static_cast<std::size_t>(k + 1)];
-    }
+    for (int k = i; k + 1 < n; ++k)
+        copyBall(*this, k + 1, k);
     resize(n - 1);
 }
 

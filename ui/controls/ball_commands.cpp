@@ -62,11 +62,11 @@ void BallCommand::change(const sim::Ball& to)
     m_controller->notifyBallsChanged();
 }
 
-void BallCommand::insert()
+void BallCommand::insert(const sim::Ball& ball)
 {
     sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
     if (m_index <= balls.size())
-        balls.insert(m_index, m_after);
+        balls.insert(m_index, ball);
     m_controller->notifyBallsChanged();
     if (m_countChanged)
         m_countChanged();
@@ -106,15 +106,9 @@ void BallCommand::undoEdit()
     case Kind::Add:
         remove();
         break;
-    case Kind::Remove: {
-        sim::BallState& balls = m_controller->mutableWorld().mutableBalls();
-        if (m_index <= balls.size())
-            balls.insert(m_index, m_before);
-        m_controller->notifyBallsChanged();
-        if (m_countChanged)
-            m_countChanged();
+    case Kind::Remove:
+        insert(m_before);
         break;
-    }
     }
 }
 
@@ -125,7 +119,7 @@ void BallCommand::redoEdit()
         change(m_after);
         break;
     case Kind::Add:
-        insert();
+        insert(m_after);
         break;
     case Kind::Remove:
         remove();

@@ -62,7 +62,7 @@ private:
     void undoEdit();
     void redoEdit();
     void change(const sim::Ball& to);
-    void insert();
+    void insert(const sim::Ball& ball);
     void remove();
 
     SimulationController* m_controller; // not owned
