@@ -30,6 +30,9 @@ struct Options {
     QCommandLineOption benchRender;
     QCommandLineOption select;
     QCommandLineOption ballTable;
+    QCommandLineOption zoom;
+    QCommandLineOption follow;
+    QCommandLineOption fitBalls;
 };
 
 Options declareOptions(QCommandLineParser& parser)
@@ -62,8 +65,16 @@ Options declareOptions(QCommandLineParser& parser)
     const QCommandLineOption ballTable(QStringLiteral("ball-table"),
                                        QStringLiteral("Show the table of the balls (the Balls dock, or under the box "
                                                       "with --present), with the selected ball."));
-    parser.addOptions({screenshot, after, time, size, present, select, ballTable, benchRender});
-    return {help, version, screenshot, after, time, size, present, benchRender, select, ballTable};
+    const QCommandLineOption zoom(QStringLiteral("zoom"),
+                                  QStringLiteral("Zoom in Z times on the selected ball (or the box's middle)."),
+                                  QStringLiteral("Z"));
+    const QCommandLineOption follow(QStringLiteral("follow"),
+                                    QStringLiteral("Follow the selected ball (with --select)."));
+    const QCommandLineOption fitBalls(QStringLiteral("fit-balls"),
+                                      QStringLiteral("Zoom so every ball is seen (with --time: where they are then)."));
+    parser.addOptions({screenshot, after, time, size, present, select, ballTable, zoom, follow, fitBalls, benchRender});
+    return {help, version, screenshot, after, time, size, present, benchRender, select, ballTable, zoom, follow,
+            fitBalls};
 }
 
 // Reads the arguments before any window system is needed: --help and
@@ -165,6 +176,37 @@ bool scheduleScreenshot(forcelab::MainWindow& window, const QCommandLineParser& 
     return true;
 }
 
+// --zoom, --follow and --fit-balls, on the balls where they are now (after
+// --time's steps). False when --zoom is not a zoom in range.
+bool setCamera(forcelab::MainWindow& window, const QCommandLineParser& parser, const Options& o)
+{
+    forcelab::Canvas* canvas = window.canvas();
+    if (parser.isSet(o.zoom)) {
+        bool ok = false;
+        const double zoom = parser.value(o.zoom).toDouble(&ok);
+        if (!ok || !(zoom >= forcelab::Camera::kMinZoom && zoom <= forcelab::Camera::kMaxZoom)) {
+            std::fprintf(stderr, "forcelab: --zoom: \"%s\" is not a zoom from %g to %g\n",
+                         qPrintable(parser.value(o.zoom)), forcelab::Camera::kMinZoom, forcelab::Camera::kMaxZoom);
+            return false;
+        }
+        forcelab::Camera camera;
+        camera.zoom = zoom;
+        const int ball = canvas->selectedBall();
+        if (ball >= 0)
+            camera.centre = forcelab::sim::Vec2(window.controller()->world().balls().position.col(ball));
+        canvas->setCamera(camera);
+    }
+    // Fitting needs the canvas's size: once the window has laid itself out.
+    const bool fit = parser.isSet(o.fitBalls), follow = parser.isSet(o.follow);
+    QTimer::singleShot(0, canvas, [canvas, fit, follow] {
+        if (fit)
+            canvas->fitAllBalls();
+        if (follow)
+            canvas->setFollowing(true);
+    });
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -224,6 +266,8 @@ int main(int argc, char* argv[])
         window.editBall(window.canvas()->selectedBall());
 
     if (parser.isSet(o.screenshot) && !scheduleScreenshot(window, parser, o))
+        return 2;
+    if (!setCamera(window, parser, o))
         return 2;
     return QApplication::exec();
 }

@@ -175,7 +175,7 @@ void Canvas::setBoxMargin(double pixels)
 
 ViewTransform Canvas::viewTransform() const
 {
-    return WorldPainter::view(m_controller->world(), liveArea(), m_options);
+    return WorldPainter::view(m_controller->world(), liveArea(), frameOptions());
 }
 
 QPointF Canvas::worldToWidget(const sim::Vec2& world) const
@@ -271,17 +271,19 @@ void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std:
                        qreal dpr) const
 {
     const std::vector<SimulationController::Pane>& runs = m_controller->comparePanes();
+    const PaintOptions options = frameOptions();
     if (runs.empty()) {
-        live.paint(p, area, m_controller->world(), m_options, dpr);
+        live.paint(p, area, m_controller->world(), options, dpr);
         return;
     }
     const QList<QRectF> areas = paneAreas(area);
     const double label = paneLabelHeight();
     p.fillRect(area, QColor::fromRgb(m_colors.letterbox));
-    live.paint(p, areas[0].adjusted(0, label, 0, 0), m_controller->world(), m_options, dpr);
-    // The panes show the balls, the box and the paths; the panels (readout,
-    // totals, momenta) and the selection belong to the live run.
-    PaintOptions own = m_options;
+    live.paint(p, areas[0].adjusted(0, label, 0, 0), m_controller->world(), options, dpr);
+    // The panes show the balls, the box and the paths through the same
+    // camera; the panels (readout, totals, momenta) and the selection belong
+    // to the live run.
+    PaintOptions own = options;
     own.overlays.readout = own.overlays.totals = own.overlays.momenta = own.overlays.forceSources = false;
     own.overlays.impact = false;
     own.selected = -1;
@@ -367,6 +369,8 @@ void Canvas::paintEvent(QPaintEvent*)
     timer.start();
     QPainter painter(this);
     m_options.positions = m_controller->interpolatedPositions();
+    if (m_following) // the view stays where the ball was when following stops
+        m_options.camera = shownCamera();
     paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
     if (m_ruler.shown)
         paintRuler(painter);
@@ -378,6 +382,11 @@ void Canvas::paintEvent(QPaintEvent*)
 
 void Canvas::mouseMoveEvent(QMouseEvent* event)
 {
+    if (m_panning) {
+        panBy(event->position() - m_panFrom);
+        m_panFrom = event->position();
+        return;
+    }
     if (m_measuring) {
         m_ruler.to = widgetToWorld(event->position());
         update();
@@ -415,6 +424,13 @@ void Canvas::mousePressEvent(QMouseEvent* event)
         m_ruler.shown = false; // a plain click puts the ruler away
         update();
     }
+    if (startsPan(*event)) { // moving the view never touches the physics
+        m_panning = true;
+        m_panFrom = event->position();
+        setCursor(Qt::ClosedHandCursor);
+        sendPointer(event->position(), false, false);
+        return;
+    }
     if (event->button() == Qt::LeftButton) {
         const int ball = ballAt(event->position());
         if (grabsArrow(event->position(), event->modifiers(), ball)) {
@@ -436,6 +452,13 @@ void Canvas::mousePressEvent(QMouseEvent* event)
 
 void Canvas::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_panning) {
+        if (!(event->buttons() & (Qt::LeftButton | Qt::MiddleButton))) {
+            m_panning = false;
+            unsetCursor();
+        }
+        return;
+    }
     if (m_measuring && event->button() == Qt::LeftButton) {
         m_ruler.to = widgetToWorld(event->position());
         m_measuring = false;

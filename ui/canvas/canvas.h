@@ -7,8 +7,13 @@
 // lesson has pointer forces), leaving stops both. Pressing on a ball selects
 // it and holds it: it follows the pointer (velocity 0) until release, then
 // flies off with the pointer's velocity over the last kThrowWindowMs.
+//
+// View: the wheel zooms about the pointer, a drag with the middle button or
+// with Ctrl held pans, and the camera can follow the selected ball
+// (canvas_camera.cpp).
 
 #include "ui/canvas/history_recorder.h"
+#include "ui/drawing/camera.h"
 #include "ui/drawing/trail_recorder.h"
 #include "ui/drawing/view_transform.h"
 #include "ui/drawing/world_painter.h"
@@ -106,6 +111,25 @@ public:
     /// The ball under a widget point (the topmost one drawn), or -1.
     int ballAt(const QPointF& widget) const;
 
+    /// The camera the canvas was given or moved to (zoom, centre).
+    const Camera& camera() const { return m_options.camera; }
+    /// The camera the view uses now: camera(), centred on the selected ball
+    /// while following it.
+    Camera shownCamera() const;
+    void setCamera(const Camera& camera);
+    /// Zooms by `factor` about a widget point, which keeps the world point
+    /// under it (about the middle while following a ball). The zoom stays in
+    /// [Camera::kMinZoom, Camera::kMaxZoom].
+    void zoomAbout(double factor, const QPointF& widget);
+    /// Moves the view by a widget distance (the world follows the pointer);
+    /// stops following.
+    void panBy(const QPointF& widgetDelta);
+    /// The camera that shows every ball (and at most Camera::kMaxZoom).
+    Camera allBallsCamera() const;
+    bool isFollowing() const { return m_following; }
+    /// One wheel notch (or a zoom key) zooms by this factor.
+    static constexpr double kZoomStep = 1.25;
+
     /// The ruler: Shift + drag on the canvas measures a distance in the
     /// world's px (and its angle); a plain click clears it.
     struct Ruler {
@@ -148,7 +172,8 @@ public:
     static constexpr double kVelocitySnap = 10.0;
 
     /// The right-click menu for a widget point: on a ball, edit, stop,
-    /// duplicate, copy and delete it; on empty space, add or paste a ball there.
+    /// duplicate, copy, delete and follow it; on empty space, add or paste a
+    /// ball there, zoom in there or out, fit the box or all balls.
     void fillContextMenu(QMenu& menu, const QPointF& at);
 
     /// The ball a new one copies its size from: the selected one, or a 15 px ball.
@@ -169,7 +194,17 @@ public slots:
     void pasteBallAt(const QPointF& widget);
     void pasteBall();
 
+    void zoomIn();  ///< by kZoomStep about the middle
+    void zoomOut();
+    /// The whole box, as large as it fits (the view a lesson opens with).
+    void fitBox();
+    void fitAllBalls();
+    /// Keeps the selected ball in the middle of the view while it moves.
+    void setFollowing(bool on);
+
 signals:
+    /// The camera moved or zoomed, or following started or stopped.
+    void cameraChanged();
     /// "Edit" of the right-click menu: show ball `index` in the ball table.
     void editBallRequested(int index);
     void selectedBallChanged(int index);
@@ -182,6 +217,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
     void contextMenuEvent(QContextMenuEvent* event) override;
 
 private:
@@ -231,6 +267,10 @@ private:
     void arrowTo(const QPointF& widget, Qt::KeyboardModifiers modifiers);
     void finishArrowDrag();
     void showNote(const QString& message, bool refused);
+    /// The options the frame is painted with: the shown camera and the slow-motion positions.
+    PaintOptions frameOptions() const;
+    /// A pan drag (the middle button, or Ctrl + the left button on no arrow tip).
+    bool startsPan(const QMouseEvent& event) const;
 
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
@@ -247,6 +287,9 @@ private:
     ArrowDrag m_arrow;
     SettingsEditor* m_editor = nullptr; // not owned
     QPointF m_lastPointer; // widget px, the last pointer position over the canvas (for notes)
+    bool m_following = false;   // the camera follows the selected ball
+    bool m_panning = false;     // a pan drag is under way
+    QPointF m_panFrom;          // widget px, the pointer at the last pan move
     qint64 m_frames = 0;
     double m_lastPaintMs = 0.0;
 };

@@ -244,11 +244,23 @@ void Canvas::fillContextMenu(QMenu& menu, const QPointF& at)
         menu.addAction(tr("Copy"), this, &Canvas::copySelectedBall);
         menu.addSeparator();
         menu.addAction(tr("Delete"), this, &Canvas::deleteSelectedBall)->setEnabled(editable);
+        menu.addSeparator();
+        QAction* follow = menu.addAction(tr("Follow it"), this, [this](bool on) { setFollowing(on); });
+        follow->setCheckable(true);
+        follow->setChecked(m_following);
     } else {
         menu.addAction(tr("Add a ball here"), this, [this, at] { addBallAt(at); })->setEnabled(editable);
         const bool pasteable = ballFromText(QApplication::clipboard()->text()).has_value();
         menu.addAction(tr("Paste the copied ball here"), this, [this, at] { pasteBallAt(at); })
             ->setEnabled(editable && pasteable);
+        // The view, for the stage view where there is no menu bar.
+        menu.addSeparator();
+        menu.addAction(tr("Zoom in here"), this, [this, at] { zoomAbout(kZoomStep, at); })
+            ->setEnabled(camera().zoom < Camera::kMaxZoom);
+        menu.addAction(tr("Zoom out"), this, [this, at] { zoomAbout(1.0 / kZoomStep, at); })
+            ->setEnabled(camera().zoom > Camera::kMinZoom);
+        menu.addAction(tr("Fit the box"), this, &Canvas::fitBox);
+        menu.addAction(tr("Fit all balls"), this, &Canvas::fitAllBalls);
     }
 }
 

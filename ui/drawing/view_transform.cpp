@@ -14,6 +14,19 @@ ViewTransform ViewTransform::fit(const sim::BoxSettings& box, const QRectF& area
         t.m_scale = std::min(w / box.width, h / box.height);
     const QPointF centre = area.center();
     t.m_offset = centre - QPointF(0.5 * box.width * t.m_scale, 0.5 * box.height * t.m_scale);
+    t.m_area = area;
+    return t;
+}
+
+ViewTransform ViewTransform::fit(const sim::BoxSettings& box, const QRectF& area, double margin, const Camera& camera)
+{
+    ViewTransform t = fit(box, area, margin);
+    if (camera.fitted())
+        return t;
+    t.m_scale *= camera.zoom;
+    const sim::Vec2 middle = camera.centre.value_or(sim::Vec2(0.5 * box.width, 0.5 * box.height));
+    t.m_offset = area.center() - QPointF(middle.x() * t.m_scale, middle.y() * t.m_scale);
+    t.m_moved = true;
     return t;
 }
 

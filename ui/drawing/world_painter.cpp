@@ -43,7 +43,8 @@ Overlays Overlays::fromNames(const QStringList& names)
 
 ViewTransform WorldPainter::view(const sim::World& world, const QRectF& area, const PaintOptions& options)
 {
-    return ViewTransform::fit(world.settings().box, layoutPanels(world, area, options).stage, options.margin);
+    return ViewTransform::fit(world.settings().box, layoutPanels(world, area, options).stage, options.margin,
+                              options.camera);
 }
 
 WorldPainter::Panels WorldPainter::panels(const sim::World& world, const QRectF& area, const PaintOptions& options)
@@ -57,13 +58,15 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
     // One layout for the frame: where the box goes and where its panels go.
     const PanelLayout layout = layoutPanels(world, area, options);
     m_frame = PaintedFrame();
-    const ViewTransform v = ViewTransform::fit(world.settings().box, layout.stage, options.margin);
+    const ViewTransform v = ViewTransform::fit(world.settings().box, layout.stage, options.margin, options.camera);
     PaintContext context{p,        area,    v,       world, options, layout.panels, dpr, m_sprites,
                          m_paths, m_frame, m_momentumScale};
     p.save();
     p.setClipRect(area);
     p.fillRect(area, QColor::fromRgb(colorsOf(options).letterbox));
-    p.fillRect(v.boxRect(), QColor::fromRgb(colorsOf(options).background));
+    // A zoomed or moved view keeps the world in the stage, out of the panels' strip.
+    const QRectF worldClip = v.moved() ? layout.stage : area;
+    p.fillRect(v.boxRect().intersected(worldClip), QColor::fromRgb(colorsOf(options).background));
     // The accelerations are worked out once, for the first overlay that needs them.
     std::optional<sim::Matrix2X> accelerations;
     for (const OverlayInfo& overlay : overlayTable()) {
@@ -74,6 +77,7 @@ void WorldPainter::paint(QPainter& p, const QRectF& area, const sim::World& worl
             accelerations = world.accelerations();
             context.accelerations = &*accelerations;
         }
+        p.setClipRect(overlay.panel ? area : worldClip);
         overlay.paint(context);
     }
     p.restore();
@@ -145,7 +149,7 @@ QColor WorldPainter::sourceColor(std::string_view name)
 
 QPointF WorldPainter::vaneCentre(const ViewTransform& view, int index, double lineScale)
 {
-    const QRectF box = view.boxRect();
+    const QRectF box = view.shownBox();
     const double r = vaneRadius(lineScale);
     // Far enough apart that the labels, which start at a vane's left edge,
     // do not run into the next vane's ("smoothed  -267 px/s²" is about

@@ -79,6 +79,7 @@ struct PaintOptions {
     double accelerationScale = 0.05; ///< s²: an acceleration arrow is a × this
     double lineScale = 1.0;         ///< thicker lines and larger text for a projector
     double margin = 10.0;           ///< px, free space around the box (the stage view uses less)
+    Camera camera;                  ///< zoom and centre of the view; the default shows the whole box
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
     bool autoArrows = false;        ///< scale the arrows so the median one is kArrowPixels long on screen
     double arrowFactor = 1.0;       ///< without autoArrows: the fixed scales are multiplied by this
@@ -140,6 +141,9 @@ struct PaintedFrame {
     QPointF momentumChainTip;         ///< widget px, the tip of the last ball's arrow in the chain
     double momentumScale = 0.0;       ///< widget px per mass·px/s in the inset
     bool pathLayerRebuilt = false;    ///< the path layer was drawn afresh this frame (not appended to)
+    double gridStep = 0.0;            ///< world px between the grid's labelled lines (0: no grid drawn)
+    double scaleBarLength = 0.0;      ///< world px the scale bar stands for (0: no bar drawn)
+    QLineF scaleBar;                  ///< widget px, the scale bar as drawn
 };
 
 class WorldPainter {
@@ -182,6 +186,17 @@ public:
     };
     static ArrowScales arrowScales(const sim::World& world, const ViewTransform& view, const PaintOptions& options,
                                    const sim::Matrix2X* accelerations);
+
+    /// The grid's labelled lines are the smallest round spacing (1, 2 or 5 ×
+    /// 10^k world px) at least this many widget px apart: 100 px apart in a
+    /// box drawn at 0.8 to 1.6 times its size.
+    static constexpr double kGridLabelPixels = 80.0;
+    /// World px between the grid's labelled lines at `scale` widget px per world px.
+    static double gridStep(double scale);
+    /// The scale bar, drawn when the view is zoomed or moved: the smallest
+    /// round length (world px) at least kScaleBarPixels widget px long.
+    static constexpr double kScaleBarPixels = 90.0;
+    static double scaleBarLength(double scale);
 
     /// Above this many balls, arrows are drawn for the selected ball only.
     static constexpr int kMaxArrowBalls = 2000;

@@ -108,6 +108,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
 
     createSimulationActions();
     createBallActions();
+    createCameraActions();
     createFileActions();
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
@@ -396,6 +397,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_stage->setOverlays(overlays);
     m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
     m_canvas->setSelectedBall(-1);
+    m_canvas->fitBox(); // a lesson opens on its whole box
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
     m_inspectorDock->setSelectedBall(-1);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));

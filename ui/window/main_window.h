@@ -130,6 +130,7 @@ private:
     /// Add, delete, duplicate, copy and paste a ball (the canvas does them).
     void createBallActions();
     void createTimeActions();
+    void createCameraActions();
     void createFileActions();
     void createMenus();
     void createToolBars();
@@ -180,6 +181,12 @@ private:
     QAction* m_copyBallAction = nullptr;
     QAction* m_pasteBallAction = nullptr;
     QAction* m_redoAction = nullptr;
+    // The view's zoom and follow (createCameraActions).
+    QAction* m_zoomInAction = nullptr;
+    QAction* m_zoomOutAction = nullptr;
+    QAction* m_fitBoxAction = nullptr;
+    QAction* m_fitBallsAction = nullptr;
+    QAction* m_followAction = nullptr;
     QAction* m_openAction = nullptr;
     QAction* m_saveAction = nullptr;
     QAction* m_screenshotAction = nullptr;

@@ -199,6 +199,55 @@ void MainWindow::createBallActions()
         addAction(action); // their keys work on the stage too, where the menus are hidden
 }
 
+void MainWindow::createCameraActions()
+{
+    m_zoomInAction = new QAction(tr("Zoom &In"), this);
+    m_zoomInAction->setObjectName(QStringLiteral("zoomInAction"));
+    m_zoomInAction->setShortcuts({QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Equal),
+                                  QKeySequence(Qt::CTRL | Qt::Key_Plus), QKeySequence(Qt::CTRL | Qt::Key_Equal)});
+    m_zoomInAction->setToolTip(tr("Zoom in on the middle (+); the mouse wheel zooms in on the pointer"));
+    connect(m_zoomInAction, &QAction::triggered, m_canvas, &Canvas::zoomIn);
+
+    m_zoomOutAction = new QAction(tr("Zoom &Out"), this);
+    m_zoomOutAction->setObjectName(QStringLiteral("zoomOutAction"));
+    m_zoomOutAction->setShortcuts({QKeySequence(Qt::Key_Minus), QKeySequence(Qt::CTRL | Qt::Key_Minus)});
+    m_zoomOutAction->setToolTip(tr("Zoom out (−), to see balls that left the box"));
+    connect(m_zoomOutAction, &QAction::triggered, m_canvas, &Canvas::zoomOut);
+
+    m_fitBoxAction = new QAction(tr("Fit the &Box"), this);
+    m_fitBoxAction->setObjectName(QStringLiteral("fitBoxAction"));
+    m_fitBoxAction->setShortcuts({QKeySequence(Qt::Key_0), QKeySequence(Qt::CTRL | Qt::Key_0)});
+    m_fitBoxAction->setToolTip(tr("Show the whole box, as large as it fits (0)"));
+    connect(m_fitBoxAction, &QAction::triggered, m_canvas, &Canvas::fitBox);
+
+    m_fitBallsAction = new QAction(tr("Fit &All Balls"), this);
+    m_fitBallsAction->setObjectName(QStringLiteral("fitBallsAction"));
+    m_fitBallsAction->setShortcut(QKeySequence(Qt::Key_A));
+    m_fitBallsAction->setToolTip(tr("Zoom so that every ball is seen, in the box or out of it (A)"));
+    connect(m_fitBallsAction, &QAction::triggered, m_canvas, &Canvas::fitAllBalls);
+
+    m_followAction = new QAction(tr("&Follow the Selected Ball"), this);
+    m_followAction->setObjectName(QStringLiteral("followAction"));
+    m_followAction->setCheckable(true);
+    m_followAction->setShortcut(QKeySequence(Qt::Key_F));
+    m_followAction->setToolTip(tr("Keep the selected ball in the middle of the view as it moves (F)"));
+    connect(m_followAction, &QAction::toggled, m_canvas, &Canvas::setFollowing);
+    connect(m_canvas, &Canvas::cameraChanged, this, [this] {
+        m_followAction->setChecked(m_canvas->isFollowing()); // a pan or a fit stops following
+        const double zoom = m_canvas->camera().zoom;
+        m_zoomInAction->setEnabled(zoom < Camera::kMaxZoom);
+        m_zoomOutAction->setEnabled(zoom > Camera::kMinZoom);
+    });
+
+    for (QAction* action : {m_zoomInAction, m_zoomOutAction, m_fitBoxAction, m_fitBallsAction, m_followAction})
+        addAction(action); // their keys work on the stage too, where the menus are hidden
+    // Following needs a ball to follow.
+    auto sync = [this] { m_followAction->setEnabled(m_canvas->selectedBall() >= 0 || m_canvas->isFollowing()); };
+    connect(m_canvas, &Canvas::selectedBallChanged, this, sync);
+    connect(m_canvas, &Canvas::cameraChanged, this, sync);
+    sync();
+}
+
 void MainWindow::createFileActions()
 {
     m_openAction = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Lesson…"), this);
@@ -339,6 +388,10 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
     m_viewMenu->addAction(m_themeAction);
+    m_viewMenu->addSeparator();
+    for (QAction* action : {m_zoomInAction, m_zoomOutAction, m_fitBoxAction, m_fitBallsAction, m_followAction})
+        m_viewMenu->addAction(action);
+    m_viewMenu->addSeparator();
     m_viewMenu->addMenu(m_overlayActions->menu());
     m_viewMenu->addSeparator();
 

@@ -18,7 +18,7 @@ void paintApexes(const PaintContext& c)
     const double k = c.options.lineScale;
     const double floor = c.world.settings().box.height;
     p.save();
-    p.setClipRect(view.boxRect(), Qt::IntersectClip);
+    p.setClipRect(view.worldClip(), Qt::IntersectClip);
     p.setRenderHint(QPainter::Antialiasing, true);
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::lround(11 * k)));

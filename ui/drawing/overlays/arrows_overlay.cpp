@@ -60,7 +60,7 @@ void paintArrows(const PaintContext& c)
     const double head = 9.0 * options.lineScale;
     const WorldPainter::ArrowScales scales = WorldPainter::arrowScales(c.world, view, options, accelerations);
     p.save();
-    p.setClipRect(view.boxRect(), Qt::IntersectClip); // arrows stay on the stage, out of the panels
+    p.setClipRect(view.worldClip(), Qt::IntersectClip); // arrows stay on the stage, out of the panels
     p.setRenderHint(QPainter::Antialiasing, true);
     if (options.overlays.velocity) {
         QList<QLineF> lines;

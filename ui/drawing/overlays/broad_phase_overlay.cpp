@@ -24,7 +24,7 @@ void paintCells(const PaintContext& c, const sim::BroadPhaseGeometry& geometry, 
     const ViewTransform& view = c.view;
     const sim::BallState& balls = c.world.balls();
     const int n = balls.size();
-    const QRectF box = view.boxRect();
+    const QRectF box = view.shownBox();
     const double s = view.scale();
     const double cell = geometry.cellSize, minX = geometry.originX, minY = geometry.originY;
     if (!(cell * s >= 4.0) || !std::isfinite(minX) || !std::isfinite(minY))
@@ -86,7 +86,7 @@ void paintRows(const PaintContext& c, const sim::BroadPhaseGeometry& geometry, c
     const ViewTransform& view = c.view;
     const sim::BallState& balls = c.world.balls();
     const int n = balls.size();
-    const QRectF box = view.boxRect();
+    const QRectF box = view.shownBox();
     const double s = view.scale();
     const double row = geometry.rowHeight;
     if (!(row * s >= 4.0))
@@ -124,7 +124,7 @@ void paintBroadPhase(const PaintContext& c)
         return;
     QPainter& p = c.painter;
     p.save();
-    p.setClipRect(c.view.boxRect(), Qt::IntersectClip);
+    p.setClipRect(c.view.worldClip(), Qt::IntersectClip);
     p.setRenderHint(QPainter::Antialiasing, false);
     const sim::BroadPhaseGeometry geometry = sim::broadPhaseGeometry(c.world);
     const QColor color = QColor::fromRgb(canvas_colors::kBroadPhase);

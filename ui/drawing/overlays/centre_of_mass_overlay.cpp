@@ -22,7 +22,7 @@ void paintCentreOfMass(const PaintContext& c)
     const sim::Vec2 centre = (drawnPositions(balls, options) * balls.mass.matrix()) / total;
     const double k = options.lineScale;
     p.save();
-    p.setClipRect(view.boxRect(), Qt::IntersectClip);
+    p.setClipRect(view.worldClip(), Qt::IntersectClip);
     p.setRenderHint(QPainter::Antialiasing, true);
     if (options.centreOfMassPath && options.centreOfMassPath->size() >= 2) {
         QPolygonF path;

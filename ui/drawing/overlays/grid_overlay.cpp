@@ -1,8 +1,10 @@
-// The grid overlay [grid]: faint lines every 50 px, stronger every 100 px,
-// labelled every 100 px, so the student reads positions off the picture in the
-// same units as the readout.
+// The grid overlay [grid]: faint lines and stronger, labelled ones at round
+// spacings in world px (1, 2 or 5 × 10^k, 100 px at the normal size), so the
+// student reads positions off the picture in the readout's units at any zoom.
 
 #include "overlay_table.h"
+
+#include "ui/drawing/round_steps.h"
 
 #include <QList>
 
@@ -10,43 +12,74 @@
 
 namespace forcelab {
 
+double WorldPainter::gridStep(double scale)
+{
+    return roundStep(kGridLabelPixels / scale);
+}
+
 namespace {
 
 void paintGrid(const PaintContext& c)
 {
     const ViewTransform& view = c.view;
-    if (!(view.toWidget(50.0) >= 8.0))
-        return; // lines closer than 8 px would only grey the box
+    if (!(view.scale() > 0.0))
+        return;
     QPainter& p = c.painter;
     const CanvasColors& colors = colorsOf(c.options);
-    const QRectF box = view.boxRect();
+    const QRectF shown = view.shownBox();
+    if (shown.isEmpty())
+        return;
     const sim::BoxSettings& size = c.world.settings().box;
-    QList<QLineF> minor, major;
-    for (int k = 1; 50.0 * k < size.width; ++k) {
-        const double x = box.left() + view.toWidget(50.0 * k);
-        (k % 2 ? minor : major).append(QLineF(x, box.top(), x, box.bottom()));
+    const double major = WorldPainter::gridStep(view.scale());
+    c.frame.gridStep = major;
+    const double minor = 0.5 * major;
+    // The lines strictly inside the box that are on screen, as multiples of the minor step.
+    const sim::Vec2 from = view.toWorld(shown.topLeft()), to = view.toWorld(shown.bottomRight());
+    auto range = [&](double low, double high, double length) {
+        const auto first = static_cast<long long>(std::max(1.0, std::ceil(low / minor)));
+        auto last = static_cast<long long>(std::floor(high / minor));
+        if (static_cast<double>(last) * minor >= length)
+            --last;
+        return std::pair(first, last);
+    };
+    const auto [firstX, lastX] = range(from.x(), to.x(), size.width);
+    const auto [firstY, lastY] = range(from.y(), to.y(), size.height);
+    QList<QLineF> minorLines, majorLines;
+    for (long long k = firstX; k <= lastX; ++k) {
+        const double x = view.toWidget(sim::Vec2(static_cast<double>(k) * minor, 0.0)).x();
+        (k % 2 ? minorLines : majorLines).append(QLineF(x, shown.top(), x, shown.bottom()));
     }
-    for (int k = 1; 50.0 * k < size.height; ++k) {
-        const double y = box.top() + view.toWidget(50.0 * k);
-        (k % 2 ? minor : major).append(QLineF(box.left(), y, box.right(), y));
+    for (long long k = firstY; k <= lastY; ++k) {
+        const double y = view.toWidget(sim::Vec2(0.0, static_cast<double>(k) * minor)).y();
+        (k % 2 ? minorLines : majorLines).append(QLineF(shown.left(), y, shown.right(), y));
     }
     p.setRenderHint(QPainter::Antialiasing, false);
     p.setPen(QPen(QColor::fromRgb(colors.gridMinor), 1.0));
-    p.drawLines(minor);
+    p.drawLines(minorLines);
     p.setPen(QPen(QColor::fromRgb(colors.gridMajor), 1.0));
-    p.drawLines(major);
+    p.drawLines(majorLines);
 
-    if (view.toWidget(100.0) >= 40.0) {
-        const double k = c.options.lineScale;
-        QFont font = p.font();
-        font.setPixelSize(static_cast<int>(std::lround(11 * k)));
-        p.setFont(font);
-        p.setPen(QColor::fromRgb(colors.gridText));
-        for (int i = 1; 100.0 * i < size.width; ++i)
-            p.drawText(QPointF(box.left() + view.toWidget(100.0 * i) + 3, box.top() + 13 * k),
-                       QString::number(100 * i));
-        for (int i = 1; 100.0 * i < size.height; ++i)
-            p.drawText(QPointF(box.left() + 4, box.top() + view.toWidget(100.0 * i) - 3), QString::number(100 * i));
+    // Labels on the major lines, along the top and the left of what is shown;
+    // the first one across the top says the unit.
+    const double k = c.options.lineScale;
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(11 * k)));
+    p.setFont(font);
+    p.setPen(QColor::fromRgb(colors.gridText));
+    const int decimals = roundStepDecimals(major);
+    bool unit = true;
+    for (long long i = (firstX + 1) / 2; 2 * i <= lastX; ++i) {
+        const double x = static_cast<double>(i) * major;
+        QString text = QString::number(x, 'f', decimals);
+        if (unit)
+            text += QStringLiteral(" px");
+        unit = false;
+        p.drawText(QPointF(view.toWidget(sim::Vec2(x, 0.0)).x() + 3, shown.top() + 13 * k), text);
+    }
+    for (long long i = (firstY + 1) / 2; 2 * i <= lastY; ++i) {
+        const double y = static_cast<double>(i) * major;
+        p.drawText(QPointF(shown.left() + 4, view.toWidget(sim::Vec2(0.0, y)).y() - 3),
+                   QString::number(y, 'f', decimals));
     }
 }
 

@@ -110,7 +110,8 @@ OverlayInfo momentaOverlay()
     // The layout gives the inset a place when the overlay is on and there are balls.
     return {.name = "momenta",
             .on = [](const PaintContext& c) { return !c.panels.momenta.isEmpty(); },
-            .paint = &paintMomenta};
+            .paint = &paintMomenta,
+            .panel = true};
 }
 
 } // namespace forcelab

@@ -38,6 +38,9 @@ struct OverlayInfo {
     void (*paint)(const PaintContext&);
     /// Whether it needs the balls' accelerations with these options (nullptr: never).
     bool (*needsAccelerations)(const PaintOptions&) = nullptr;
+    /// A panel beside the box (readout, totals, legends): drawn in its strip,
+    /// which a zoomed world never covers.
+    bool panel = false;
 };
 
 /// Where the balls are drawn: their positions, or the slow-motion

@@ -1,7 +1,7 @@
 // The table of overlays. The order is the drawing order: the grid and the
 // walls on the box, the broad phase, the paths and the marks under the balls,
 // the balls, then the ghost, the arrows and the impact over them, and last the
-// vanes and the panels beside the box.
+// vanes, the scale bar (when zoomed) and the panels beside the box.
 
 #include "overlay_table.h"
 
@@ -13,8 +13,8 @@ std::span<const OverlayInfo> overlayTable()
     static const OverlayInfo kTable[] = {
         gridOverlay(),   wallsOverlay(),  broadPhaseOverlay(), trailsOverlay(), centreOfMassOverlay(),
         apexesOverlay(), markersOverlay(), ballsOverlay(),     ghostOverlay(),  arrowsOverlay(),
-        impactOverlay(), vanesOverlay(),  totalsOverlay(),     readoutOverlay(), sourcesOverlay(),
-        momentaOverlay(),
+        impactOverlay(), vanesOverlay(),  scaleBarOverlay(),   totalsOverlay(),  readoutOverlay(),
+        sourcesOverlay(), momentaOverlay(),
     };
     return kTable;
 }

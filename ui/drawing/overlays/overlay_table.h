@@ -24,6 +24,7 @@ OverlayInfo ghostOverlay();
 OverlayInfo arrowsOverlay();
 OverlayInfo impactOverlay();
 OverlayInfo vanesOverlay();
+OverlayInfo scaleBarOverlay();
 OverlayInfo totalsOverlay();
 OverlayInfo readoutOverlay();
 OverlayInfo sourcesOverlay();

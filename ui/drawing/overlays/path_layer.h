@@ -7,6 +7,7 @@
 #include "sim/world/types.h"
 
 #include <QImage>
+#include <QPointF>
 #include <QRectF>
 #include <QtGlobal>
 
@@ -21,6 +22,7 @@ struct PathLayer {
     qint64 drawnTo = -1; ///< last record drawn
     QRectF box;          ///< widget px the layer covers
     double scale = 0.0;
+    QPointF origin;      ///< widget px of the world origin (a pan or a followed ball moves it)
     qreal dpr = 0.0;
     double lineScale = 0.0;
     std::vector<int> balls;

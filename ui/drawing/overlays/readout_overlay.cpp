@@ -34,7 +34,8 @@ OverlayInfo readoutOverlay()
     return {.name = "readout",
             .on = [](const PaintContext& c) { return c.options.overlays.readout; },
             .paint = &paintReadout,
-            .needsAccelerations = [](const PaintOptions&) { return true; }};
+            .needsAccelerations = [](const PaintOptions&) { return true; },
+            .panel = true};
 }
 
 } // namespace forcelab

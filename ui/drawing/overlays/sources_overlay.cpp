@@ -30,7 +30,8 @@ OverlayInfo sourcesOverlay()
     // The layout gives the legend a place when the overlay is on and there are balls.
     return {.name = "sources",
             .on = [](const PaintContext& c) { return !c.panels.sources.isEmpty(); },
-            .paint = &paintSourceLegend};
+            .paint = &paintSourceLegend,
+            .panel = true};
 }
 
 } // namespace forcelab

@@ -23,7 +23,8 @@ OverlayInfo totalsOverlay()
 {
     return {.name = "totals",
             .on = [](const PaintContext& c) { return c.options.overlays.totals; },
-            .paint = &paintTotals};
+            .paint = &paintTotals,
+            .panel = true};
 }
 
 } // namespace forcelab

@@ -40,7 +40,8 @@ void paintTrails(const PaintContext& c)
         colors.push_back(qRgb(pale(qRed(color)), pale(qGreen(color)), pale(qBlue(color))) & 0xffffffu);
     }
     const double width = (ownColours ? 2.0 : 1.5) * options.lineScale;
-    const QRectF box = view.boxRect();
+    // The box, or the whole stage when zoomed or moved (paths out of the box show then).
+    const QRectF box = view.worldClip();
     // Records from..to as line segments, each ball in its colour.
     auto drawSegments = [&](QPainter& q, qint64 from, qint64 to) {
         q.setRenderHint(QPainter::Antialiasing, true);
@@ -74,14 +75,14 @@ void paintTrails(const PaintContext& c)
         p.restore();
         return;
     }
-    // The layer covers the box on whole pixels, so a segment lands on the
+    // The layer covers the box (or the stage) on whole pixels, so a segment lands on the
     // same pixels as when it is drawn straight onto the picture. Only the
     // segments recorded since the last frame are drawn into it.
     const QRectF cover = QRectF(box.toAlignedRect());
     const qreal dpr = c.dpr;
     PathLayer& layer = c.paths;
     const bool same = layer.generation == trails.generation() && layer.start == start && layer.box == cover &&
-                      layer.scale == view.scale() && layer.dpr == dpr && layer.lineScale == options.lineScale &&
+                      layer.scale == view.scale() && layer.origin == view.origin() && layer.dpr == dpr && layer.lineScale == options.lineScale &&
                       layer.balls == tracked && layer.colors == colors && layer.drawnTo >= start &&
                       layer.drawnTo <= newest && !layer.image.isNull();
     if (!same) {
@@ -96,6 +97,7 @@ void paintTrails(const PaintContext& c)
         layer.drawnTo = start;
         layer.box = cover;
         layer.scale = view.scale();
+        layer.origin = view.origin();
         layer.dpr = dpr;
         layer.lineScale = options.lineScale;
         layer.balls = tracked;
