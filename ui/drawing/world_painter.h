@@ -198,6 +198,10 @@ public:
     static constexpr double kScaleBarPixels = 90.0;
     static double scaleBarLength(double scale);
 
+    /// In a zoomed or moved view, a ball drawn with at least this radius (px,
+    /// times the line scale) gets a cross on its centre.
+    static constexpr double kCentreMarkRadius = 30.0;
+
     /// Above this many balls, arrows are drawn for the selected ball only.
     static constexpr int kMaxArrowBalls = 2000;
     /// Above this many balls, the broad-phase view shows the cells or rows but not each ball's share.

@@ -1,7 +1,8 @@
 // The balls, always drawn: each as its cached sprite (or one antialiased
 // ellipse), balls touching another in the marked colour when [colliding] is on
 // or the collision response is "flag", the theme's outlines and rings, and a
-// dotted ring round the ball the readout or the selection talks about.
+// dotted ring round the ball the readout or the selection talks about; when
+// zoomed, a cross on the centre of each large ball.
 
 #include "overlay_table.h"
 
@@ -93,6 +94,39 @@ void paintOutlines(const PaintContext& c, bool mark)
     }
 }
 
+// Zoomed in, a ball can fill the screen and hide where its centre is (lesson
+// 19's Earth wobbles 2.4 px): a cross marks the centre of each ball drawn
+// larger than kCentreMarkRadius.
+void paintCentreMarks(const PaintContext& c)
+{
+    const sim::BallState& balls = c.world.balls();
+    const int n = balls.size();
+    if (!c.view.moved() || n > WorldPainter::kMaxArrowBalls)
+        return;
+    QPainter& p = c.painter;
+    const double k = c.options.lineScale;
+    const double arm = 7.0 * k;
+    const sim::Matrix2X& at = drawnPositions(balls, c.options);
+    QList<QLineF> lines;
+    for (int i = 0; i < n; ++i) {
+        if (!(c.view.toWidget(balls.radius[i]) >= WorldPainter::kCentreMarkRadius * k))
+            continue;
+        const QPointF centre = c.view.toWidget(sim::Vec2(at.col(i)));
+        if (!c.area.adjusted(-arm, -arm, arm, arm).contains(centre))
+            continue;
+        lines << QLineF(centre - QPointF(arm, 0), centre + QPointF(arm, 0))
+              << QLineF(centre - QPointF(0, arm), centre + QPointF(0, arm));
+    }
+    if (lines.isEmpty())
+        return;
+    // A white halo under a dark cross: seen on any ball colour.
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(255, 255, 255, 220), 4.0 * k, Qt::SolidLine, Qt::RoundCap));
+    p.drawLines(lines);
+    p.setPen(QPen(QColor::fromRgb(canvas_colors::kSelection), 2.0 * k, Qt::SolidLine, Qt::RoundCap));
+    p.drawLines(lines);
+}
+
 void paintBalls(const PaintContext& c)
 {
     const sim::BallState& balls = c.world.balls();
@@ -105,6 +139,7 @@ void paintBalls(const PaintContext& c)
     QPainter& p = c.painter;
     p.setRenderHint(QPainter::Antialiasing, true);
     paintOutlines(c, mark);
+    paintCentreMarks(c);
     // The ball the readout or the selection talks about gets a ring.
     int ringed = c.options.selected;
     if (ringed < 0 && c.options.overlays.readout && n > 0)
