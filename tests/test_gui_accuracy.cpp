@@ -210,6 +210,18 @@ void GuiAccuracyTest::ghostFollowsTheScene()
     QVERIFY(c->ghost());
     QCOMPARE(c->ghost()->time(), 0.0);
     QCOMPARE(c->ghostSeparation(), 0.0);
+
+    // A ball added by hand: the ghost starts again from the edited balls, so
+    // every ball has its ghost and the separation is a number, not ∞.
+    runFor(c, 1.0);
+    QVERIFY(c->ghostSeparation() > 0.0);
+    window.canvas()->addBall();
+    QCOMPARE(c->world().balls().size(), 3);
+    QCOMPARE(c->ghost()->balls().size(), 3);
+    QCOMPARE(c->ghostSeparation(), 0.0);
+    runFor(c, 1.0);
+    const double afterAdd = c->ghostSeparation();
+    QVERIFY2(std::isfinite(afterAdd) && afterAdd > 0.0, qPrintable(QString::number(afterAdd)));
     mode->setCurrentIndex(0);
     QVERIFY(!c->ghost());
 }

@@ -358,6 +358,14 @@ void GuiOverlaysTest::comparePanesRunTheirOwnWallModels()
         for (qsizetype b = a + 1; b < areas.size(); ++b)
             QVERIFY(!areas[a].intersects(areas[b]));
     QVERIFY(areas[0].contains(window.canvas()->viewTransform().boxRect()));
+    // A ball added by hand is added to every pane: they start again from the edited balls.
+    const int before = window.controller()->world().balls().size();
+    window.canvas()->addBall();
+    QCOMPARE(window.controller()->world().balls().size(), before + 1);
+    for (const auto& pane : panes) {
+        QCOMPARE(pane.world->balls().size(), before + 1);
+        QVERIFY(pane.world->balls().position == window.controller()->world().balls().position);
+    }
     // The next lesson has no panes.
     QVERIFY(window.openLesson(QStringLiteral("random-acceleration")));
     QVERIFY(window.controller()->comparePanes().empty());

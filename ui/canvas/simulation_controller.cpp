@@ -64,6 +64,10 @@ void SimulationController::notifyBallsChanged()
     m_previous.resize(2, 0); // moved by hand: nothing to blend with
     m_timeline.edited(m_world);
     noteRecorded();
+    // The ghost and the panes compare ways of running this world: they start
+    // again from the edited balls (an added ball has no ghost to be compared with).
+    restartGhost();
+    restartPanes();
     emit stepped();
     emit timelineChanged();
 }

@@ -32,7 +32,8 @@ public:
     /// nothing; call notifyBallsChanged() after editing.
     sim::World& mutableWorld() { return m_world; }
     /// After balls were moved by hand: the timeline takes a checkpoint (and
-    /// cuts the future when the world was behind its latest step).
+    /// cuts the future when the world was behind its latest step), and the
+    /// ghost and the compare panes start again from the edited balls.
     void notifyBallsChanged();
 
     /// The live world's past (sim/world/timeline.h): every step the
