@@ -257,8 +257,8 @@ void GuiRewindTest::undoOfASettingsEditBringsTheFutureBack()
 }
 
 // The canvas holds a dragged ball after every frame of a playing world
-// without telling the controller (Canvas::onStepped): the record must still
-// re-run to what was shown.
+// (Canvas::onStepped) with no undo step, only noteHandMoved: the record must
+// still re-run to what was shown.
 void GuiRewindTest::aBallHeldWhilePlayingIsReplayed()
 {
     SimulationController c;
@@ -270,6 +270,7 @@ void GuiRewindTest::aBallHeldWhilePlayingIsReplayed()
         sim::BallState& balls = c.mutableWorld().mutableBalls();
         balls.position.col(1) = sim::Vec2(300.0 + 5.0 * k, 200.0);
         balls.velocity.col(1).setZero();
+        c.noteHandMoved();
         shown.push_back(snap(c.world()));
     }
     stepLive(c, 40);

@@ -543,6 +543,7 @@ void Canvas::holdDraggedBall()
         return;
     balls.position.col(m_drag.ball) = m_drag.target;
     balls.velocity.col(m_drag.ball).setZero();
+    m_controller->noteHandMoved();
 }
 
 void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)

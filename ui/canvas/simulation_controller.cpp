@@ -18,6 +18,7 @@ SimulationController::SimulationController(QObject* parent)
     connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
     m_clock.start();
     m_timeline.start(m_world);
+    m_handMoved = false;
 }
 
 std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
@@ -63,7 +64,7 @@ void SimulationController::notifyBallsChanged()
 {
     m_previous.resize(2, 0); // moved by hand: nothing to blend with
     m_timeline.edited(m_world);
-    noteRecorded();
+    m_handMoved = false;
     // The ghost and the panes compare ways of running this world: they start
     // again from the edited balls (an added ball has no ghost to be compared with).
     restartGhost();
@@ -76,10 +77,16 @@ void SimulationController::notifyBallsChanged()
 // latest, else a new one, recorded.
 void SimulationController::stepWorld()
 {
+    // A ball held by the hand between steps is an edit all the same (and
+    // one made in the past starts a new future), or the record would not
+    // re-run to what was shown.
+    if (m_handMoved) {
+        m_timeline.edited(m_world);
+        m_handMoved = false;
+    }
     if (m_world.stepCount() < m_timeline.latestStep()) {
         m_timeline.replayStep(m_world);
-        noteRecorded();
-        if (m_ghost)
+            if (m_ghost)
             m_ghost->setPointer(m_world.pointer());
         return;
     }
@@ -89,24 +96,8 @@ void SimulationController::stepWorld()
             m_ghost->setPointer(*m_pendingPointer);
         m_pendingPointer.reset();
     }
-    // A ball held by the hand while playing is moved between steps without
-    // notifyBallsChanged: an edit all the same, or the record would not re-run.
-    const sim::BallState& balls = m_world.balls();
-    if (m_recordedSteps == m_world.stepCount() &&
-        (balls.position.cols() != m_recordedPosition.cols() || balls.position != m_recordedPosition ||
-         balls.velocity != m_recordedVelocity))
-        m_timeline.edited(m_world);
     m_world.step();
     m_timeline.afterStep(m_world);
-    noteRecorded();
-}
-
-// The balls as the timeline knows them now: a later difference is an edit.
-void SimulationController::noteRecorded()
-{
-    m_recordedPosition = m_world.balls().position;
-    m_recordedVelocity = m_world.balls().velocity;
-    m_recordedSteps = m_world.stepCount();
 }
 
 bool SimulationController::stepBack()
@@ -143,9 +134,9 @@ void SimulationController::afterSeek(bool accounting)
 {
     if (m_world.accounting() != accounting)
         m_world.setAccounting(accounting);
-    noteRecorded();
     m_accumulator = 0.0;
     m_previous.resize(2, 0);
+    m_handMoved = false; // the world is a recorded one again
     restartGhost();
     restartPanes();
     emit seeked();
@@ -293,7 +284,7 @@ bool SimulationController::respawn(const sim::SpawnSettings& spawn)
     m_accumulator = 0.0;
     m_clock.restart();
     m_timeline.edited(m_world); // back at step 0: the run so far is a cut an undo can bring back
-    noteRecorded();
+    m_handMoved = false;
     restartGhost();
     restartPanes();
     emit sceneChanged();
@@ -322,7 +313,7 @@ void SimulationController::startedScene()
     m_droppedTime = 0.0;
     m_clock.restart();
     m_timeline.start(m_world);
-    noteRecorded();
+    m_handMoved = false;
     m_pendingPointer.reset();
     restartGhost();
     restartPanes();

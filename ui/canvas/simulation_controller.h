@@ -35,6 +35,11 @@ public:
     /// cuts the future when the world was behind its latest step), and the
     /// ghost and the compare panes start again from the edited balls.
     void notifyBallsChanged();
+    /// A ball held by the hand was put back between the steps of a playing
+    /// world (Canvas keeps a dragged ball under the pointer): no undo step
+    /// and no signal, but the next step records the balls as an edit, so
+    /// going back re-runs what was shown.
+    void noteHandMoved() { m_handMoved = true; }
 
     /// The live world's past (sim/world/timeline.h): every step the
     /// controller takes is recorded; setSettings, notifyBallsChanged and
@@ -181,7 +186,6 @@ private:
     void tick();
     void stepWorld();
     void afterSeek(bool accounting);
-    void noteRecorded();
     void updateTimer();
     void checkHalted();
     void restartGhost();
@@ -192,9 +196,7 @@ private:
     sim::World m_world;
     sim::Timeline m_timeline;
     std::optional<sim::PointerInput> m_pendingPointer; // the live pointer, held while re-running the record
-    sim::Matrix2X m_recordedPosition; // px, the balls as the last recorded step left them
-    sim::Matrix2X m_recordedVelocity; // px/s
-    std::int64_t m_recordedSteps = -1; // step count of that record (-1: none)
+    bool m_handMoved = false; // a held ball was moved since the last step (noteHandMoved)
     QString m_haltReason; // the last reason reported by haltedChanged
     sim::Scene m_scene;
     sim::SpawnSettings m_spawn; // of the running world
