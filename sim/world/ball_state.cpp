@@ -1,5 +1,6 @@
 #include "sim/world/ball_state.h"
 
+#include <algorithm>
 #include <numbers>
 
 namespace forcelab::sim {
@@ -20,6 +21,7 @@ void BallState::clear()
     color.clear();
     home.resize(2, 0);
     colliding.clear();
+    pinned.clear();
 }
 
 void BallState::resize(int n)
@@ -35,6 +37,7 @@ void BallState::resize(int n)
     charge.conservativeResize(n);
     color.resize(static_cast<std::size_t>(n), 0);
     colliding.resize(static_cast<std::size_t>(n), 0);
+    pinned.resize(static_cast<std::size_t>(n), 0);
     if (n > old) {
         position.rightCols(n - old).setZero();
         velocity.rightCols(n - old).setZero();
@@ -76,6 +79,7 @@ void copyBall(BallState& s, int from, int to)
     s.charge[to] = s.charge[from];
     s.color[static_cast<std::size_t>(to)] = s.color[static_cast<std::size_t>(from)];
     s.colliding[static_cast<std::size_t>(to)] = s.colliding[static_cast<std::size_t>(from)];
+    s.pinned[static_cast<std::size_t>(to)] = s.pinned[static_cast<std::size_t>(from)];
 }
 
 } // namespace
@@ -100,19 +104,33 @@ void BallState::remove(int i)
 void BallState::set(int i, const Ball& b)
 {
     position.col(i) = b.position;
-    velocity.col(i) = b.velocity;
+    velocity.col(i) = b.pinned ? Vec2::Zero() : b.velocity; // a pinned ball is at rest
     home.col(i) = b.home;
     radius[i] = b.radius;
     charge[i] = b.charge;
     color[static_cast<std::size_t>(i)] = b.color;
     colliding[static_cast<std::size_t>(i)] = 0;
+    pinned[static_cast<std::size_t>(i)] = b.pinned ? 1 : 0;
     setMass(i, b.mass > 0.0 ? b.mass : sphereMass(b.radius));
 }
 
 void BallState::setMass(int i, double m)
 {
     mass[i] = m;
-    inverseMass[i] = 1.0 / m;
+    inverseMass[i] = pinned[static_cast<std::size_t>(i)] ? 0.0 : 1.0 / m;
+}
+
+void BallState::setPinned(int i, bool on)
+{
+    pinned[static_cast<std::size_t>(i)] = on ? 1 : 0;
+    if (on)
+        velocity.col(i).setZero();
+    setMass(i, mass[i]);
+}
+
+bool BallState::anyPinned() const
+{
+    return std::find(pinned.begin(), pinned.end(), static_cast<unsigned char>(1)) != pinned.end();
 }
 
 Ball BallState::ball(int i) const
@@ -125,6 +143,7 @@ Ball BallState::ball(int i) const
     b.charge = charge[i];
     b.color = color[static_cast<std::size_t>(i)];
     b.home = home.col(i);
+    b.pinned = pinned[static_cast<std::size_t>(i)] != 0;
     return b;
 }
 

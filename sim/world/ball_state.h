@@ -38,6 +38,10 @@ struct Ball {
     Rgb color = 0x5080e0;
     Vec2 home{0.0, 0.0};     ///< px, where homing pulls this ball
     double charge = 1.0;     ///< charge units; what a magnetic field acts on (1: like the 10 px reference ball)
+    /// A pinned ball never moves: no force, wall or collision changes its
+    /// position, and its velocity stays zero. Other balls bounce off it as
+    /// off a ball of infinite mass.
+    bool pinned = false;
 };
 
 struct BallState {
@@ -45,12 +49,16 @@ struct BallState {
     Matrix2X velocity; ///< px/s
     VectorX radius;    ///< px
     VectorX mass;      ///< mass units (density 1 sphere of radius r by default)
-    VectorX inverseMass; ///< 1/mass, kept in step with mass
+    /// 1/mass, kept in step with mass; 0 for a pinned ball (an impulse
+    /// cannot move it), so the collision stages need no test of their own.
+    VectorX inverseMass;
     std::vector<Rgb> color;
     Matrix2X home;     ///< px, home of each ball's colour (homing)
     VectorX charge;    ///< charge units, per ball
     /// Set by the collision stage: 1 if the ball touches another ball this step.
     std::vector<unsigned char> colliding;
+    /// 1 for a pinned ball (Ball::pinned); see anyPinned().
+    std::vector<unsigned char> pinned;
 
     int size() const { return static_cast<int>(position.cols()); }
     bool empty() const { return size() == 0; }
@@ -67,10 +75,17 @@ struct BallState {
     void insert(int i, const Ball& ball);
     /// Removes ball i; the balls after it move down by one. O(N).
     void remove(int i);
-    /// Writes ball i; a mass of 0 becomes sphereMass(radius).
+    /// Writes ball i; a mass of 0 becomes sphereMass(radius), and a pinned
+    /// ball's velocity 0.
     void set(int i, const Ball& ball);
     Ball ball(int i) const;
     void setMass(int i, double mass);
+    /// Pins ball i (its velocity and inverse mass become 0) or frees it
+    /// (its inverse mass is 1/mass again).
+    void setPinned(int i, bool on);
+    /// Whether any ball is pinned: one scan of a byte per ball, so the step
+    /// asks once and scenes without pins pay nothing else.
+    bool anyPinned() const;
 };
 
 } // namespace forcelab::sim

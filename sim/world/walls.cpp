@@ -307,9 +307,10 @@ double wallContactTime(double p0, double u, double a, double wall, double into, 
     return best;
 }
 
-std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
+std::int64_t applyWalls(const WorldSettings& settings, const WallBalls& balls, const StepStart& start, double h,
                         Matrix2X& x, Matrix2X& v)
 {
+    const VectorX& radius = balls.radius;
     const WallSettings& walls = settings.walls;
     const BoxSettings& box = settings.box;
     const IntegratorKind integrator = settings.time.integrator;
@@ -328,6 +329,8 @@ std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, co
         if (!on[d][0] && !on[d][1] && !middleHere)
             continue;
         for (Eigen::Index i = 0; i < x.cols(); ++i) {
+            if (balls.pinned && balls.pinned[i]) // nothing moves it, not even a wall it overlaps
+                continue;
             // [code walls.test if world.walls.bottom=true: Where a wall stops a ball]
             // With centreOnly the wall test ignores the radius: the ball sinks
             // into the wall up to its centre before it turns.

@@ -123,9 +123,11 @@ int RestingRows::bodyFor(std::size_t i, const BallState& balls)
     bodyVelocity0[2 * kk] = back[0] ? 0.0 : v[2 * i];
     bodyVelocity0[2 * kk + 1] = back[1] ? 0.0 : v[2 * i + 1];
     // What x − v·h misses its start by (sub_step_context.h); along an axis
-    // whose wall bounce was taken back it starts on the wall instead.
+    // whose wall bounce was taken back it starts on the wall instead, and a
+    // pinned ball, which no force moved, starts where it is.
+    const bool pinned = balls.pinned[i] != 0;
     for (int axis = 0; axis < 2; ++axis)
-        bodyShift[2 * kk + static_cast<std::size_t>(axis)] = back[axis] ? 0.0 : m_startShift[axis];
+        bodyShift[2 * kk + static_cast<std::size_t>(axis)] = (back[axis] || pinned) ? 0.0 : m_startShift[axis];
     bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)], w};
     return k;
 }
