@@ -147,6 +147,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
         COMPARE_BITS(p.charge, q.charge);
         QCOMPARE(p.color, q.color);
         QCOMPARE(p.pinned, q.pinned);
+        COMPARE_BITS(p.restitution, q.restitution);
     }
     const sim::SpawnSettings& u = a.scene.spawn;
     const sim::SpawnSettings& v = b.scene.spawn;
@@ -547,7 +548,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
                    "resting": false}
   },
   "balls": [{"x": 100, "y": 50, "vx": -3, "vy": 4, "r": 11, "mass": 2.5, "color": "#E05051",
-             "pinned": true},
+             "pinned": true, "restitution": 0.25},
             {"x": 7, "y": 8}],
   "spawn": {"count": 20, "radius": [3, 9], "speed": 12, "seed": 99, "palette": ["#010203", "#a0b0c0"],
             "horizontal": true, "fully_inside": false, "per_step": 0.1, "max_count": 50},
@@ -630,6 +631,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     QCOMPARE(b.mass, 2.5);
     QCOMPARE(b.color, sim::Rgb{0xe05051});
     QVERIFY(b.pinned);
+    QCOMPARE(b.restitution, 0.25);
     // Absent ball keys keep the Ball defaults: at rest, r 10, sphere mass (0), default colour.
     const sim::Ball& c = l.scene.balls[1];
     const sim::Ball d;
@@ -639,6 +641,7 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     QCOMPARE(c.mass, 0.0);
     QCOMPARE(c.color, d.color);
     QVERIFY(!c.pinned);
+    QCOMPARE(c.restitution, sim::kWorldRestitution); // absent: the world's
 
     const sim::SpawnSettings& sp = l.scene.spawn;
     QCOMPARE(sp.count, 20);
@@ -764,6 +767,9 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("ball pinned not a switch")
         << minimal(R"("balls": [{"x": 1, "y": 2, "pinned": 1}])")
         << "t.json:1:53: balls.0.pinned: expected true or false, got the number 1";
+    QTest::newRow("ball restitution out of range")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "restitution": 1.5}])")
+        << "t.json:1:53: balls.0.restitution: 1.5 is outside [0, 1]";
     QTest::newRow("ball mass too small to invert safely")
         << minimal(R"("balls": [{"x": 1, "y": 2, "mass": 1e-300}])")
         << "t.json:1:53: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
@@ -1200,6 +1206,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     a.charge = -1.0 / 3.0;
     a.color = 0x0a0b0c;
     a.pinned = true;
+    a.restitution = 0.1 + 0.2;
     sim::Ball b;
     b.radius = 1e-4; // mass 0: the sphere mass, written without "mass"; colliding, so it must fit the tiny box
     l.scene.balls = {a, b};
@@ -1218,6 +1225,7 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     QVERIFY(saved.contains("\"random_accel\": {\"fixed\": true"));
     QVERIFY(saved.contains("\"wall_model\": \"reverse\""));
     QCOMPARE(saved.count("\"pinned\": true"), 1); // the free ball does not say so
+    QCOMPARE(saved.count("\"restitution\": 0.30000000000000004"), 1); // nor does the ball with the world's e
 
     // Random acceleration switched off but changed is remembered as "enabled": false.
     l.scene.settings.randomAccel.enabled = false;

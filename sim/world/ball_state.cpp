@@ -22,6 +22,7 @@ void BallState::clear()
     home.resize(2, 0);
     colliding.clear();
     pinned.clear();
+    restitution.resize(0);
 }
 
 void BallState::resize(int n)
@@ -35,6 +36,7 @@ void BallState::resize(int n)
     mass.conservativeResize(n);
     inverseMass.conservativeResize(n);
     charge.conservativeResize(n);
+    restitution.conservativeResize(n);
     color.resize(static_cast<std::size_t>(n), 0);
     colliding.resize(static_cast<std::size_t>(n), 0);
     pinned.resize(static_cast<std::size_t>(n), 0);
@@ -46,6 +48,7 @@ void BallState::resize(int n)
         mass.tail(n - old).setZero();
         inverseMass.tail(n - old).setZero();
         charge.tail(n - old).setZero();
+        restitution.tail(n - old).setConstant(kWorldRestitution);
     }
 }
 
@@ -77,6 +80,7 @@ void copyBall(BallState& s, int from, int to)
     s.mass[to] = s.mass[from];
     s.inverseMass[to] = s.inverseMass[from];
     s.charge[to] = s.charge[from];
+    s.restitution[to] = s.restitution[from];
     s.color[static_cast<std::size_t>(to)] = s.color[static_cast<std::size_t>(from)];
     s.colliding[static_cast<std::size_t>(to)] = s.colliding[static_cast<std::size_t>(from)];
     s.pinned[static_cast<std::size_t>(to)] = s.pinned[static_cast<std::size_t>(from)];
@@ -108,6 +112,7 @@ void BallState::set(int i, const Ball& b)
     home.col(i) = b.home;
     radius[i] = b.radius;
     charge[i] = b.charge;
+    restitution[i] = b.restitution;
     color[static_cast<std::size_t>(i)] = b.color;
     colliding[static_cast<std::size_t>(i)] = 0;
     pinned[static_cast<std::size_t>(i)] = b.pinned ? 1 : 0;
@@ -128,6 +133,11 @@ void BallState::setPinned(int i, bool on)
     setMass(i, mass[i]);
 }
 
+const double* BallState::ownRestitutions() const
+{
+    return (restitution.array() >= 0.0).any() ? restitution.data() : nullptr;
+}
+
 bool BallState::anyPinned() const
 {
     return std::find(pinned.begin(), pinned.end(), static_cast<unsigned char>(1)) != pinned.end();
@@ -141,6 +151,7 @@ Ball BallState::ball(int i) const
     b.radius = radius[i];
     b.mass = mass[i];
     b.charge = charge[i];
+    b.restitution = restitution[i];
     b.color = color[static_cast<std::size_t>(i)];
     b.home = home.col(i);
     b.pinned = pinned[static_cast<std::size_t>(i)] != 0;

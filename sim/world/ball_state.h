@@ -5,6 +5,7 @@
 
 #include "sim/world/types.h"
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,23 @@ inline constexpr double kMaxRadius = 1e4;  ///< px
 inline constexpr double kMinMass = 1e-12;  ///< mass units
 inline constexpr double kMaxMass = 1e15;   ///< mass units
 inline constexpr double kMaxCharge = 1e6;  ///< charge units, either sign
+
+/// A ball's restitution when it has none of its own: the world's applies
+/// (models.collisions.restitution against balls, world.restitution against walls).
+inline constexpr double kWorldRestitution = -1.0;
+
+/// Whether `own` is a ball's own restitution rather than kWorldRestitution.
+inline bool hasOwnRestitution(double own) { return own >= 0.0; }
+
+/// The restitution a ball bounces with: its own if it has one, else `world`.
+inline double effectiveRestitution(double own, double world) { return own >= 0.0 ? own : world; }
+
+/// The restitution of two balls that hit: the smaller of their effective ones
+/// (a ball of clay stops a rubber ball's bounce too).
+inline double pairRestitution(double ownA, double ownB, double world)
+{
+    return std::min(effectiveRestitution(ownA, world), effectiveRestitution(ownB, world));
+}
 
 /// Density of the default mass: m = density × (4/3) π r³ (equal-density spheres).
 inline constexpr double kDefaultDensity = 1.0;
@@ -42,6 +60,9 @@ struct Ball {
     /// position, and its velocity stays zero. Other balls bounce off it as
     /// off a ball of infinite mass.
     bool pinned = false;
+    /// 1, this ball's own restitution e in [0, 1] against walls and balls;
+    /// kWorldRestitution (the default): the world's.
+    double restitution = kWorldRestitution;
 };
 
 struct BallState {
@@ -59,6 +80,8 @@ struct BallState {
     std::vector<unsigned char> colliding;
     /// 1 for a pinned ball (Ball::pinned); see anyPinned().
     std::vector<unsigned char> pinned;
+    /// 1, each ball's own restitution, or kWorldRestitution; see ownRestitutions().
+    VectorX restitution;
 
     int size() const { return static_cast<int>(position.cols()); }
     bool empty() const { return size() == 0; }
@@ -86,6 +109,9 @@ struct BallState {
     /// Whether any ball is pinned: one scan of a byte per ball, so the step
     /// asks once and scenes without pins pay nothing else.
     bool anyPinned() const;
+    /// restitution's entries, or nullptr when no ball has its own (the
+    /// collision stages then use the world's values as they are): one scan.
+    const double* ownRestitutions() const;
 };
 
 } // namespace forcelab::sim

@@ -21,10 +21,12 @@ struct StepStart {
 };
 
 /// The balls as the walls see them: their radii and, where a scene has
-/// them, which are pinned (null: none; a pinned ball is left where it is).
+/// them, which are pinned (null: none; a pinned ball is left where it is)
+/// and their own restitutions (null: none; see effectiveRestitution).
 struct WallBalls {
     const VectorX& radius; ///< px
     const unsigned char* pinned = nullptr;
+    const double* restitution = nullptr;
 };
 
 /// Bounces the balls off the enabled walls of `settings` (walls, box; the

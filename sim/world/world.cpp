@@ -127,6 +127,8 @@ std::optional<Error> validateBalls(std::span<const Ball> balls)
         if (b.mass != 0.0) // 0: the density-1 sphere of its radius
             c.range((at + "mass").c_str(), b.mass, kMinMass, kMaxMass);
         c.range((at + "q").c_str(), b.charge, -kMaxCharge, kMaxCharge);
+        if (b.restitution != kWorldRestitution)
+            c.range((at + "restitution").c_str(), b.restitution, 0.0, 1.0);
     }
     return c.result();
 }
@@ -615,7 +617,9 @@ void World::subStep(double h)
     // in time order with the ball impacts.)
     std::int64_t hits = CollisionSystem::wallsInTimeOrder(s.collisions, s.walls)
                             ? 0
-                            : applyWalls(s, {m_balls.radius, m_pinnedIndex.empty() ? nullptr : m_balls.pinned.data()},
+                            : applyWalls(s,
+                                         {m_balls.radius, m_pinnedIndex.empty() ? nullptr : m_balls.pinned.data(),
+                                          m_balls.ownRestitutions()},
                                          {m_startPosition, m_startVelocity}, h, m_balls.position,
                                          m_balls.velocity);
 

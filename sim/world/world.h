@@ -183,8 +183,8 @@ private:
 std::optional<Error> validateSpawn(const SpawnSettings& spawn);
 
 /// Checks listed balls: finite position and velocity, radius in
-/// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass]
-/// ("balls.3.r: …").
+/// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass], an
+/// own restitution in [0, 1] ("balls.3.r: …").
 std::optional<Error> validateBalls(std::span<const Ball> balls);
 
 /// Checks a full settings struct. Returns the first problem, with the lesson
