@@ -105,6 +105,7 @@ TEST_CASE("TestBallProperties::headOnBounceOffPinnedBall")
             s.settings.gravity.g = Vec2(0.0, 1e-20);
         }
         World world(s);
+        world.setAccounting(true); // the pinned ball's push is booked, as a wall's is
         const double before = world.energy().kinetic;
         for (int k = 0; k < 90; ++k) // 1.5 s: 180 px to the contact, then back
             world.step();
@@ -118,6 +119,9 @@ TEST_CASE("TestBallProperties::headOnBounceOffPinnedBall")
         VERIFY(b.position(0, 0) < 290.0 - 10.0); // on its way back
         const double after = world.energy().kinetic;
         VERIFY2(std::abs(after - before) <= kRel * before, Text("E %1 -> %2").arg(before).arg(after).c_str());
+        const double p = b.mass[0] * u;
+        VERIFY2(world.momentumDrift().norm() <= kRel * p, Text("drift %1").arg(world.momentumDrift().norm()).c_str());
+        VERIFY(std::abs(world.energyDrift()) <= kRel * before);
     }
 }
 
