@@ -14,7 +14,7 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
         r.fail(base, QStringLiteral("%1 balls is more than the limit of %2").arg(balls.size()).arg(kMaxBalls));
         return;
     }
-    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "density", "q", "color"};
+    const QStringList known{"x", "y", "vx", "vy", "r", "mass", "density", "q", "color", "pinned", "restitution"};
     out.clear();
     out.reserve(static_cast<std::size_t>(balls.size()));
     for (qsizetype i = 0; i < balls.size(); ++i) {
@@ -50,6 +50,9 @@ void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out)
                 b.mass = m;
         }
         r.number(o, p, "q", range::kCharge, b.charge);
+        r.boolean(o, p, "pinned", b.pinned);
+        // Its own bounce, against walls and balls; absent: the world's.
+        r.number(o, p, "restitution", range::kUnit, b.restitution);
         if (o.contains("color"))
             r.colourValue(o.value("color"), join(p, "color"), b.color);
         out.push_back(b);

@@ -305,6 +305,10 @@ QByteArray ballLine(const sim::Ball& b)
         f.push_back({"mass", num(b.mass)});
     if (b.charge != 1.0) // 1 is the default
         f.push_back({"q", num(b.charge)});
+    if (b.pinned) // written only when set: a file without it means a free ball
+        f.push_back({"pinned", "true"});
+    if (sim::hasOwnRestitution(b.restitution)) // absent: the world's restitution
+        f.push_back({"restitution", num(b.restitution)});
     f.push_back({"color", colour(b.color)});
     return inlineObject(f);
 }

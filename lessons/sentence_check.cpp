@@ -146,8 +146,11 @@ std::vector<double> sceneNumbers(const sim::Scene& scene)
     for (const sim::Parameter& p : sim::parameters())
         if (p.get)
             v.push_back(p.get(scene.settings));
-    for (const sim::Ball& b : scene.balls)
+    for (const sim::Ball& b : scene.balls) {
         v.insert(v.end(), {b.position.x(), b.position.y(), b.velocity.x(), b.velocity.y(), b.radius, b.mass, b.charge});
+        if (sim::hasOwnRestitution(b.restitution))
+            v.push_back(b.restitution);
+    }
     const sim::SpawnSettings& s = scene.spawn;
     v.insert(v.end(), {double(s.count), s.minRadius, s.maxRadius, s.minSpeed, s.maxSpeed, s.perStep, double(s.maxCount),
                        double(s.seed), double(s.count + int(scene.balls.size())), double(scene.balls.size())});

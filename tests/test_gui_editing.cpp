@@ -29,6 +29,8 @@
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QStyleOptionViewItem>
 #include <QTableView>
 #include <QTest>
 #include <QUndoStack>
@@ -45,7 +47,7 @@ bool sameBalls(const sim::BallState& a, const sim::BallState& b)
 {
     return a.size() == b.size() && a.position == b.position && a.velocity == b.velocity && a.radius == b.radius &&
            a.mass == b.mass && a.inverseMass == b.inverseMass && a.charge == b.charge && a.color == b.color &&
-           a.home == b.home;
+           a.home == b.home && a.pinned == b.pinned && a.restitution == b.restitution;
 }
 
 void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons,
@@ -121,7 +123,10 @@ struct Workbench {
             return false;
         }
         editor->selectAll();
-        QTest::keyClicks(editor, text);
+        if (text.isEmpty())
+            QTest::keyClick(editor, Qt::Key_Backspace); // an empty cell
+        else
+            QTest::keyClicks(editor, text);
         QTest::keyClick(editor, Qt::Key_Return);
         // The delegate commits the text in a queued call, then closes the editor.
         return QTest::qWaitFor([view] {
@@ -161,6 +166,9 @@ private slots:
     void lesson31DoubleSpeedAndHeavier();
     void aLessonMayGiveADensity();
     void anEditInThePastIsANewFutureUndoneToTheOld();
+    void pinFromTheTableHoldsTheBallWhilePlaying();
+    void pinFromTheMenuIsOneUndoStep();
+    void restitutionIsTypedAndClearedInTheTable();
 };
 
 // The whole round: a ball added with the right-click menu, dragged with the
@@ -543,4 +551,133 @@ void GuiEditingTest::anEditInThePastIsANewFutureUndoneToTheOld()
 }
 
 QTEST_MAIN(GuiEditingTest)
+// Issue #35: the pinned check box of the table pins a ball under gravity
+// (one undo step that also stops it); played for a second it stays where it
+// was to the bit while the others fall; undone, it is free again with the
+// velocity it had, and falls.
+void GuiEditingTest::pinFromTheTableHoldsTheBallWhilePlaying()
+{
+    Workbench w(QStringLiteral("gravity"));
+    QVERIFY(w.ready());
+    QVERIFY(w.controller()->world().settings().gravity.enabled);
+    QVERIFY(w.balls().size() >= 2);
+    w.run(0.1); // moving, so that pinning has a velocity to take away
+    const sim::Ball before = w.balls().ball(0);
+    QVERIFY(before.velocity.norm() > 0.0);
+    QVERIFY(!before.pinned);
+    const int edits = w.undo()->count();
+
+    // The check box, clicked as a student clicks it (Space is Play here).
+    QTableView* view = w.table();
+    QTRY_VERIFY(view->isVisible());
+    const QModelIndex cell = view->model()->index(w.ballTable()->rowOf(0), BallTableModel::Pinned);
+    QCOMPARE(view->model()->data(cell, Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    view->scrollTo(cell);
+    QStyleOptionViewItem option;
+    option.initFrom(view);
+    option.rect = view->visualRect(cell);
+    option.features = QStyleOptionViewItem::HasCheckIndicator;
+    const QRect box = view->style()->subElementRect(QStyle::SE_ItemViewItemCheckIndicator, &option, view);
+    QVERIFY(box.isValid());
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, box.center());
+    QTRY_VERIFY(w.balls().pinned[0] != 0);
+    QCOMPARE(w.undo()->count(), edits + 1);
+    QCOMPARE(view->model()->data(cell, Qt::CheckStateRole).toInt(), int(Qt::Checked));
+    QCOMPARE(w.balls().inverseMass[0], 0.0);
+    QVERIFY(w.balls().velocity.col(0).isZero(0.0));
+
+    // Played: the pinned ball stays, the others fall.
+    const sim::Vec2 at = w.balls().position.col(0);
+    const sim::Vec2 other = w.balls().position.col(1);
+    const std::int64_t from = w.controller()->world().stepCount();
+    w.controller()->play();
+    QTRY_VERIFY_WITH_TIMEOUT(w.controller()->world().stepCount() >= from + 60, 20000);
+    w.controller()->pause();
+    QCOMPARE(sim::Vec2(w.balls().position.col(0)), at); // bit for bit
+    QVERIFY(w.balls().velocity.col(0).isZero(0.0));
+    QVERIFY((sim::Vec2(w.balls().position.col(1)) - other).norm() > 1.0);
+
+    // Undone: free, with the velocity and inverse mass it had, and it falls.
+    w.undo()->undo();
+    QCOMPARE(w.balls().pinned[0], static_cast<unsigned char>(0));
+    QCOMPARE(sim::Vec2(w.balls().velocity.col(0)), before.velocity);
+    QCOMPARE(w.balls().inverseMass[0], 1.0 / before.mass);
+    QCOMPARE(view->model()->data(cell, Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    w.run(0.1);
+    QVERIFY((sim::Vec2(w.balls().position.col(0)) - at).norm() > 1.0);
+}
+
+// The right-click menu's checkable Pin: checked for a pinned ball, each
+// toggle one undo step, undone bit for bit.
+void GuiEditingTest::pinFromTheMenuIsOneUndoStep()
+{
+    Workbench w(QStringLiteral("the-line-of-impact"));
+    QVERIFY(w.ready());
+    Canvas* canvas = w.window.canvas();
+    const sim::BallState start = w.balls();
+    const QPointF on = canvas->worldToWidget(sim::Vec2(w.balls().position.col(1)));
+    {
+        QMenu menu;
+        canvas->fillContextMenu(menu, on);
+        QAction* pin = menuAction(menu, QStringLiteral("Pin"));
+        QVERIFY(pin && pin->isCheckable() && pin->isEnabled() && !pin->isChecked());
+        pin->trigger();
+    }
+    QCOMPARE(w.balls().pinned[1], static_cast<unsigned char>(1));
+    QCOMPARE(w.undo()->count(), 1);
+    const sim::BallState pinned = w.balls();
+    {
+        QMenu menu;
+        canvas->fillContextMenu(menu, on);
+        QAction* pin = menuAction(menu, QStringLiteral("Pin"));
+        QVERIFY(pin && pin->isChecked());
+        pin->trigger(); // unchecks: free again
+    }
+    QCOMPARE(w.balls().pinned[1], static_cast<unsigned char>(0));
+    QCOMPARE(w.undo()->count(), 2);
+    w.undo()->undo();
+    QVERIFY(sameBalls(w.balls(), pinned));
+    w.undo()->undo();
+    QVERIFY(sameBalls(w.balls(), start));
+
+    // Copied and pasted, a pinned ball with its own restitution stays both.
+    sim::Ball ball = start.ball(0);
+    ball.pinned = true;
+    ball.restitution = 0.25;
+    const std::optional<sim::Ball> back = ballFromText(ballToText(ball));
+    QVERIFY(back && back->pinned && back->restitution == 0.25);
+    const std::optional<sim::Ball> plain = ballFromText(ballToText(start.ball(0)));
+    QVERIFY(plain && !plain->pinned && plain->restitution == sim::kWorldRestitution);
+    QVERIFY(!ballToText(start.ball(0)).contains(QStringLiteral("restitution")));
+}
+
+// The restitution column: "world" until a value is typed; a typed value is
+// the ball's own, an empty cell gives it the world's again, a value outside
+// [0, 1] is refused with its range; each edit undone bit for bit.
+void GuiEditingTest::restitutionIsTypedAndClearedInTheTable()
+{
+    Workbench w(QStringLiteral("the-line-of-impact"));
+    QVERIFY(w.ready());
+    const sim::BallState start = w.balls();
+    QTableView* view = w.table();
+    const QModelIndex cell = view->model()->index(w.ballTable()->rowOf(0), BallTableModel::Restitution);
+    QCOMPARE(view->model()->data(cell, Qt::DisplayRole).toString(), QStringLiteral("world"));
+    QVERIFY(w.type(0, BallTableModel::Restitution, QStringLiteral("0.5")));
+    QCOMPARE(w.balls().restitution[0], 0.5);
+    const sim::BallState own = w.balls();
+    QVERIFY(w.type(0, BallTableModel::Restitution, QStringLiteral("1.5")));
+    QCOMPARE(w.balls().restitution[0], 0.5); // refused
+    auto* note = w.ballTable()->findChild<QLabel*>(QStringLiteral("ballTableNote"));
+    QVERIFY2(note->text().contains(QStringLiteral("restitution")) && note->text().contains(QStringLiteral("[0, 1]")),
+             qPrintable(note->text()));
+    QVERIFY(w.type(0, BallTableModel::Restitution, QString()));
+    QCOMPARE(w.balls().restitution[0], sim::kWorldRestitution);
+    QCOMPARE(view->model()->data(cell, Qt::DisplayRole).toString(), QStringLiteral("world"));
+    QCOMPARE(w.undo()->count(), 2);
+    w.undo()->undo();
+    QVERIFY(sameBalls(w.balls(), own));
+    w.undo()->undo();
+    QVERIFY(sameBalls(w.balls(), start));
+}
+
 #include "test_gui_editing.moc"

@@ -146,6 +146,8 @@ void compareLessons(const Lesson& a, const Lesson& b)
         COMPARE_BITS(p.mass, q.mass);
         COMPARE_BITS(p.charge, q.charge);
         QCOMPARE(p.color, q.color);
+        QCOMPARE(p.pinned, q.pinned);
+        COMPARE_BITS(p.restitution, q.restitution);
     }
     const sim::SpawnSettings& u = a.scene.spawn;
     const sim::SpawnSettings& v = b.scene.spawn;
@@ -545,7 +547,8 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     "collisions": {"detection": "grid", "response": "1d-elastic", "restitution": 0.5, "continuous": true,
                    "resting": false}
   },
-  "balls": [{"x": 100, "y": 50, "vx": -3, "vy": 4, "r": 11, "mass": 2.5, "color": "#E05051"},
+  "balls": [{"x": 100, "y": 50, "vx": -3, "vy": 4, "r": 11, "mass": 2.5, "color": "#E05051",
+             "pinned": true, "restitution": 0.25},
             {"x": 7, "y": 8}],
   "spawn": {"count": 20, "radius": [3, 9], "speed": 12, "seed": 99, "palette": ["#010203", "#a0b0c0"],
             "horizontal": true, "fully_inside": false, "per_step": 0.1, "max_count": 50},
@@ -627,6 +630,8 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     QCOMPARE(b.radius, 11.0);
     QCOMPARE(b.mass, 2.5);
     QCOMPARE(b.color, sim::Rgb{0xe05051});
+    QVERIFY(b.pinned);
+    QCOMPARE(b.restitution, 0.25);
     // Absent ball keys keep the Ball defaults: at rest, r 10, sphere mass (0), default colour.
     const sim::Ball& c = l.scene.balls[1];
     const sim::Ball d;
@@ -635,6 +640,8 @@ void TestLessonLoader::eachKeyLandsInItsMember()
     QCOMPARE(c.radius, d.radius);
     QCOMPARE(c.mass, 0.0);
     QCOMPARE(c.color, d.color);
+    QVERIFY(!c.pinned);
+    QCOMPARE(c.restitution, sim::kWorldRestitution); // absent: the world's
 
     const sim::SpawnSettings& sp = l.scene.spawn;
     QCOMPARE(sp.count, 20);
@@ -757,6 +764,12 @@ void TestLessonLoader::badInput_data()
     QTest::newRow("ball charge out of range")
         << minimal(R"("balls": [{"x": 1, "y": 2, "q": -2e6}])")
         << "t.json:1:53: balls.0.q: -2000000 is outside [-1000000, 1000000] charge units";
+    QTest::newRow("ball pinned not a switch")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "pinned": 1}])")
+        << "t.json:1:53: balls.0.pinned: expected true or false, got the number 1";
+    QTest::newRow("ball restitution out of range")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "restitution": 1.5}])")
+        << "t.json:1:53: balls.0.restitution: 1.5 is outside [0, 1]";
     QTest::newRow("ball mass too small to invert safely")
         << minimal(R"("balls": [{"x": 1, "y": 2, "mass": 1e-300}])")
         << "t.json:1:53: balls.0.mass: 1e-300 is outside [1e-12, 1e+15] mass units";
@@ -1192,6 +1205,8 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     a.mass = 1e15;
     a.charge = -1.0 / 3.0;
     a.color = 0x0a0b0c;
+    a.pinned = true;
+    a.restitution = 0.1 + 0.2;
     sim::Ball b;
     b.radius = 1e-4; // mass 0: the sphere mass, written without "mass"; colliding, so it must fit the tiny box
     l.scene.balls = {a, b};
@@ -1209,6 +1224,8 @@ void TestLessonLoader::saveLoadRoundTripIsBitIdentical()
     QVERIFY(saved.contains("\"pointer\": {\"enabled\": false"));
     QVERIFY(saved.contains("\"random_accel\": {\"fixed\": true"));
     QVERIFY(saved.contains("\"wall_model\": \"reverse\""));
+    QCOMPARE(saved.count("\"pinned\": true"), 1); // the free ball does not say so
+    QCOMPARE(saved.count("\"restitution\": 0.30000000000000004"), 1); // nor does the ball with the world's e
 
     // Random acceleration switched off but changed is remembered as "enabled": false.
     l.scene.settings.randomAccel.enabled = false;

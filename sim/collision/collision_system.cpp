@@ -19,7 +19,8 @@ namespace {
 // model's few lines are inlined into the loop; respond() is the same choice
 // at run time, for the impacts in time order): per contact, in (a, b) order,
 // the line of impact from the detection-time positions, the response, then
-// positional correction on the current positions.
+// positional correction on the current positions. e is the world's; a ball
+// with its own restitution brings the pair's to the smaller of the two.
 template <Response Model>
 void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detected, BallState& balls, double e,
                      const BoxSettings& box, const WallSettings& walls)
@@ -29,6 +30,7 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
     const double* p = detected.data();
     const double* radius = balls.radius.data();
     const double* inverseMass = balls.inverseMass.data();
+    const double* own = balls.ownRestitutions(); // nullptr in most scenes
     const WallCheck check{{{walls.left, walls.right}, {walls.top, walls.bottom}}, {box.width, box.height}};
     for (const Contact& c : contacts) {
         const std::size_t a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
@@ -37,7 +39,8 @@ void resolveContacts(const std::vector<Contact>& contacts, const Matrix2X& detec
         const Vec2 d(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
         const Vec2 n = lineOfImpact(d, s, c.a, c.b);
         Vec2 va(v[2 * a], v[2 * a + 1]), vb(v[2 * b], v[2 * b + 1]);
-        if (respondAs<Model>(e, d, n, wa, wb, va, vb)) {
+        const double ec = own ? pairRestitution(own[a], own[b], e) : e;
+        if (respondAs<Model>(ec, d, n, wa, wb, va, vb)) {
             v[2 * a] = va.x();
             v[2 * a + 1] = va.y();
             v[2 * b] = vb.x();
@@ -73,7 +76,7 @@ static double startLag(IntegratorKind integrator)
 
 SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const BoxSettings& box,
                                         const WallSettings& walls, double h, double restingSpeed,
-                                        const Vec2& gravity, const StepMotion& motion) const
+                                        const Vec2& gravity, const StepMotion& motion, const BallState& balls) const
 {
     SubStepContext c;
     c.h = h;
@@ -81,6 +84,7 @@ SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const
     c.box = box;
     c.walls = walls;
     c.restitution = settings.restitution;
+    c.ownRestitution = balls.ownRestitutions();
     c.restingSpeed = restingSpeed;
     c.gravity = gravity.norm();
     c.gravityX = gravity.x();
@@ -253,7 +257,7 @@ void CollisionSystem::stepSpeculative(BallState& balls, const CollisionSettings&
     // The solver puts the pairs that overlap now back into m_contacts
     // (what contacts(), the flags and the counters report) as it builds
     // its rows.
-    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion), m_speculative,
+    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion, balls), m_speculative,
                     &m_contacts, clock, m_profile, sleeping ? m_sleep.asleep() : nullptr);
     if (sleeping) {
         m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
@@ -306,8 +310,8 @@ void CollisionSystem::stepResting(BallState& balls, const CollisionSettings& set
                                   const StepPlan& plan, CollisionStats& stats, StageClock& clock)
 {
     detectTouching(balls, nullptr, settings, stats, clock);
-    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion), m_contacts, nullptr,
-                    clock, m_profile);
+    m_resting.solve(balls, subStep(settings, box, walls, dt, plan.restingSpeed, gravity, motion, balls), m_contacts,
+                    nullptr, clock, m_profile);
     noteRestingSolve();
 }
 

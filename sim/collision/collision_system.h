@@ -147,7 +147,8 @@ private:
                                    const CollisionSettings& settings, const BoxSettings& box,
                                    const WallSettings& walls, double dt, const StepMotion& motion, StageClock& clock);
     SubStepContext subStep(const CollisionSettings& settings, const BoxSettings& box, const WallSettings& walls,
-                           double h, double restingSpeed, const Vec2& gravity, const StepMotion& motion) const;
+                           double h, double restingSpeed, const Vec2& gravity, const StepMotion& motion,
+                           const BallState& balls) const;
 
     RestingSolver m_resting;
     SleepingBalls m_sleep;

@@ -33,6 +33,10 @@ ForceModel::ForceModel(const WorldSettings& settings, const BallState& balls, co
             m_active.push_back(&model);
             m_velocityIndependent = m_velocityIndependent && !model.velocityDependent;
         }
+    if (balls.anyPinned())
+        for (Eigen::Index i = 0; i < balls.size(); ++i)
+            if (balls.pinned[static_cast<std::size_t>(i)])
+                m_pinned.push_back(i);
 }
 
 double ForceModel::windAt(double t) const
@@ -47,12 +51,16 @@ void ForceModel::acceleration(const Matrix2X& x, const Matrix2X& v, double t, Ma
     const ForceContext c{m_settings, m_balls, m_inputs, m_windScale, m_pointScale, m_dragScale};
     for (const ForceModelInfo* model : m_active) // a model that is off is never called
         model->add(c, x, v, t, a);
+    for (const Eigen::Index i : m_pinned) // every integrator then keeps a pinned ball where it is
+        a.col(i).setZero();
 }
 
 void ForceModel::addOne(const ForceModelInfo& model, const Matrix2X& x, const Matrix2X& v, double t, Matrix2X& a) const
 {
     const ForceContext c{m_settings, m_balls, m_inputs, m_windScale, m_pointScale, m_dragScale};
     model.add(c, x, v, t, a);
+    for (const Eigen::Index i : m_pinned)
+        a.col(i).setZero();
 }
 
 double ForceModel::potential(const Matrix2X& x) const

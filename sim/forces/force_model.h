@@ -35,7 +35,8 @@ class ForceModel {
 public:
     ForceModel(const WorldSettings& settings, const BallState& balls, const StepInputs& inputs);
 
-    /// a = Σ of the enabled models' accelerations at (x, v, t). Counts one evaluation.
+    /// a = Σ of the enabled models' accelerations at (x, v, t), 0 for a
+    /// pinned ball. Counts one evaluation.
     void acceleration(const Matrix2X& x, const Matrix2X& v, double t, Matrix2X& a) const;
 
     /// Potential energy of the conservative models at positions x: uniform
@@ -64,6 +65,7 @@ private:
     VectorX m_pointScale; // per-ball factor of the point force
     VectorX m_dragScale;  // per-ball factor of the drag (empty: the same for every ball)
     std::vector<const struct ForceModelInfo*> m_active; // the models that are on, in table order
+    std::vector<Eigen::Index> m_pinned; // pinned balls: no force accelerates them (empty in most scenes)
     bool m_velocityIndependent = true;
     mutable std::int64_t m_evaluations = 0;
 };

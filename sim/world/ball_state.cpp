@@ -1,5 +1,6 @@
 #include "sim/world/ball_state.h"
 
+#include <algorithm>
 #include <numbers>
 
 namespace forcelab::sim {
@@ -20,6 +21,8 @@ void BallState::clear()
     color.clear();
     home.resize(2, 0);
     colliding.clear();
+    pinned.clear();
+    restitution.resize(0);
 }
 
 void BallState::resize(int n)
@@ -33,8 +36,10 @@ void BallState::resize(int n)
     mass.conservativeResize(n);
     inverseMass.conservativeResize(n);
     charge.conservativeResize(n);
+    restitution.conservativeResize(n);
     color.resize(static_cast<std::size_t>(n), 0);
     colliding.resize(static_cast<std::size_t>(n), 0);
+    pinned.resize(static_cast<std::size_t>(n), 0);
     if (n > old) {
         position.rightCols(n - old).setZero();
         velocity.rightCols(n - old).setZero();
@@ -43,6 +48,7 @@ void BallState::resize(int n)
         mass.tail(n - old).setZero();
         inverseMass.tail(n - old).setZero();
         charge.tail(n - old).setZero();
+        restitution.tail(n - old).setConstant(kWorldRestitution);
     }
 }
 
@@ -74,8 +80,10 @@ void copyBall(BallState& s, int from, int to)
     s.mass[to] = s.mass[from];
     s.inverseMass[to] = s.inverseMass[from];
     s.charge[to] = s.charge[from];
+    s.restitution[to] = s.restitution[from];
     s.color[static_cast<std::size_t>(to)] = s.color[static_cast<std::size_t>(from)];
     s.colliding[static_cast<std::size_t>(to)] = s.colliding[static_cast<std::size_t>(from)];
+    s.pinned[static_cast<std::size_t>(to)] = s.pinned[static_cast<std::size_t>(from)];
 }
 
 } // namespace
@@ -100,19 +108,39 @@ void BallState::remove(int i)
 void BallState::set(int i, const Ball& b)
 {
     position.col(i) = b.position;
-    velocity.col(i) = b.velocity;
+    velocity.col(i) = b.pinned ? Vec2::Zero() : b.velocity; // a pinned ball is at rest
     home.col(i) = b.home;
     radius[i] = b.radius;
     charge[i] = b.charge;
+    restitution[i] = b.restitution;
     color[static_cast<std::size_t>(i)] = b.color;
     colliding[static_cast<std::size_t>(i)] = 0;
+    pinned[static_cast<std::size_t>(i)] = b.pinned ? 1 : 0;
     setMass(i, b.mass > 0.0 ? b.mass : sphereMass(b.radius));
 }
 
 void BallState::setMass(int i, double m)
 {
     mass[i] = m;
-    inverseMass[i] = 1.0 / m;
+    inverseMass[i] = pinned[static_cast<std::size_t>(i)] ? 0.0 : 1.0 / m;
+}
+
+void BallState::setPinned(int i, bool on)
+{
+    pinned[static_cast<std::size_t>(i)] = on ? 1 : 0;
+    if (on)
+        velocity.col(i).setZero();
+    setMass(i, mass[i]);
+}
+
+const double* BallState::ownRestitutions() const
+{
+    return (restitution.array() >= 0.0).any() ? restitution.data() : nullptr;
+}
+
+bool BallState::anyPinned() const
+{
+    return std::find(pinned.begin(), pinned.end(), static_cast<unsigned char>(1)) != pinned.end();
 }
 
 Ball BallState::ball(int i) const
@@ -123,8 +151,10 @@ Ball BallState::ball(int i) const
     b.radius = radius[i];
     b.mass = mass[i];
     b.charge = charge[i];
+    b.restitution = restitution[i];
     b.color = color[static_cast<std::size_t>(i)];
     b.home = home.col(i);
+    b.pinned = pinned[static_cast<std::size_t>(i)] != 0;
     return b;
 }
 

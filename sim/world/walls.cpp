@@ -1,6 +1,7 @@
 #include "sim/world/walls.h"
 
 #include "sim/integrators/integrator_info.h"
+#include "sim/world/ball_state.h"
 
 #include <algorithm>
 #include <cmath>
@@ -307,9 +308,10 @@ double wallContactTime(double p0, double u, double a, double wall, double into, 
     return best;
 }
 
-std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
+std::int64_t applyWalls(const WorldSettings& settings, const WallBalls& balls, const StepStart& start, double h,
                         Matrix2X& x, Matrix2X& v)
 {
+    const VectorX& radius = balls.radius;
     const WallSettings& walls = settings.walls;
     const BoxSettings& box = settings.box;
     const IntegratorKind integrator = settings.time.integrator;
@@ -317,7 +319,7 @@ std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, co
     const Matrix2X& v0 = start.velocity;
     const bool on[2][2] = {{walls.left, walls.right}, {walls.top, walls.bottom}};
     const double size[2] = {box.width, box.height};
-    const double e = walls.restitution;
+    const double wallE = walls.restitution;
     const double middle = 0.5 * box.width;
     // The world keeps the start of the sub-step whenever a wall is on
     // (walls.h); matrices of another size were not kept and are not read.
@@ -328,6 +330,9 @@ std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, co
         if (!on[d][0] && !on[d][1] && !middleHere)
             continue;
         for (Eigen::Index i = 0; i < x.cols(); ++i) {
+            if (balls.pinned && balls.pinned[i]) // nothing moves it, not even a wall it overlaps
+                continue;
+            const double e = balls.restitution ? effectiveRestitution(balls.restitution[i], wallE) : wallE;
             // [code walls.test if world.walls.bottom=true: Where a wall stops a ball]
             // With centreOnly the wall test ignores the radius: the ball sinks
             // into the wall up to its centre before it turns.

@@ -20,11 +20,20 @@ struct StepStart {
     const Matrix2X& velocity; ///< px/s
 };
 
+/// The balls as the walls see them: their radii and, where a scene has
+/// them, which are pinned (null: none; a pinned ball is left where it is)
+/// and their own restitutions (null: none; see effectiveRestitution).
+struct WallBalls {
+    const VectorX& radius; ///< px
+    const unsigned char* pinned = nullptr;
+    const double* restitution = nullptr;
+};
+
 /// Bounces the balls off the enabled walls of `settings` (walls, box; the
 /// integrator tells the `exact` model the shape of the path inside the
 /// sub-step of length h). x, v are the state after integration and are
 /// corrected in place. Returns the number of bounces.
-std::int64_t applyWalls(const WorldSettings& settings, const VectorX& radius, const StepStart& start, double h,
+std::int64_t applyWalls(const WorldSettings& settings, const WallBalls& balls, const StepStart& start, double h,
                         Matrix2X& x, Matrix2X& v);
 
 /// s, the first moment in [0, tMax] at which a coordinate moving as

@@ -127,6 +127,8 @@ std::optional<Error> validateBalls(std::span<const Ball> balls)
         if (b.mass != 0.0) // 0: the density-1 sphere of its radius
             c.range((at + "mass").c_str(), b.mass, kMinMass, kMaxMass);
         c.range((at + "q").c_str(), b.charge, -kMaxCharge, kMaxCharge);
+        if (b.restitution != kWorldRestitution)
+            c.range((at + "restitution").c_str(), b.restitution, 0.0, 1.0);
     }
     return c.result();
 }
@@ -358,6 +360,16 @@ void World::step()
         if ((m_halted = stabilityProblem(m_settings, m_balls)))
             return;
     const auto started = std::chrono::steady_clock::now();
+    m_pinnedIndex.clear();
+    if (m_balls.anyPinned()) {
+        for (int i = 0; i < m_balls.size(); ++i)
+            if (m_balls.pinned[static_cast<std::size_t>(i)])
+                m_pinnedIndex.push_back(i);
+        m_pinnedPosition.resize(2, static_cast<Eigen::Index>(m_pinnedIndex.size()));
+        for (std::size_t k = 0; k < m_pinnedIndex.size(); ++k)
+            m_pinnedPosition.col(static_cast<Eigen::Index>(k)) = m_balls.position.col(m_pinnedIndex[k]);
+        holdPinned(); // a tool may have given one a velocity between steps
+    }
     if (m_accounting)
         bookEditsSinceLastStep();
     const Books booksBefore = m_books; // a step that is undone is taken off the books too
@@ -526,6 +538,19 @@ Vec2 World::momentumDrift() const
     return momentum() - m_books.startMomentum - m_books.bookedMomentum;
 }
 
+// Pinned balls back where the step found them, at rest. Their forces are 0
+// and their inverse masses too, so nothing should have moved them; this is
+// the guarantee, to the bit, whatever a stage did (a wall that a pinned ball
+// overlaps, a push shared with a ball that is stuck at a wall).
+void World::holdPinned()
+{
+    for (std::size_t k = 0; k < m_pinnedIndex.size(); ++k) {
+        const int i = m_pinnedIndex[k];
+        m_balls.position.col(i) = m_pinnedPosition.col(static_cast<Eigen::Index>(k));
+        m_balls.velocity.col(i).setZero();
+    }
+}
+
 void World::subStep(double h)
 {
     const WorldSettings& s = m_settings;
@@ -592,7 +617,10 @@ void World::subStep(double h)
     // in time order with the ball impacts.)
     std::int64_t hits = CollisionSystem::wallsInTimeOrder(s.collisions, s.walls)
                             ? 0
-                            : applyWalls(s, m_balls.radius, {m_startPosition, m_startVelocity}, h, m_balls.position,
+                            : applyWalls(s,
+                                         {m_balls.radius, m_pinnedIndex.empty() ? nullptr : m_balls.pinned.data(),
+                                          m_balls.ownRestitutions()},
+                                         {m_startPosition, m_startVelocity}, h, m_balls.position,
                                          m_balls.velocity);
 
     // Walls and the speed limit change momentum on purpose; collisions must
@@ -606,6 +634,7 @@ void World::subStep(double h)
                                        s.gravity.enabled ? s.gravity.g : Vec2::Zero(),
                                        StepMotion{&m_startVelocity, s.time.integrator});
     hits += collisions.wallHits;
+    holdPinned();
 
     // A bounce, a collision or a velocity-dependent force makes the kept
     // acceleration stale for Verlet-type integrators.
@@ -614,7 +643,10 @@ void World::subStep(double h)
 
     if (m_accounting) {
         m_books.bookedEnergy += energy().total() - energyBeforeStages;
-        m_books.bookedMomentum += momentumAfterWalls - momentumBeforeStages + collisions.wallImpulse;
+        // A pinned ball takes the impulse of every ball that hits it, as a
+        // wall does: with pins the whole collision stage is booked.
+        m_books.bookedMomentum += momentumAfterWalls - momentumBeforeStages +
+                                  (m_pinnedIndex.empty() ? collisions.wallImpulse : momentum() - momentumAfterWalls);
     }
 
     m_last.forceEvaluations += forces.evaluations();

@@ -127,6 +127,7 @@ public:
 
 private:
     void subStep(double h);
+    void holdPinned();
     void advanceTime(double dt);
     void drawStepRandomness();
     void spawnOverTime();
@@ -171,6 +172,10 @@ private:
     Matrix2X m_savedVelocity;
     Matrix2X m_startPosition; // scratch: state at the start of a sub-step
     Matrix2X m_startVelocity;
+    // The pinned balls and where they are, taken at the start of each step
+    // (a tool may have moved one between steps); empty in most scenes.
+    std::vector<int> m_pinnedIndex;
+    Matrix2X m_pinnedPosition;
 };
 
 
@@ -178,8 +183,8 @@ private:
 std::optional<Error> validateSpawn(const SpawnSettings& spawn);
 
 /// Checks listed balls: finite position and velocity, radius in
-/// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass]
-/// ("balls.3.r: …").
+/// [kMinRadius, kMaxRadius], an explicit mass in [kMinMass, kMaxMass], an
+/// own restitution in [0, 1] ("balls.3.r: …").
 std::optional<Error> validateBalls(std::span<const Ball> balls);
 
 /// Checks a full settings struct. Returns the first problem, with the lesson

@@ -240,6 +240,18 @@ void Canvas::fillContextMenu(QMenu& menu, const QPointF& at)
             still.velocity.setZero();
             m_editor->editBall(tr("Stop ball %1").arg(ball), ball, still, kBallVelocity);
         })->setEnabled(editable);
+        // Pinned: nothing moves it, and balls bounce off it (one undo step).
+        QAction* pin = menu.addAction(tr("Pin"), this, [this, ball](bool on) {
+            if (ball >= m_controller->world().balls().size())
+                return;
+            sim::Ball pinned = m_controller->world().balls().ball(ball);
+            pinned.pinned = on;
+            m_editor->editBall(on ? tr("Pin ball %1").arg(ball) : tr("Free ball %1").arg(ball), ball, pinned,
+                               kBallPinned);
+        });
+        pin->setCheckable(true);
+        pin->setChecked(m_controller->world().balls().pinned[static_cast<std::size_t>(ball)] != 0);
+        pin->setEnabled(editable);
         menu.addAction(tr("Duplicate"), this, &Canvas::duplicateSelectedBall)->setEnabled(editable);
         menu.addAction(tr("Copy"), this, &Canvas::copySelectedBall);
         menu.addSeparator();

@@ -27,12 +27,18 @@ QString tr(const char* text)
 
 QString ballToText(const sim::Ball& ball)
 {
+    // Pinned and an own restitution only when set, as a lesson file writes them.
+    QString extra;
+    if (ball.pinned)
+        extra += QStringLiteral(", \"pinned\": true");
+    if (sim::hasOwnRestitution(ball.restitution))
+        extra += QStringLiteral(", \"restitution\": ") + number(ball.restitution);
     return QStringLiteral("{\"x\": %1, \"y\": %2, \"vx\": %3, \"vy\": %4, \"r\": %5, \"mass\": %6, \"q\": %7, "
-                          "\"color\": \"%8\"}")
+                          "\"color\": \"%8\"%9}")
         .arg(number(ball.position.x()), number(ball.position.y()), number(ball.velocity.x()),
              number(ball.velocity.y()), number(ball.radius),
              number(ball.mass > 0.0 ? ball.mass : sim::sphereMass(ball.radius)), number(ball.charge),
-             QColor::fromRgb(ball.color).name());
+             QColor::fromRgb(ball.color).name(), extra);
 }
 
 std::optional<sim::Ball> ballFromText(const QString& text, QString* why)
@@ -50,7 +56,7 @@ std::optional<sim::Ball> ballFromText(const QString& text, QString* why)
         return fail(tr("the clipboard does not hold a ball"));
     const QJsonObject o = doc.object();
     for (auto it = o.begin(); it != o.end(); ++it) {
-        static const QStringList known{"x", "y", "vx", "vy", "r", "mass", "q", "color"};
+        static const QStringList known{"x", "y", "vx", "vy", "r", "mass", "q", "color", "pinned", "restitution"};
         if (!known.contains(it.key()))
             return fail(tr("the clipboard's ball has an unknown field \"%1\"").arg(it.key().left(40)));
     }
@@ -68,6 +74,17 @@ std::optional<sim::Ball> ballFromText(const QString& text, QString* why)
     ball.mass = read("mass", 0.0);
     ball.charge = read("q", 1.0);
     ball.home = ball.position;
+    if (o.contains(QStringLiteral("pinned"))) {
+        if (!o.value(QStringLiteral("pinned")).isBool())
+            return fail(tr("the clipboard's ball has \"pinned\" that is not true or false"));
+        ball.pinned = o.value(QStringLiteral("pinned")).toBool();
+    }
+    if (o.contains(QStringLiteral("restitution"))) { // absent: the world's
+        const QJsonValue e = o.value(QStringLiteral("restitution"));
+        if (!e.isDouble() || !(e.toDouble() >= 0.0))
+            return fail(tr("the clipboard's ball has a restitution that is not a number from 0 to 1"));
+        ball.restitution = e.toDouble();
+    }
     if (o.contains(QStringLiteral("color"))) {
         const QColor colour = QColor::fromString(o.value(QStringLiteral("color")).toString());
         if (!colour.isValid())

@@ -16,7 +16,7 @@ namespace forcelab {
 QString ballToText(const sim::Ball& ball);
 
 /// The ball in `text` (a JSON object with at least x, y and r; vx, vy, mass,
-/// q and color are optional), or nullopt with the reason in `why`. Ranges
+/// q, color, pinned and restitution are optional), or nullopt with the reason in `why`. Ranges
 /// are not checked here (the editor checks them); at most 4,096 characters
 /// are read.
 std::optional<sim::Ball> ballFromText(const QString& text, QString* why = nullptr);

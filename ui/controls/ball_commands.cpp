@@ -19,6 +19,10 @@ void writeBallFields(sim::BallState& balls, int index, const sim::Ball& ball, un
         balls.charge[index] = ball.charge;
     if (fields & kBallColour)
         balls.color[static_cast<std::size_t>(index)] = ball.color;
+    if (fields & kBallRestitution)
+        balls.restitution[index] = ball.restitution;
+    if (fields & kBallPinned) // last: it sets the inverse mass from the mass written above
+        balls.setPinned(index, ball.pinned);
 }
 
 void copyBallFields(sim::Ball& to, const sim::Ball& from, unsigned fields)
@@ -35,6 +39,10 @@ void copyBallFields(sim::Ball& to, const sim::Ball& from, unsigned fields)
         to.charge = from.charge;
     if (fields & kBallColour)
         to.color = from.color;
+    if (fields & kBallRestitution)
+        to.restitution = from.restitution;
+    if (fields & kBallPinned)
+        to.pinned = from.pinned;
 }
 
 BallCommand::BallCommand(SimulationController* controller, Kind kind, const QString& text, int index,

@@ -26,7 +26,9 @@ enum BallField : unsigned {
     kBallMass = 1u << 3,
     kBallCharge = 1u << 4,
     kBallColour = 1u << 5,
-    kBallAllFields = (1u << 6) - 1,
+    kBallRestitution = 1u << 6, ///< its own restitution (or kWorldRestitution)
+    kBallPinned = 1u << 7,      ///< written after the others: pinning zeroes the velocity
+    kBallAllFields = (1u << 8) - 1,
 };
 
 /// Writes the `fields` of `ball` into ball `index` of `balls`.

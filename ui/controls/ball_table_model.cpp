@@ -55,6 +55,26 @@ QVariant BallTableModel::data(const QModelIndex& index, int role) const
     case Mass: value = balls.mass[i]; break;
     case Density: value = balls.mass[i] / sim::sphereMass(balls.radius[i]); break;
     case Charge: value = balls.charge[i]; break;
+    case Restitution:
+        value = balls.restitution[i];
+        if (!sim::hasOwnRestitution(value)) { // the world's: said in words, typed over from empty
+            switch (role) {
+            case Qt::DisplayRole: return tr("world");
+            case Qt::EditRole: return QString();
+            case kSortRole: return value;
+            case Qt::TextAlignmentRole: return int(Qt::AlignRight | Qt::AlignVCenter);
+            default: return {};
+            }
+        }
+        break;
+    case Pinned: {
+        const bool pinned = balls.pinned[static_cast<std::size_t>(i)] != 0;
+        if (role == Qt::CheckStateRole)
+            return pinned ? Qt::Checked : Qt::Unchecked;
+        if (role == kSortRole)
+            return pinned ? 1 : 0;
+        return {};
+    }
     case Colour: {
         const QColor colour = QColor::fromRgb(balls.color[static_cast<std::size_t>(i)]);
         if (role == Qt::DecorationRole)
@@ -87,6 +107,11 @@ QVariant BallTableModel::headerData(int section, Qt::Orientation orientation, in
         case Density: return tr("Mass per volume of a sphere: 1 is the density of every ball a lesson does not "
                                 "give a mass.");
         case Charge: return tr("What a magnetic field acts on (1: like the 10 px reference ball).");
+        case Restitution: return tr("How much of its speed this ball keeps in a bounce: 0 stops it dead, 1 keeps it "
+                                    "all. \"world\": the scene's value. When two balls hit, the smaller value "
+                                    "counts. Clear the cell to go back to the world's.");
+        case Pinned: return tr("A pinned ball never moves: other balls bounce off it as off a ball too heavy to "
+                               "push.");
         default: return {};
         }
     }
@@ -103,6 +128,8 @@ QVariant BallTableModel::headerData(int section, Qt::Orientation orientation, in
     case Density: return tr("density");
     case Charge: return tr("charge");
     case Colour: return tr("colour");
+    case Restitution: return tr("restitution");
+    case Pinned: return tr("pinned");
     default: return {};
     }
 }
@@ -110,7 +137,9 @@ QVariant BallTableModel::headerData(int section, Qt::Orientation orientation, in
 Qt::ItemFlags BallTableModel::flags(const QModelIndex& index) const
 {
     Qt::ItemFlags f = QAbstractTableModel::flags(index);
-    if (index.isValid() && index.column() != Index)
+    if (index.isValid() && index.column() == Pinned)
+        f |= Qt::ItemIsUserCheckable;
+    else if (index.isValid() && index.column() != Index)
         f |= Qt::ItemIsEditable;
     return f;
 }
@@ -119,9 +148,22 @@ bool BallTableModel::setData(const QModelIndex& index, const QVariant& value, in
 {
     const sim::BallState& balls = m_controller->world().balls();
     const int i = index.row();
-    if (role != Qt::EditRole || !index.isValid() || i >= balls.size())
+    if (!index.isValid() || i >= balls.size())
         return false;
     sim::Ball ball = balls.ball(i);
+    if (index.column() == Pinned) {
+        if (role != Qt::CheckStateRole)
+            return false;
+        ball.pinned = value.toInt() == Qt::Checked;
+        return m_editor->editBall(ball.pinned ? tr("Pin ball %1").arg(i) : tr("Free ball %1").arg(i), i, ball,
+                                  kBallPinned);
+    }
+    if (role != Qt::EditRole)
+        return false;
+    if (index.column() == Restitution && value.toString().trimmed().isEmpty()) {
+        ball.restitution = sim::kWorldRestitution;
+        return m_editor->editBall(tr("Give ball %1 the world's restitution").arg(i), i, ball, kBallRestitution);
+    }
     if (index.column() == Colour) {
         const QColor colour = QColor::fromString(value.toString().trimmed());
         if (!colour.isValid()) {
@@ -156,6 +198,16 @@ bool BallTableModel::setData(const QModelIndex& index, const QVariant& value, in
     case Mass: ball.mass = v; return m_editor->editBall(text, i, ball, kBallMass);
     case Density: ball.mass = massOf(ball.radius, v); return m_editor->editBall(text, i, ball, kBallMass);
     case Charge: ball.charge = v; return m_editor->editBall(text, i, ball, kBallCharge);
+    case Restitution:
+        if (v < 0.0) { // below 0 is not "the world's": an empty cell is
+            emit m_editor->ballEditNote(tr("restitution: %1 is outside %2; leave it empty for the world's")
+                                            .arg(QString::fromStdString(sim::numberText(v)),
+                                                 QString::fromStdString(sim::rangeText(0.0, 1.0))),
+                                        true);
+            return false;
+        }
+        ball.restitution = v;
+        return m_editor->editBall(text, i, ball, kBallRestitution);
     default: return false;
     }
 }
@@ -170,7 +222,8 @@ void BallTableModel::refresh()
         return;
     }
     if (rows > 0)
-        emit dataChanged(index(0, 0), index(rows - 1, ColumnCount - 1), {Qt::DisplayRole, Qt::EditRole});
+        emit dataChanged(index(0, 0), index(rows - 1, ColumnCount - 1),
+                         {Qt::DisplayRole, Qt::EditRole, Qt::CheckStateRole});
 }
 
 } // namespace forcelab

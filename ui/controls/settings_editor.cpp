@@ -94,6 +94,10 @@ bool SettingsEditor::editBall(const QString& text, int index, const sim::Ball& a
     const sim::Ball before = balls.ball(index);
     sim::Ball wanted = before;
     copyBallFields(wanted, after, fields);
+    if ((fields & kBallPinned) && wanted.pinned) { // a pinned ball is at rest: undo gives its velocity back
+        wanted.velocity.setZero();
+        fields |= kBallVelocity;
+    }
     const bool place = (fields & (kBallPosition | kBallRadius)) != 0;
     const std::optional<sim::Ball> checked = checkedBall(wanted, index, place);
     if (!checked)

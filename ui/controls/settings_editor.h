@@ -49,8 +49,9 @@ public:
     /// Sets the `fields` (ui/controls/ball_commands.h) of ball `index` to
     /// `after`'s as one undo step. Each number is checked against its range;
     /// a new position or radius that would put the ball in a wall or in
-    /// another ball moves it to touching (said through ballEditNote). False,
-    /// with the reason said through ballEditNote, when refused.
+    /// another ball moves it to touching (said through ballEditNote). Pinning
+    /// a ball stops it (its velocity is part of the step). False, with the
+    /// reason said through ballEditNote, when refused.
     bool editBall(const QString& text, int index, const sim::Ball& after, unsigned fields, EditMerge merge = {});
     /// Adds `ball` as the last ball (moved to touching like editBall); its
     /// index, or −1 when refused (the ball limit, a value out of range, no room).

@@ -273,7 +273,8 @@ bool ImpactEvents::restsOnWall(int i, int k, int side, double now, double hitSpe
     if (hitSpeed == 0.0)
         return true;
     const double pull = side ? q.a[k] : -q.a[k]; // px/s², towards this wall
-    return bouncesSettleWithin(m_wallE * std::abs(hitSpeed), pull, m_wallE, q.on[k][1 - side], q.hi[k] - q.lo[k],
+    const double e = wallE(i);
+    return bouncesSettleWithin(e * std::abs(hitSpeed), pull, e, q.on[k][1 - side], q.hi[k] - q.lo[k],
                                m_h - now);
 }
 
@@ -306,6 +307,7 @@ ImpactCounts ImpactEvents::run(BallState& balls, const std::vector<Contact>& can
     m_balls = &balls;
     m_walls = walls;
     m_wallE = wallSettings.restitution;
+    m_ownE = balls.ownRestitutions();
     m_counts = ImpactCounts{};
     m_heap.clear();
     m_ignored.clear();
@@ -412,7 +414,8 @@ void ImpactEvents::ballImpact(const BallState& balls, const Event& ev, double t,
     // balls really have (path + kick), and the path gets the same change.
     const Vec2 ka = walls ? Vec2::Zero() : qa.kick, kb = walls ? Vec2::Zero() : qb.kick;
     Vec2 va = qa.u + ka, vb = qb.u + kb;
-    if (!respond(model, e, d, normal, balls.inverseMass[ev.a], balls.inverseMass[ev.b], va, vb)) {
+    const double ec = m_ownE ? pairRestitution(m_ownE[ev.a], m_ownE[ev.b], e) : e;
+    if (!respond(model, ec, d, normal, balls.inverseMass[ev.a], balls.inverseMass[ev.b], va, vb)) {
         // A naive model that leaves the pair approaching: it would
         // meet again at once, for ever. It is not followed further.
         const std::uint64_t key = pairKey(ev.a, ev.b);
@@ -457,7 +460,7 @@ void ImpactEvents::wallImpact(const Event& ev, double t)
         qa.kick[k] = 0.0;
         m_counts.wallHits += hitSpeed != 0.0 ? 1 : 0;
     } else {
-        qa.u[k] = -m_wallE * hitSpeed;
+        qa.u[k] = -wallE(ev.a) * hitSpeed;
         ++m_counts.wallHits;
     }
     ++qa.version;
@@ -492,7 +495,7 @@ void ImpactEvents::finishPaths(BallState& balls, const BoxSettings& box, const W
                     if (q.on[k][side] && into * (p[k] - wall) > 0.0) {
                         p[k] = wall;
                         if (into * v[k] > 0.0)
-                            v[k] = -m_wallE * v[k];
+                            v[k] = -wallE(i) * v[k];
                         ++m_counts.wallHits;
                     }
                 }

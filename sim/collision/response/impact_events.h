@@ -127,6 +127,9 @@ private:
     const BallState* m_balls = nullptr;
     double m_h = 0.0;
     double m_wallE = 1.0;
+    const double* m_ownE = nullptr; // per ball, its own restitution (BallState::ownRestitutions; nullptr: none)
+    // The restitution ball i bounces off a wall with.
+    double wallE(int i) const { return m_ownE ? effectiveRestitution(m_ownE[i], m_wallE) : m_wallE; }
     bool m_walls = false;
     ImpactCounts m_counts;
 };

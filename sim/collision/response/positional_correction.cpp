@@ -50,17 +50,20 @@ void pushApart(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const Bo
 {
     const auto& [ra, rb, n, wa, wb] = pair;
     const double w = wa + wb;
+    if (w == 0.0) // two pinned balls: neither moves
+        return;
     const double shareA = (w > 0.0 && std::isfinite(w)) ? wa / w : 0.5;
     // Move a by its share and b by the rest. A ball stops at a wall it was
     // inside; then its partner takes what it could not, and if b is the one
-    // stopped, a takes the rest.
+    // stopped, a takes the rest. A pinned ball (inverse mass 0) takes nothing.
+    const bool bMoves = wb != 0.0;
     const double moveA = depth * shareA;
     Vec2 qa = pa - moveA * n;
     const double movedA = keepInsideWalls(pa, qa, ra, box, walls) ? (pa - qa).dot(n) : moveA;
-    Vec2 qb = pb + (depth - movedA) * n;
-    if (keepInsideWalls(pb, qb, rb, box, walls)) {
+    Vec2 qb = bMoves ? Vec2(pb + (depth - movedA) * n) : pb;
+    if (bMoves && keepInsideWalls(pb, qb, rb, box, walls)) {
         const double missing = depth - movedA - (qb - pb).dot(n);
-        if (missing > 0.0) {
+        if (missing > 0.0 && wa != 0.0) {
             Vec2 qa2 = qa - missing * n;
             keepInsideWalls(qa, qa2, ra, box, walls);
             qa = qa2;

@@ -52,7 +52,8 @@ struct WallCheck {
 double separate(Vec2& pa, Vec2& pb, const PairShape& pair, const BoxSettings& box, const WallSettings& walls);
 
 /// Pushes pa and pb apart along n by `depth`, shared as wa : wb, stopping a
-/// ball at a wall it was inside (its partner then takes the rest).
+/// ball at a wall it was inside (its partner then takes the rest). A ball of
+/// inverse mass 0 (pinned) is never moved.
 void pushApart(Vec2& pa, Vec2& pb, const PairShape& pair, double depth, const BoxSettings& box,
                const WallSettings& walls);
 
@@ -63,6 +64,8 @@ inline void pushApartWithin(Vec2& pa, Vec2& pb, const PairShape& pair, double de
                             const BoxSettings& box, const WallSettings& walls)
 {
     const double w = pair.wa + pair.wb;
+    if (w == 0.0) // two pinned balls: neither moves
+        return;
     const double shareA = (w > 0.0 && std::isfinite(w)) ? pair.wa / w : 0.5;
     const double moveA = depth * shareA;
     const Vec2 qa = pa - moveA * pair.n, qb = pb + (depth - moveA) * pair.n;

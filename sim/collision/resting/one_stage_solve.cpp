@@ -129,20 +129,18 @@ void OneStageSolve::relax(RestingRows& r, const SubStepContext& c, CollisionProf
 // into the pile.
 void OneStageSolve::bounce(RestingRows& r, const SubStepContext& c, CollisionProfile& profile, bool profiling)
 {
-    const double e = c.restitution;
     bool any = false;
     for (std::size_t k = 0; k < r.rowCount; ++k) {
         const double vn0 = r.vn0[k];
         if (!(-vn0 > c.restingSpeed) || !(r.impulse[k] > 0.0))
             continue;
-        r.pairRows[k].allowed = static_cast<float>(e * vn0); // v_n ≥ e·|v_n0|
+        r.pairRows[k].allowed = static_cast<float>(r.restitutionOf(r.pairRows[k], c) * vn0); // v_n ≥ e·|v_n0|
         any = true;
     }
-    const double ew = c.walls.restitution;
     for (WallRow& row : r.wallRows) {
         if (!(row.into0 > c.restingSpeed) || !(row.impulse > 0.0) || row.allowed != 0.0)
             continue;
-        row.allowed = -ew * row.into0; // leaves at e_w times the speed it came with
+        row.allowed = -r.restitutionOf(row, c) * row.into0; // leaves at e_w times the speed it came with
         any = true;
     }
     if (any)

@@ -17,6 +17,7 @@ void RestingRows::build(BallState& balls, const SubStepContext& c, const std::ve
                         const unsigned char* asleep)
 {
     m_asleep = asleep;
+    m_ownRestitution = c.ownRestitution;
     m_startShift[0] = c.startLag * c.gravityX * c.h * c.h;
     m_startShift[1] = c.startLag * c.gravityY * c.h * c.h;
     prepare(balls.size());
@@ -95,6 +96,7 @@ void RestingRows::prepare(int n)
         bodyPositions.resize(size);
         bodyVelocity0.resize(2 * size);
         bodyShift.resize(2 * size);
+        bodyRestitution.resize(size);
     }
     bodyCount = 0;
 }
@@ -123,9 +125,13 @@ int RestingRows::bodyFor(std::size_t i, const BallState& balls)
     bodyVelocity0[2 * kk] = back[0] ? 0.0 : v[2 * i];
     bodyVelocity0[2 * kk + 1] = back[1] ? 0.0 : v[2 * i + 1];
     // What x − v·h misses its start by (sub_step_context.h); along an axis
-    // whose wall bounce was taken back it starts on the wall instead.
+    // whose wall bounce was taken back it starts on the wall instead, and a
+    // pinned ball, which no force moved, starts where it is.
+    if (m_ownRestitution)
+        bodyRestitution[kk] = m_ownRestitution[i];
+    const bool pinned = balls.pinned[i] != 0;
     for (int axis = 0; axis < 2; ++axis)
-        bodyShift[2 * kk + static_cast<std::size_t>(axis)] = back[axis] ? 0.0 : m_startShift[axis];
+        bodyShift[2 * kk + static_cast<std::size_t>(axis)] = (back[axis] || pinned) ? 0.0 : m_startShift[axis];
     bodyPositions[kk] = {x[2 * i], x[2 * i + 1], balls.radius[static_cast<Eigen::Index>(i)], w};
     return k;
 }
@@ -141,8 +147,9 @@ int RestingRows::bodyFor(std::size_t i, const BallState& balls)
 void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
 {
     tookBack.assign(2 * static_cast<std::size_t>(balls.size()), 0);
-    const double ew = c.walls.restitution;
-    if (!(ew > 0.0))
+    const double wallE = c.walls.restitution;
+    const double* own = c.ownRestitution; // nullptr: wallE for every ball
+    if (!own && !(wallE > 0.0))
         return;
     const bool on[2][2] = {{c.walls.left, c.walls.right}, {c.walls.top, c.walls.bottom}};
     const double size[2] = {c.box.width, c.box.height};
@@ -152,6 +159,9 @@ void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
     const bool staged = c.solver.stages > 1;
     for (int i = 0; i < balls.size(); ++i) {
         const double r = radius[i];
+        const double ew = own ? effectiveRestitution(own[i], wallE) : wallE;
+        if (!(ew > 0.0))
+            continue; // a bounce at e_w = 0 cannot be taken back
         for (int k = 0; k < 2; ++k) {
             if (!(2.0 * r <= size[k]))
                 continue;

@@ -121,6 +121,21 @@ public:
     void restoreRowOrder();
     /// Per ball, whether an impulse touched it in the last solve.
     const std::vector<unsigned char>& held() const { return m_held; }
+    /// The restitution a pair row bounces with: the world's, or the smaller
+    /// of its balls' own (ball_state.h, pairRestitution).
+    double restitutionOf(const PairRow& row, const SubStepContext& c) const
+    {
+        return c.ownRestitution ? pairRestitution(bodyRestitution[static_cast<std::size_t>(row.a)],
+                                                  bodyRestitution[static_cast<std::size_t>(row.b)], c.restitution)
+                                : c.restitution;
+    }
+    /// The restitution a wall row's ball bounces off its wall with.
+    double restitutionOf(const WallRow& row, const SubStepContext& c) const
+    {
+        return c.ownRestitution
+                   ? effectiveRestitution(bodyRestitution[static_cast<std::size_t>(row.body)], c.walls.restitution)
+                   : c.walls.restitution;
+    }
     /// Forgets the impulses kept for the next warm start.
     void forget() { m_warmCount = -1; }
 
@@ -136,6 +151,7 @@ public:
     std::vector<BodyPosition> bodyPositions;
     std::vector<double> bodyVelocity0;    // per body: x, y velocity the integrator moved it by
     std::vector<double> bodyShift;        // per body, px: x, y to add to x − v·h for its start (sub_step_context.h)
+    std::vector<double> bodyRestitution;  // per body: its ball's own restitution (read only with c.ownRestitution)
     std::vector<int> bodyOf;              // per ball: its body in this solve (−1: none; all −1 between solves)
     std::vector<unsigned char> tookBack;  // per ball and axis: 1 when stage 0 took its bounce back
     RowStrips strips;                     // the rows cut into strips for the passes (row_strips.h)
@@ -158,6 +174,7 @@ private:
     std::vector<WallRow> m_spareWalls;
     std::vector<unsigned char> m_held;       // per ball: an impulse touched it in the last solve
     const unsigned char* m_asleep = nullptr; // per ball, this solve: it sleeps (nullptr: none does)
+    const double* m_ownRestitution = nullptr; // per ball, this solve: SubStepContext::ownRestitution
     // The pairs of two sleepers, not solved, in (a, b) order, with the
     // impulse they had when their second ball fell asleep: their warm start
     // when they wake.

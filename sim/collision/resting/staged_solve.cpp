@@ -196,14 +196,14 @@ bool StagedSolve::markBounces(RestingRows& r, const SubStepContext& c)
     for (std::size_t k = 0; k < r.rowCount; ++k) {
         const double hit = std::max(m_hitSpeed[k], r.vn0[k]); // never faster than at the end
         if (r.vn0[k] != 0.0 && -hit > c.restingSpeed && m_pushed[k]) {
-            r.pairRows[k].allowed = static_cast<float>(c.restitution * hit); // v_n ≥ e·|v_hit|
+            r.pairRows[k].allowed = static_cast<float>(r.restitutionOf(r.pairRows[k], c) * hit); // v_n ≥ e·|v_hit|
             m_pushed[k] = 2;
             any = true;
         }
     }
     for (WallRow& row : r.wallRows) {
         if (row.allowed > c.restingSpeed) {
-            row.allowed = c.walls.restitution * row.allowed;
+            row.allowed = r.restitutionOf(row, c) * row.allowed;
             any = true;
         } else {
             row.allowed = -1.0; // below 0: no bounce

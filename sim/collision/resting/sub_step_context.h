@@ -15,6 +15,9 @@ struct SubStepContext {
     BoxSettings box;              ///< the box the walls bound
     WallSettings walls;           ///< which walls are on, their restitution
     double restitution = 1.0;     ///< 1, ball–ball restitution e
+    /// 1, per ball, its own restitution or kWorldRestitution (ball_state.h);
+    /// nullptr when no ball has one: restitution and walls.restitution hold for all
+    const double* ownRestitution = nullptr;
     double restingSpeed = 0.0;    ///< px/s, v_rest = restingFactor·|g|·h: slower approaches rest instead of bouncing
     double gravity = 0.0;         ///< px/s², |g|
     double gravityX = 0.0;        ///< px/s², g along x (the staged solve adds g·h/stages per stage)
