@@ -626,6 +626,14 @@ void GuiEditingTest::pinFromTheMenuIsOneUndoStep()
     QCOMPARE(w.balls().pinned[1], static_cast<unsigned char>(1));
     QCOMPARE(w.undo()->count(), 1);
     const sim::BallState pinned = w.balls();
+    // The class sees it: a dark nail head on the ball's centre.
+    {
+        const QImage picture = canvas->renderImage();
+        const QPointF centre = canvas->worldToWidget(sim::Vec2(w.balls().position.col(1)));
+        const QColor nail = picture.pixelColor((centre * picture.devicePixelRatio()).toPoint());
+        QVERIFY2(nail.lightness() < 90, qPrintable(nail.name()));
+        QVERIFY(nail.rgb() != w.balls().color[1]);
+    }
     {
         QMenu menu;
         canvas->fillContextMenu(menu, on);

@@ -1,8 +1,9 @@
 // The balls, always drawn: each as its cached sprite (or one antialiased
 // ellipse), balls touching another in the marked colour when [colliding] is on
 // or the collision response is "flag", the theme's outlines and rings, and a
-// dotted ring round the ball the readout or the selection talks about; when
-// zoomed, a cross on the centre of each large ball.
+// dotted ring round the ball the readout or the selection talks about; a nail
+// head on each pinned ball and, when zoomed, a cross on the centre of each
+// large ball.
 
 #include "overlay_table.h"
 
@@ -127,6 +128,29 @@ void paintCentreMarks(const PaintContext& c)
     p.drawLines(lines);
 }
 
+// A pinned ball carries a nail head on its centre: a dark disc with a light
+// rim, so the class sees which balls cannot move.
+void paintPins(const PaintContext& c)
+{
+    const sim::BallState& balls = c.world.balls();
+    if (!balls.anyPinned())
+        return;
+    QPainter& p = c.painter;
+    const double k = c.options.lineScale;
+    const sim::Matrix2X& at = drawnPositions(balls, c.options);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(255, 255, 255, 230), 1.5 * k));
+    p.setBrush(QColor::fromRgb(canvas_colors::kFrame));
+    for (int i = 0; i < balls.size(); ++i) {
+        if (!balls.pinned[static_cast<std::size_t>(i)])
+            continue;
+        // As large as the ball allows, and never larger than 5 px (times the line scale).
+        const double r = std::min(5.0 * k, 0.45 * c.view.toWidget(balls.radius[i]));
+        if (r >= 1.0)
+            p.drawEllipse(c.view.toWidget(sim::Vec2(at.col(i))), r, r);
+    }
+}
+
 void paintBalls(const PaintContext& c)
 {
     const sim::BallState& balls = c.world.balls();
@@ -140,6 +164,7 @@ void paintBalls(const PaintContext& c)
     p.setRenderHint(QPainter::Antialiasing, true);
     paintOutlines(c, mark);
     paintCentreMarks(c);
+    paintPins(c);
     // The ball the readout or the selection talks about gets a ring.
     int ringed = c.options.selected;
     if (ringed < 0 && c.options.overlays.readout && n > 0)
