@@ -25,7 +25,7 @@ namespace forcelab {
 
 /// The overlays a lesson can switch on (its "overlays" names in brackets).
 struct Overlays {
-    bool grid = true;          ///< [grid] faint lines every 50 px, labelled every 100 px
+    bool grid = true;          ///< [grid] faint lines every 50 px, labelled every 100 px (zoomed: round steps for the scale)
     bool velocity = false;     ///< [velocity] velocity arrows
     bool acceleration = false; ///< [acceleration] acceleration arrows
     bool forces = false;       ///< [forces] net force arrows, F = m a
@@ -187,9 +187,9 @@ public:
     static ArrowScales arrowScales(const sim::World& world, const ViewTransform& view, const PaintOptions& options,
                                    const sim::Matrix2X* accelerations);
 
-    /// The grid's labelled lines are the smallest round spacing (1, 2 or 5 ×
-    /// 10^k world px) at least this many widget px apart: 100 px apart in a
-    /// box drawn at 0.8 to 1.6 times its size.
+    /// In a zoomed or moved view the grid's labelled lines are the smallest
+    /// round spacing (1, 2 or 5 × 10^k world px) at least this many widget px
+    /// apart (the fitted view keeps 100 px, with lines every 50 px).
     static constexpr double kGridLabelPixels = 80.0;
     /// World px between the grid's labelled lines at `scale` widget px per world px.
     static double gridStep(double scale);

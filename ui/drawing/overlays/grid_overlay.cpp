@@ -1,6 +1,7 @@
-// The grid overlay [grid]: faint lines and stronger, labelled ones at round
-// spacings in world px (1, 2 or 5 × 10^k, 100 px at the normal size), so the
-// student reads positions off the picture in the readout's units at any zoom.
+// The grid overlay [grid]: faint lines every 50 px and stronger, labelled ones
+// every 100 px in the box as a lesson opens it; zoomed or moved, the labelled
+// lines are a round spacing (1, 2 or 5 × 10^k px) for the scale. The student
+// reads positions off the picture in the readout's units at any zoom.
 
 #include "overlay_table.h"
 
@@ -30,9 +31,14 @@ void paintGrid(const PaintContext& c)
     if (shown.isEmpty())
         return;
     const sim::BoxSettings& size = c.world.settings().box;
-    const double major = WorldPainter::gridStep(view.scale());
-    c.frame.gridStep = major;
+    // The box as a lesson opens it: lines every 50 px, labels every 100 px
+    // (lesson 1 says so), unless they would be closer than 8 px. Zoomed or
+    // moved: the round spacing for the scale.
+    const double major = view.moved() ? WorldPainter::gridStep(view.scale()) : 100.0;
     const double minor = 0.5 * major;
+    if (!view.moved() && !(view.toWidget(minor) >= 8.0))
+        return; // lines closer than 8 px would only grey the box
+    c.frame.gridStep = major;
     // The lines strictly inside the box that are on screen, as multiples of the minor step.
     const sim::Vec2 from = view.toWorld(shown.topLeft()), to = view.toWorld(shown.bottomRight());
     auto range = [&](double low, double high, double length) {
@@ -61,6 +67,8 @@ void paintGrid(const PaintContext& c)
 
     // Labels on the major lines, along the top and the left of what is shown;
     // the first one across the top says the unit.
+    if (!(view.toWidget(major) >= 40.0))
+        return; // labels closer than 40 px would run into each other
     const double k = c.options.lineScale;
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::lround(11 * k)));
