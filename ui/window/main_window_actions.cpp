@@ -203,20 +203,21 @@ void MainWindow::createCameraActions()
 {
     m_zoomInAction = new QAction(tr("Zoom &In"), this);
     m_zoomInAction->setObjectName(QStringLiteral("zoomInAction"));
-    m_zoomInAction->setShortcuts({QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Equal),
-                                  QKeySequence(Qt::CTRL | Qt::Key_Plus), QKeySequence(Qt::CTRL | Qt::Key_Equal)});
+    // Plain keys, one press in front of the class; Ctrl with + and − is left
+    // for the text size.
+    m_zoomInAction->setShortcuts({QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Equal)});
     m_zoomInAction->setToolTip(tr("Zoom in on the middle (+); the mouse wheel zooms in on the pointer"));
     connect(m_zoomInAction, &QAction::triggered, m_canvas, &Canvas::zoomIn);
 
     m_zoomOutAction = new QAction(tr("Zoom &Out"), this);
     m_zoomOutAction->setObjectName(QStringLiteral("zoomOutAction"));
-    m_zoomOutAction->setShortcuts({QKeySequence(Qt::Key_Minus), QKeySequence(Qt::CTRL | Qt::Key_Minus)});
+    m_zoomOutAction->setShortcut(QKeySequence(Qt::Key_Minus));
     m_zoomOutAction->setToolTip(tr("Zoom out (−), to see balls that left the box"));
     connect(m_zoomOutAction, &QAction::triggered, m_canvas, &Canvas::zoomOut);
 
     m_fitBoxAction = new QAction(tr("Fit the &Box"), this);
     m_fitBoxAction->setObjectName(QStringLiteral("fitBoxAction"));
-    m_fitBoxAction->setShortcuts({QKeySequence(Qt::Key_0), QKeySequence(Qt::CTRL | Qt::Key_0)});
+    m_fitBoxAction->setShortcut(QKeySequence(Qt::Key_0));
     m_fitBoxAction->setToolTip(tr("Show the whole box, as large as it fits (0)"));
     connect(m_fitBoxAction, &QAction::triggered, m_canvas, &Canvas::fitBox);
 
