@@ -5,7 +5,7 @@
 // that asks for a changed ball is done through the editor and checked
 // against what physics says must then happen.
 
-#include "gui_settle.h"
+#include "gui_workbench.h"
 #include "ui/canvas/canvas.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/ball_clipboard.h"
@@ -39,6 +39,7 @@
 #include <numbers>
 
 using namespace forcelab;
+using forcelab::test::sendMouse;
 
 namespace {
 
@@ -48,16 +49,6 @@ bool sameBalls(const sim::BallState& a, const sim::BallState& b)
     return a.size() == b.size() && a.position == b.position && a.velocity == b.velocity && a.radius == b.radius &&
            a.mass == b.mass && a.inverseMass == b.inverseMass && a.charge == b.charge && a.color == b.color &&
            a.home == b.home && a.pinned == b.pinned && a.restitution == b.restitution;
-}
-
-void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons,
-               Qt::KeyboardModifiers modifiers = Qt::NoModifier, int afterMs = 20)
-{
-    static quint64 ms = 1000;
-    ms += afterMs;
-    QMouseEvent event(type, pos, w->mapToGlobal(pos), button, buttons, modifiers);
-    event.setTimestamp(ms);
-    QApplication::sendEvent(w, &event);
 }
 
 // A press, a few moves and a release after the hand has stood still for
@@ -79,22 +70,8 @@ QAction* menuAction(QMenu& menu, const QString& text)
     return nullptr;
 }
 
-struct Workbench {
-    explicit Workbench(const QString& lesson)
-        : window(lesson)
-    {
-        window.resize(1280, 800);
-        window.show();
-    }
-    bool ready()
-    {
-        if (!QTest::qWaitForWindowExposed(&window))
-            return false;
-        window.activateWindow();
-        return QTest::qWaitForWindowActive(&window) && test::waitForSettledLayout(&window);
-    }
-    SimulationController* controller() { return window.controller(); }
-    const sim::BallState& balls() { return window.controller()->world().balls(); }
+struct Workbench : test::Workbench {
+    using test::Workbench::Workbench;
     QUndoStack* undo() { return window.findChild<QUndoStack*>(QStringLiteral("parameterUndoStack")); }
     QTableView* table()
     {
@@ -143,7 +120,6 @@ struct Workbench {
         for (int k = 0; k < steps; ++k)
             world.step();
     }
-    MainWindow window;
 };
 
 } // namespace

@@ -4,7 +4,7 @@
 // Each test checks where world points land on the screen, to 1e-9 px, and
 // that moving the view never touches the physics.
 
-#include "gui_settle.h"
+#include "gui_workbench.h"
 #include "ui/canvas/canvas.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/drawing/round_steps.h"
@@ -21,18 +21,9 @@
 #include <cmath>
 
 using namespace forcelab;
+using forcelab::test::sendMouse;
 
 namespace {
-
-void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons,
-               Qt::KeyboardModifiers modifiers = Qt::NoModifier)
-{
-    static quint64 ms = 1000;
-    ms += 20;
-    QMouseEvent event(type, pos, w->mapToGlobal(pos), button, buttons, modifiers);
-    event.setTimestamp(ms);
-    QApplication::sendEvent(w, &event);
-}
 
 void dragWith(QWidget* w, QPointF from, QPointF to, Qt::MouseButton button, Qt::KeyboardModifiers modifiers = {})
 {
@@ -64,23 +55,9 @@ bool sameBalls(const sim::BallState& a, const sim::BallState& b)
     return a.size() == b.size() && a.position == b.position && a.velocity == b.velocity;
 }
 
-struct Workbench {
-    explicit Workbench(const QString& lesson)
-        : window(lesson)
-    {
-        window.resize(1280, 800);
-        window.show();
-    }
-    bool ready()
-    {
-        if (!QTest::qWaitForWindowExposed(&window))
-            return false;
-        window.activateWindow();
-        return QTest::qWaitForWindowActive(&window) && test::waitForSettledLayout(&window);
-    }
+struct Workbench : test::Workbench {
+    using test::Workbench::Workbench;
     Canvas* canvas() { return window.canvas(); }
-    SimulationController* controller() { return window.controller(); }
-    const sim::BallState& balls() { return window.controller()->world().balls(); }
     QAction* action(const char* name) { return window.findChild<QAction*>(QString::fromLatin1(name)); }
     // A frame painted with the camera as it is now.
     bool painted()
@@ -89,7 +66,6 @@ struct Workbench {
         canvas()->update();
         return QTest::qWaitFor([&] { return canvas()->framesPainted() > before; });
     }
-    MainWindow window;
 };
 
 // The view's stage middle in widget px.
