@@ -279,7 +279,7 @@ void TestGuiZoom::gridAndScaleBarUseRoundWorldSteps()
     };
     auto previousRound = [](double step) { // the round step below
         const double mantissa = step / std::pow(10.0, std::floor(std::log10(step) + 1e-12));
-        return std::abs(mantissa - 1.0) < 1e-9 ? step / 2.0 : (std::abs(mantissa - 2.0) < 1e-9 ? step / 2.0 : step * 0.4);
+        return std::abs(mantissa - 5.0) < 1e-9 ? step * 0.4 : step / 2.0; // 5 → 2, 2 → 1, 1 → 0.5
     };
     for (double zoom : {0.05, 0.3, 1.0, 7.0, 300.0}) {
         Camera camera;

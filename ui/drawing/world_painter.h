@@ -25,7 +25,7 @@ namespace forcelab {
 
 /// The overlays a lesson can switch on (its "overlays" names in brackets).
 struct Overlays {
-    bool grid = true;          ///< [grid] faint lines every 50 px, labelled every 100 px (zoomed: round steps for the scale)
+    bool grid = true;          ///< [grid] lines every 50 px, labelled every 100 px (zoomed: round steps)
     bool velocity = false;     ///< [velocity] velocity arrows
     bool acceleration = false; ///< [acceleration] acceleration arrows
     bool forces = false;       ///< [forces] net force arrows, F = m a

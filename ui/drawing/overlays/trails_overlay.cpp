@@ -75,14 +75,16 @@ void paintTrails(const PaintContext& c)
         p.restore();
         return;
     }
-    // The layer covers the box (or the stage) on whole pixels, so a segment lands on the
-    // same pixels as when it is drawn straight onto the picture. Only the
-    // segments recorded since the last frame are drawn into it.
+    // The layer covers the box (or the stage) on whole pixels, so a segment
+    // lands on the same pixels as when it is drawn straight onto the
+    // picture. Only the segments recorded since the last frame are drawn
+    // into it.
     const QRectF cover = QRectF(box.toAlignedRect());
     const qreal dpr = c.dpr;
     PathLayer& layer = c.paths;
     const bool same = layer.generation == trails.generation() && layer.start == start && layer.box == cover &&
-                      layer.scale == view.scale() && layer.origin == view.origin() && layer.dpr == dpr && layer.lineScale == options.lineScale &&
+                      layer.scale == view.scale() && layer.origin == view.origin() && layer.dpr == dpr &&
+                      layer.lineScale == options.lineScale &&
                       layer.balls == tracked && layer.colors == colors && layer.drawnTo >= start &&
                       layer.drawnTo <= newest && !layer.image.isNull();
     if (!same) {
