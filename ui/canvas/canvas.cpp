@@ -369,7 +369,7 @@ void Canvas::paintEvent(QPaintEvent*)
     timer.start();
     QPainter painter(this);
     m_options.positions = m_controller->interpolatedPositions();
-    if (m_following) // the view stays where the ball was when following stops
+    if (m_following) // the view stays where the ball was last drawn if it goes (deleted, deselected)
         m_options.camera = shownCamera();
     paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
     if (m_ruler.shown)

@@ -269,6 +269,8 @@ private:
     void showNote(const QString& message, bool refused);
     /// The options the frame is painted with: the shown camera and the slow-motion positions.
     PaintOptions frameOptions() const;
+    /// Widget px per world px of the fitted view that `view` (made with the shown camera) zooms.
+    double fittedScale(const ViewTransform& view) const;
     /// A pan drag (the middle button, or Ctrl + the left button on no arrow tip).
     bool startsPan(const QMouseEvent& event) const;
 

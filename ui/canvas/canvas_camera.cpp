@@ -46,6 +46,12 @@ void Canvas::setCamera(const Camera& camera)
     emit cameraChanged();
 }
 
+// The scale of the fitted view (widget px per world px), which the zoom multiplies.
+double Canvas::fittedScale(const ViewTransform& view) const
+{
+    return view.scale() / shownCamera().zoom;
+}
+
 void Canvas::zoomAbout(double factor, const QPointF& widget)
 {
     const ViewTransform view = viewTransform();
@@ -53,8 +59,7 @@ void Canvas::zoomAbout(double factor, const QPointF& widget)
     const double zoom = std::clamp(camera.zoom * factor, Camera::kMinZoom, Camera::kMaxZoom);
     if (!(zoom > 0.0) || zoom == camera.zoom || !(view.scale() > 0.0))
         return;
-    // The scale of the fitted view, which the zoom multiplies.
-    const double fitted = view.scale() / camera.zoom;
+    const double fitted = fittedScale(view);
     const QPointF middle = view.area().center();
     // While following, the ball stays in the middle: zoom about it.
     const QPointF anchor = m_following ? middle : widget;
@@ -111,15 +116,13 @@ Camera Canvas::allBallsCamera() const
     }
     if (!(right > left && bottom > top))
         return Camera();
-    // The fitted view's scale and the room it fits the box into.
-    PaintOptions fitted = m_options;
-    fitted.camera = Camera();
-    const ViewTransform view = WorldPainter::view(m_controller->world(), liveArea(), fitted);
+    // The room the view fits things into (the same at every zoom).
+    const ViewTransform view = viewTransform();
     const double margin = m_options.margin;
     const double w = std::max(1.0, view.area().width() - 2.0 * margin);
     const double h = std::max(1.0, view.area().height() - 2.0 * margin);
     Camera camera;
-    camera.zoom = std::clamp(std::min(w / (right - left), h / (bottom - top)) / view.scale(), Camera::kMinZoom,
+    camera.zoom = std::clamp(std::min(w / (right - left), h / (bottom - top)) / fittedScale(view), Camera::kMinZoom,
                              Camera::kMaxZoom);
     camera.centre = sim::Vec2(0.5 * (left + right), 0.5 * (top + bottom));
     return camera;

@@ -18,7 +18,6 @@ SimulationController::SimulationController(QObject* parent)
     connect(&m_timer, &QTimer::timeout, this, &SimulationController::tick);
     m_clock.start();
     m_timeline.start(m_world);
-    m_handMoved = false;
 }
 
 std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
@@ -86,7 +85,7 @@ void SimulationController::stepWorld()
     }
     if (m_world.stepCount() < m_timeline.latestStep()) {
         m_timeline.replayStep(m_world);
-            if (m_ghost)
+        if (m_ghost)
             m_ghost->setPointer(m_world.pointer());
         return;
     }

@@ -233,19 +233,20 @@ void MainWindow::createCameraActions()
     m_followAction->setShortcut(QKeySequence(Qt::Key_F));
     m_followAction->setToolTip(tr("Keep the selected ball in the middle of the view as it moves (F)"));
     connect(m_followAction, &QAction::toggled, m_canvas, &Canvas::setFollowing);
-    connect(m_canvas, &Canvas::cameraChanged, this, [this] {
-        m_followAction->setChecked(m_canvas->isFollowing()); // a pan or a fit stops following
-        const double zoom = m_canvas->camera().zoom;
-        m_zoomInAction->setEnabled(zoom < Camera::kMaxZoom);
-        m_zoomOutAction->setEnabled(zoom > Camera::kMinZoom);
-    });
 
     for (QAction* action : {m_zoomInAction, m_zoomOutAction, m_fitBoxAction, m_fitBallsAction, m_followAction})
         addAction(action); // their keys work on the stage too, where the menus are hidden
-    // Following needs a ball to follow.
-    auto sync = [this] { m_followAction->setEnabled(m_canvas->selectedBall() >= 0 || m_canvas->isFollowing()); };
-    connect(m_canvas, &Canvas::selectedBallChanged, this, sync);
+    // The actions follow the canvas: a pan or a fit stops following, the
+    // zoom keys grey at the limits, and following needs a ball to follow.
+    auto sync = [this] {
+        m_followAction->setChecked(m_canvas->isFollowing());
+        m_followAction->setEnabled(m_canvas->selectedBall() >= 0 || m_canvas->isFollowing());
+        const double zoom = m_canvas->camera().zoom;
+        m_zoomInAction->setEnabled(zoom < Camera::kMaxZoom);
+        m_zoomOutAction->setEnabled(zoom > Camera::kMinZoom);
+    };
     connect(m_canvas, &Canvas::cameraChanged, this, sync);
+    connect(m_canvas, &Canvas::selectedBallChanged, this, sync);
     sync();
 }
 

@@ -27,16 +27,21 @@ QSizeF panelSize(const QFont& font, const QString& widest, int lines, double lin
     return {fm.horizontalAdvance(widest) + 2 * pad, fm.lineSpacing() * lines + 2 * pad};
 }
 
+void drawPanelCard(QPainter& p, const QRectF& card)
+{
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(card, 6, 6);
+}
+
 void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStringList& lines,
                const QList<QColor>& colors, double lineScale)
 {
     p.setFont(font);
     const QFontMetricsF fm(font);
     const double pad = 8.0 * lineScale;
-    p.setRenderHint(QPainter::Antialiasing, true);
-    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
-    p.setBrush(QColor(255, 255, 255, 235));
-    p.drawRoundedRect(panel, 6, 6);
+    drawPanelCard(p, panel);
     double y = panel.top() + pad + fm.ascent();
     for (qsizetype k = 0; k < lines.size(); ++k) {
         p.setPen(colors.value(k, QColor(0x1d, 0x22, 0x2c)));

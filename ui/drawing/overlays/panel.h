@@ -25,6 +25,9 @@ QFont panelFont(int pixels, double lineScale);
 /// A panel's size for `lines` lines as wide as `widest`, with its padding.
 QSizeF panelSize(const QFont& font, const QString& widest, int lines, double lineScale);
 
+/// The panels' white rounded card with its thin dark edge (the scale bar sits on one too).
+void drawPanelCard(QPainter& p, const QRectF& card);
+
 /// Draws the card and its lines, line k in colors[k] (dark text where none is given).
 void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStringList& lines,
                const QList<QColor>& colors, double lineScale);

@@ -3,6 +3,7 @@
 // a zoomed picture still says how large things are.
 
 #include "overlay_table.h"
+#include "panel.h"
 
 #include "ui/drawing/round_steps.h"
 
@@ -52,10 +53,7 @@ void paintScaleBar(const PaintContext& c)
     const double height = fm.height() + 14.0 * k + 2 * pad;
     const QRectF area = view.area();
     const QRectF card(area.left() + 8.0 * k, area.bottom() - 8.0 * k - height, width, height);
-    p.setRenderHint(QPainter::Antialiasing, true);
-    p.setPen(QPen(QColor(0x2d, 0x33, 0x40, 160), 1.0));
-    p.setBrush(QColor(255, 255, 255, 235));
-    p.drawRoundedRect(card, 6, 6);
+    drawPanelCard(p, card);
     // The bar with a tick at each end, then the words under it.
     const double y = card.top() + pad + 6.0 * k;
     const QLineF bar(card.left() + pad, y, card.left() + pad + pixels, y);
