@@ -4,12 +4,16 @@
 // readout numbers without rounding noise.
 
 #include "ui/docks/plots_dock.h"
+#include "ui/drawing/world_painter.h"
+#include "lessons/lesson_loader.h"
+#include "sim/world/world.h"
 #include "ui/controls/readable_numbers.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "sim/world/scene.h"
 
 #include <QChart>
+#include <QRegularExpression>
 #include <QChartView>
 #include <QLineSeries>
 #include <QTest>
@@ -44,6 +48,7 @@ private slots:
     void niceAxisHasRoundTicksAndOneFactor_data();
     void niceAxisHasRoundTicksAndOneFactor();
     void roundedDropsNoiseBelowTheScale();
+    void panelsWriteNumbersAsAStudentDoes();
     void countsHaveTheRightPlural();
     void bigEnergiesAreReadable();
 };
@@ -89,12 +94,72 @@ void GuiPlotsTest::niceAxisHasRoundTicksAndOneFactor()
 void GuiPlotsTest::roundedDropsNoiseBelowTheScale()
 {
     QCOMPARE(rounded(1.39698e-09, 1000.0), QStringLiteral("0"));
-    QCOMPARE(rounded(-12.34567, 1000.0), QStringLiteral("-12")); // four digits of 1000: whole numbers
-    QCOMPARE(rounded(-12.34567, 100.0), QStringLiteral("-12.3"));
-    QCOMPARE(rounded(-1.4e-12, 0.0), QStringLiteral("-1.4e-12")); // alone, a small value keeps its digits
+    QCOMPARE(rounded(-12.34567, 1000.0), QStringLiteral("−12")); // four digits of 1000: whole numbers
+    QCOMPARE(rounded(-12.34567, 100.0), QStringLiteral("−12.3"));
+    QCOMPARE(rounded(-1.4e-12, 0.0), QStringLiteral("−1.4 × 10⁻¹²")); // alone, a small value keeps its digits
     QCOMPARE(rounded(-1e-13, 1.0), QStringLiteral("0.000"));      // no "-0.000"
-    QCOMPARE(rounded(2.5e7, 2.5e7), QStringLiteral("2.5e+07"));
+    QCOMPARE(rounded(2.5e7, 2.5e7), QStringLiteral("2.5 × 10⁷"));
+    QCOMPARE(rounded(-1.164e-10, 1.6e8), QStringLiteral("0")); // a total momentum's noise
+    QCOMPARE(oneDecimal(-1.5e6), QStringLiteral("−1.5 × 10⁶"));
+    QCOMPARE(oneDecimal(-0.04), QStringLiteral("0.0"));
+    QCOMPARE(oneDecimal(-12.34), QStringLiteral("−12.3"));
     QCOMPARE(rounded(std::nan(""), 1.0), QStringLiteral("—"));
+}
+
+// Every shipped lesson's readout and totals, in every shape, at the start
+// and after 3 s: no computer notation ("1.601e+08"), no hyphen for a minus,
+// and a unit on each line that holds a number (a line of energies or a
+// momentum names its unit once, after "energy" or at the end).
+void GuiPlotsTest::panelsWriteNumbersAsAStudentDoes()
+{
+    const QRegularExpression computer(QStringLiteral(R"(\de[+-]?\d|-\d)"));
+    const QRegularExpression digit(QStringLiteral(R"(\d)"));
+    const QStringList units{QStringLiteral("px"), QStringLiteral(" s"), QStringLiteral("mass·")};
+    int checked = 0;
+    for (const QString& file : forcelab::LessonLoader::builtInFiles()) {
+        const forcelab::LoadResult loaded = forcelab::LessonLoader::load(file);
+        QVERIFY2(loaded.ok(), qPrintable(file));
+        forcelab::sim::World world(loaded.lesson->scene);
+        for (int pass = 0; pass < 2; ++pass) {
+            if (pass == 1)
+                for (int k = 0; k < 180 && !world.halted(); ++k)
+                    world.step();
+            if (world.balls().empty())
+                continue;
+            const forcelab::sim::Matrix2X a = world.accelerations();
+            QStringList lines;
+            for (auto shape : {WorldPainter::ReadoutShape::Panel, WorldPainter::ReadoutShape::Wide,
+                               WorldPainter::ReadoutShape::Short})
+                lines << WorldPainter::readoutText(world, 0, &a, shape);
+            const double scale = WorldPainter::momentumScale(world);
+            lines << WorldPainter::totalsText(world, false) << WorldPainter::totalsText(world, true)
+                  << WorldPainter::stageTotalsText(world.energy(), world.momentum(), true, scale)
+                  << WorldPainter::stageTotalsText(world.energy(), world.momentum(), false, scale);
+            for (const QString& line : lines) {
+                const QString where = file + QStringLiteral(": ") + line;
+                QVERIFY2(!computer.match(line).hasMatch(), qPrintable(where));
+                // Lines of energies under a head line "energy (unit)" and the
+                // column's momentum x and y carry the unit of their head line.
+                const bool underHead = line.startsWith(QStringLiteral("  "));
+                if (digit.match(line).hasMatch() && !line.startsWith(QStringLiteral("ball ")) && !underHead) {
+                    bool hasUnit = false;
+                    for (const QString& u : units)
+                        hasUnit = hasUnit || line.contains(u);
+                    QVERIFY2(hasUnit, qPrintable(where));
+                }
+                ++checked;
+            }
+        }
+    }
+    QVERIFY(checked > 1000);
+    // Lesson 19's orbit: kinetic 2.025 × 10⁶, and its total momentum, zero
+    // up to rounding, reads 0.
+    const forcelab::LoadResult orbit = forcelab::LessonLoader::load(QStringLiteral("two-bodies-in-orbit"));
+    QVERIFY(orbit.ok());
+    const forcelab::sim::World world(orbit.lesson->scene);
+    const QString totals = WorldPainter::totalsText(world, true).join(QLatin1Char('\n'));
+    QVERIFY2(totals.contains(QStringLiteral("kinetic 2.025 × 10⁶")), qPrintable(totals));
+    QVERIFY2(totals.contains(QStringLiteral("momentum (0, 0) mass·px/s")), qPrintable(totals));
 }
 
 void GuiPlotsTest::countsHaveTheRightPlural()

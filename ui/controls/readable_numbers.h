@@ -3,6 +3,8 @@
 // and one common factor instead of e+10 on every label, values rounded to the
 // digits that mean something, and counts with the right plural.
 
+#include "ui/drawing/human_number.h"
+
 #include <QString>
 
 class QValueAxis;
@@ -33,16 +35,5 @@ void applyNiceAxis(QValueAxis* valueAxis, const NiceAxis& axis);
 
 /// "1 evaluation", "3 evaluations": `one` is the singular, `many` the plural.
 QString countText(long long n, const QString& one, const QString& many);
-
-/// `value` with `digits` significant digits counted from `scale` (the size
-/// of the largest value it is shown with), so rounding noise far below that
-/// shows as 0: rounded(1.39698e-09, 1000) is "0", rounded(-12.34567, 1000) is
-/// "-12" and rounded(-12.34567, 100) is "-12.3".
-QString rounded(double value, double scale, int digits = 4);
-
-/// `value` with `digits` significant digits as a student writes it: "12.35",
-/// "0.0042", "−3" (a true minus sign), and from 10⁶ up or below 10⁻³ with a
-/// power of ten: "4.2 × 10⁹", "1.5 × 10⁻⁵". "—" for not-a-number, "∞" for infinity.
-QString humanNumber(double value, int digits = 4);
 
 } // namespace forcelab

@@ -23,8 +23,16 @@ QSizeF readoutSize(double lineScale)
 
 QSizeF totalsSize(double lineScale)
 {
-    return panelSize(panelFont(kTotalsPixels, lineScale), QStringLiteral("momentum  (-9.99999e+99, -9.99999e+99)"),
-                     kTotalsLines, lineScale);
+    sim::Energy e;
+    e.kinetic = e.potential = -9.999e+12;
+    const QStringList lines = WorldPainter::totalsText(e, sim::Vec2(-9.999e+12, -9.999e+12), false);
+    QString widest;
+    const QFont font = panelFont(kTotalsPixels, lineScale);
+    const QFontMetricsF fm(font);
+    for (const QString& line : lines)
+        if (fm.horizontalAdvance(line) > fm.horizontalAdvance(widest))
+            widest = line;
+    return panelSize(font, widest, static_cast<int>(lines.size()), lineScale);
 }
 
 // The same panels in two long lines, for a strip above the box: it costs
@@ -50,9 +58,9 @@ QSizeF wideReadoutSize(double lineScale)
 QSizeF wideTotalsSize(double lineScale)
 {
     sim::Energy e;
-    e.kinetic = e.potential = -9.999e+99;
+    e.kinetic = e.potential = -9.999e+12;
     return wideSize(panelFont(kTotalsPixels, lineScale),
-                    WorldPainter::totalsText(e, sim::Vec2(-9.999e+99, -9.999e+99), true), lineScale);
+                    WorldPainter::totalsText(e, sim::Vec2(-9.999e+12, -9.999e+12), true), lineScale);
 }
 
 QSizeF sourcesSize(const sim::WorldSettings& settings, double lineScale)

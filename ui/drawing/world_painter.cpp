@@ -5,6 +5,7 @@
 
 #include "world_painter.h"
 
+#include "human_number.h"
 #include "panel_layout.h"
 #include "overlays/overlay_table.h"
 
@@ -185,9 +186,11 @@ QStringList WorldPainter::readoutText(const sim::World& world, int selected, con
 QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2& v, const sim::Vec2& a, double t,
                                       ReadoutShape shape)
 {
+    // Positions and speeds with one decimal, from 10⁵ on with a power of
+    // ten (a stiff spring's −1.5 × 10⁶ px/s², never −1e+06).
     if (shape == ReadoutShape::Wide) {
         // Two long lines, for a strip above the box: it costs the box less height.
-        auto w = [](double value) { return QString::number(value, 'f', 1).rightJustified(8); };
+        auto w = [](double value) { return oneDecimal(value).rightJustified(8); };
         return {
             QStringLiteral("ball %1").arg(i).leftJustified(12) +
                 QStringLiteral("x %1  y %2 px    vx %3  vy %4 px/s").arg(w(x.x()), w(x.y()), w(v.x()), w(v.y())),
@@ -196,20 +199,16 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
         };
     }
     if (shape == ReadoutShape::Short) {
-        // x and y side by side, with one decimal, or four significant digits
-        // from 100,000 on (a stiff spring's −1e+06 px/s², not −1000000.0).
-        auto num = [](double value) {
-            return std::abs(value) < 1e5 ? QString::number(value, 'f', 1) : QString::number(value, 'g', 4);
-        };
+        // x and y side by side.
         return {
             QStringLiteral("ball %1   t = %2 s").arg(i).arg(t, 0, 'f', 3),
-            QStringLiteral("x %1  y %2 px").arg(num(x.x()), num(x.y())),
-            QStringLiteral("v (%1, %2) px/s").arg(num(v.x()), num(v.y())),
-            QStringLiteral("a (%1, %2) px/s²").arg(num(a.x()), num(a.y())),
-            QStringLiteral("speed %1 px/s").arg(v.norm(), 0, 'f', 1),
+            QStringLiteral("x %1  y %2 px").arg(oneDecimal(x.x()), oneDecimal(x.y())),
+            QStringLiteral("v (%1, %2) px/s").arg(oneDecimal(v.x()), oneDecimal(v.y())),
+            QStringLiteral("a (%1, %2) px/s²").arg(oneDecimal(a.x()), oneDecimal(a.y())),
+            QStringLiteral("speed %1 px/s").arg(oneDecimal(v.norm())),
         };
     }
-    auto num = [](double value) { return QString::number(value, 'f', 1).rightJustified(9); };
+    auto num = [](double value) { return oneDecimal(value).rightJustified(9); };
     return {
         QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
         QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
@@ -221,42 +220,72 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
 
 QStringList WorldPainter::totalsText(const sim::World& world, bool wide)
 {
-    return totalsText(world.energy(), world.momentum(), wide);
+    return totalsText(world.energy(), world.momentum(), wide, momentumScale(world));
 }
 
-QStringList WorldPainter::totalsText(const sim::Energy& e, const sim::Vec2& m, bool wide)
+double WorldPainter::momentumScale(const sim::World& world)
 {
+    const sim::BallState& balls = world.balls();
+    double sum = 0.0;
+    for (int i = 0; i < balls.size(); ++i)
+        sum += balls.mass[i] * balls.velocity.col(i).norm();
+    return sum;
+}
+
+namespace {
+
+// The energies with four digits counted from the largest of kinetic and
+// potential (a total that is their difference shows its rounding as 0),
+// the momentum from the sum of the balls' own momenta (a total of balls
+// moving apart reads 0, not −1.164 × 10⁻¹⁰).
+struct TotalsNumbers {
+    QString kinetic, potential, total, px, py;
+};
+
+TotalsNumbers totalsNumbers(const sim::Energy& e, const sim::Vec2& p, double momentumScale)
+{
+    const double energyScale = std::max(std::abs(e.kinetic), std::abs(e.potential));
+    const double pScale = std::max(momentumScale, p.norm());
+    return {rounded(e.kinetic, energyScale), rounded(e.potential, energyScale), rounded(e.total(), energyScale),
+            rounded(p.x(), pScale), rounded(p.y(), pScale)};
+}
+
+} // namespace
+
+QStringList WorldPainter::totalsText(const sim::Energy& e, const sim::Vec2& m, bool wide, double momentumScale)
+{
+    const TotalsNumbers n = totalsNumbers(e, m, momentumScale);
     if (wide) {
-        auto num = [](double value) { return QString::number(value, 'g', 4); };
+        // Short lines beside the momenta inset, which is taller than three of them.
         return {
-            QStringLiteral("kinetic %1  potential %2  total %3").arg(num(e.kinetic), num(e.potential), num(e.total())),
-            QStringLiteral("momentum (%1, %2)").arg(num(m.x()), num(m.y())),
+            QStringLiteral("energy in %1: total %2").arg(kEnergyUnit, n.total),
+            QStringLiteral("  kinetic %1  potential %2").arg(n.kinetic, n.potential),
+            QStringLiteral("momentum (%1, %2) %3").arg(n.px, n.py, kMomentumUnit),
         };
     }
-    auto num = [](double v) { return QString::number(v, 'g', 6); };
     return {
-        QStringLiteral("kinetic   %1").arg(num(e.kinetic)),
-        QStringLiteral("potential %1").arg(num(e.potential)),
-        QStringLiteral("total     %1").arg(num(e.total())),
-        QStringLiteral("momentum  (%1, %2)").arg(num(m.x()), num(m.y())),
+        QStringLiteral("energy in %1").arg(kEnergyUnit),
+        QStringLiteral("  kinetic   %1").arg(n.kinetic),
+        QStringLiteral("  potential %1").arg(n.potential),
+        QStringLiteral("  total     %1").arg(n.total),
+        QStringLiteral("momentum in %1").arg(kMomentumUnit),
+        QStringLiteral("  (%1, %2)").arg(n.px, n.py),
     };
 }
 
-QStringList WorldPainter::stageTotalsText(const sim::Energy& e, const sim::Vec2& p, bool column)
+QStringList WorldPainter::stageTotalsText(const sim::Energy& e, const sim::Vec2& p, bool column, double momentumScale)
 {
-    QStringList lines;
-    const QString kinetic = QString::number(e.kinetic, 'g', 4);
+    // Short lines under head lines that name the units: the bar sets them in
+    // text columns, a group (a head line and the indented lines under it)
+    // never split. In a column the momentum's x and y get a line each.
+    const TotalsNumbers n = totalsNumbers(e, p, momentumScale);
+    QStringList lines{QStringLiteral("energy (%1)").arg(kEnergyUnit), QStringLiteral("  kinetic %1").arg(n.kinetic),
+                      QStringLiteral("  potential %1").arg(n.potential), QStringLiteral("  total %1").arg(n.total),
+                      QStringLiteral("momentum (%1)").arg(kMomentumUnit)};
     if (column)
-        lines << QStringLiteral("energy") << QStringLiteral("  kinetic %1").arg(kinetic);
+        lines << QStringLiteral("  x %1").arg(n.px) << QStringLiteral("  y %1").arg(n.py);
     else
-        lines << QStringLiteral("energy: kinetic %1").arg(kinetic);
-    lines << QStringLiteral("  potential %1").arg(e.potential, 0, 'g', 4)
-          << QStringLiteral("  total %1").arg(e.total(), 0, 'g', 4);
-    if (column)
-        lines << QStringLiteral("momentum") << QStringLiteral("  x %1").arg(p.x(), 0, 'g', 4)
-              << QStringLiteral("  y %1").arg(p.y(), 0, 'g', 4);
-    else
-        lines << QStringLiteral("momentum (%1, %2)").arg(p.x(), 0, 'g', 4).arg(p.y(), 0, 'g', 4);
+        lines << QStringLiteral("  (%1, %2)").arg(n.px, n.py);
     return lines;
 }
 

@@ -215,7 +215,16 @@ public:
     /// The lines of the totals panel: kinetic, potential and total energy, momentum.
     static QStringList totalsText(const sim::World& world, bool wide = false);
     /// The same from an energy and a momentum already worked out.
-    static QStringList totalsText(const sim::Energy& e, const sim::Vec2& momentum, bool wide = false);
+    /// `momentumScale` (mass·px/s) is the size the momentum's digits are
+    /// counted from (momentumScale(world)); 0 counts them from the total.
+    static QStringList totalsText(const sim::Energy& e, const sim::Vec2& momentum, bool wide = false,
+                                  double momentumScale = 0.0);
+    /// The sum of the balls' own momenta' sizes, Σ m|v| (mass·px/s): the
+    /// scale a total momentum's rounding noise is measured against.
+    static double momentumScale(const sim::World& world);
+    /// The units the totals are written in: the lesson's mass unit times px and s.
+    static inline const QString kEnergyUnit = QStringLiteral("mass·px²/s²");
+    static inline const QString kMomentumUnit = QStringLiteral("mass·px/s");
     /// The shapes the readout's lines come in: the canvas panel's five lines,
     /// two long lines for a strip above the box, or the stage bar's short lines.
     enum class ReadoutShape { Panel, Wide, Short };
@@ -233,7 +242,8 @@ public:
     /// The totals in the stage bar's short lines: in a `column` the energy and
     /// the momentum get head lines of their own and the momentum's x and y a
     /// line each; in a row they take fewer lines.
-    static QStringList stageTotalsText(const sim::Energy& e, const sim::Vec2& momentum, bool column);
+    static QStringList stageTotalsText(const sim::Energy& e, const sim::Vec2& momentum, bool column,
+                                       double momentumScale = 0.0);
     /// Above this many balls, per-source force arrows are drawn for the selected ball only.
     static constexpr int kMaxSourceBalls = 12;
     /// Above this many balls, the momenta inset shows the sum only.

@@ -245,6 +245,15 @@ bool StageBar::readoutFits(const QString& text) const
     return false;
 }
 
+double StageBar::readoutPointSize(const QString& text) const
+{
+    if (m_readoutRoom.isEmpty())
+        return m_readoutFont.pointSizeF();
+    return bestFit(m_readoutFont, text.split(QLatin1Char('\n')), m_readoutRoom,
+                   m_vertical ? 1 : kMostReadoutColumns)
+        .font.pointSizeF();
+}
+
 void StageBar::fitReadout()
 {
     // The readout's lines are never cut: its font shrinks (to 7 pt at

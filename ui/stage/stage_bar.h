@@ -36,6 +36,9 @@ public:
     /// readout's own size or more (true while the room is not known yet): a
     /// row's readout then keeps its long lines, else it gets short ones.
     bool readoutFits(const QString& text) const;
+    /// The size `text` would be set at in the readout's room (its own size
+    /// while the room is not known yet).
+    double readoutPointSize(const QString& text) const;
     /// The lesson's sliders (StageSliders), under the buttons; not owned before, owned after.
     void setSliders(QWidget* sliders);
     /// Shows or hides the sliders' area (a row bar without room for them).

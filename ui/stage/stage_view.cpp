@@ -173,9 +173,11 @@ void StageView::updateReadout()
     if (!isStaged())
         return;
     // Long lines in a row, short ones in a column, and in a row too when
-    // the long ones would have to shrink out of reading size.
+    // the long ones would have to shrink out of reading size or the short
+    // ones, in text columns, are larger.
     const Readout text = readoutText();
-    const bool wide = !m_bar->isVertical() && m_bar->readoutFits(text.wide);
+    const bool wide = !m_bar->isVertical() && m_bar->readoutFits(text.wide) &&
+                      m_bar->readoutPointSize(text.wide) >= m_bar->readoutPointSize(text.narrow);
     m_bar->setReadout(wide ? text.wide : text.narrow);
 }
 
@@ -196,8 +198,9 @@ StageView::Readout StageView::readoutText() const
     if (m_ownOverlays.totals) {
         const sim::Energy e = world.energy();
         const sim::Vec2 p = world.momentum();
-        wide << WorldPainter::totalsText(e, p, true);
-        narrow << WorldPainter::stageTotalsText(e, p, m_bar->isVertical());
+        const double scale = WorldPainter::momentumScale(world);
+        wide << WorldPainter::totalsText(e, p, true, scale);
+        narrow << WorldPainter::stageTotalsText(e, p, m_bar->isVertical(), scale);
     }
     return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
 }

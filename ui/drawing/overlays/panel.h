@@ -17,7 +17,7 @@ class QPainter;
 namespace forcelab {
 
 /// The panels' text sizes (px at line scale 1) and line counts.
-inline constexpr int kReadoutPixels = 14, kTotalsPixels = 13, kReadoutLines = 5, kTotalsLines = 4;
+inline constexpr int kReadoutPixels = 14, kTotalsPixels = 13, kReadoutLines = 5;
 
 /// The panels' text: a fixed-width font at a size that grows with lineScale.
 QFont panelFont(int pixels, double lineScale);
