@@ -13,6 +13,7 @@
 #include "lessons/lesson_controls.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/stage/stage_bar.h"
+#include "ui/stage/stage_view.h"
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
@@ -58,6 +59,8 @@ private slots:
     void tooLongAChallengeEndsInAnEllipsis();
     void rowReadoutUsesTextColumns();
     void slidersButtonShowsARowBarsSliders();
+    void stageAlwaysShowsTheClockAndTheSpeed();
+    void stageKeysAreTheNormalLayoutsKeys();
 };
 
 namespace {
@@ -616,4 +619,73 @@ void GuiStageTest::slidersButtonShowsARowBarsSliders()
 }
 
 QTEST_MAIN(GuiStageTest)
+// Lesson 09 has no readout, and a teacher slowed lesson 07 to a quarter
+// with no sign of it: the stage always shows the time and the speed, and
+// they follow the Slower button and the run.
+void GuiStageTest::stageAlwaysShowsTheClockAndTheSpeed()
+{
+    MainWindow window(QStringLiteral("bounce-at-the-right-moment"));
+    QVERIFY(presentAt(window, QSize(1024, 768)));
+    QVERIFY(!window.lesson().overlays.contains(QStringLiteral("readout")));
+    auto* readout = window.findChild<QLabel*>(QStringLiteral("stageReadout"));
+    QVERIFY(readout);
+    QTRY_VERIFY(readout->isVisible() && readout->text().contains(QStringLiteral("t = 0.00 s")));
+    QVERIFY2(readout->text().contains(QStringLiteral("t = 0.00 s   1× speed")), qPrintable(readout->text()));
+    auto* slower = window.findChild<QAction*>(QStringLiteral("slowerAction"));
+    QVERIFY(slower);
+    slower->trigger();
+    slower->trigger();
+    QCOMPARE(window.controller()->timeScale(), 0.25);
+    QTRY_VERIFY2(readout->text().contains(QStringLiteral("¼× speed")), qPrintable(readout->text()));
+    window.controller()->setPlaying(true);
+    QTRY_VERIFY(window.controller()->world().time() > 0.1);
+    // The shown time is the world's, to the hundredth.
+    window.controller()->setPlaying(false);
+    QTRY_VERIFY(readout->text().contains(
+        QStringLiteral("t = %1 s").arg(window.controller()->world().time(), 0, 'f', 2)));
+    QCOMPARE(StageView::clockText(12.345, 0.125), QStringLiteral("t = 12.35 s   1/8× speed"));
+    QCOMPARE(StageView::clockText(0.0, 4.0), QStringLiteral("t = 0.00 s   4× speed"));
+}
+
+// The stage view hides the menus and toolbars, not their keys: B adds a
+// ball and Ctrl+Z takes it back, Ctrl+Shift+Z puts it back, Alt+→ and Alt+←
+// change the lesson, and F11 (the View menu says so) leaves the stage view,
+// under any window system.
+void GuiStageTest::stageKeysAreTheNormalLayoutsKeys()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    QVERIFY(presentAt(window, QSize(1024, 768)));
+    QVERIFY(!window.menuBar()->isVisible());
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.canvas()->setFocus();
+    const int balls = window.controller()->world().balls().size();
+    QTest::keyClick(window.canvas(), Qt::Key_B);
+    QTRY_COMPARE(window.controller()->world().balls().size(), balls + 1);
+    QTest::keyClick(window.canvas(), Qt::Key_Z, Qt::ControlModifier);
+    QTRY_COMPARE(window.controller()->world().balls().size(), balls);
+    QTest::keyClick(window.canvas(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QTRY_COMPARE(window.controller()->world().balls().size(), balls + 1);
+
+    const QString first = window.lesson().id;
+    QTest::keyClick(window.canvas(), Qt::Key_Right, Qt::AltModifier);
+    QTRY_VERIFY(window.lesson().id != first);
+    QTest::keyClick(window.canvas(), Qt::Key_Left, Qt::AltModifier);
+    QTRY_COMPARE(window.lesson().id, first);
+
+    auto* stage = window.findChild<QAction*>(QStringLiteral("presentationAction"));
+    QVERIFY(stage && stage->isChecked());
+    QCOMPARE(stage->shortcut(), QKeySequence(Qt::Key_F11));
+    // The View menu lists the action with its key.
+    bool listed = false;
+    for (QAction* menu : window.menuBar()->actions())
+        if (menu->menu())
+            for (QAction* a : menu->menu()->actions())
+                listed = listed || (a == stage && !a->shortcut().isEmpty());
+    QVERIFY(listed);
+    QTest::keyClick(window.canvas(), Qt::Key_F11);
+    QTRY_VERIFY(!stage->isChecked());
+    QTRY_VERIFY(window.menuBar()->isVisible());
+}
+
 #include "test_gui_stage.moc"

@@ -201,7 +201,7 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
     if (shape == ReadoutShape::Short) {
         // x and y side by side.
         return {
-            QStringLiteral("ball %1   t = %2 s").arg(i).arg(t, 0, 'f', 3),
+            QStringLiteral("ball %1").arg(i), // the stage's clock line above has the time
             QStringLiteral("x %1  y %2 px").arg(oneDecimal(x.x()), oneDecimal(x.y())),
             QStringLiteral("v (%1, %2) px/s").arg(oneDecimal(v.x()), oneDecimal(v.y())),
             QStringLiteral("a (%1, %2) px/s²").arg(oneDecimal(a.x()), oneDecimal(a.y())),

@@ -1,5 +1,7 @@
 #include "ui/stage/stage_view.h"
 
+#include "ui/drawing/human_number.h"
+
 #include "lessons/lesson_markup.h"
 #include "ui/canvas/canvas.h"
 #include "ui/controls/ball_table.h"
@@ -94,6 +96,11 @@ void StageView::createBar(const QList<QAction*>& actions)
     m_sliders = new StageSliders(m_controller, m_editor, m_bar);
     m_bar->setSliders(m_sliders);
     connect(m_controller, &SimulationController::stepped, this, &StageView::updateReadout);
+    // The clock line shows the speed, also while paused (the Play button
+    // says whether it runs).
+    connect(m_controller, &SimulationController::timeScaleChanged, this, &StageView::updateReadout);
+    connect(m_controller, &SimulationController::sceneChanged, this, &StageView::updateReadout);
+    connect(m_controller, &SimulationController::seeked, this, &StageView::updateReadout);
     connect(m_bar, &StageBar::readoutRoomChanged, this, &StageView::updateReadout, Qt::QueuedConnection);
 }
 
@@ -188,7 +195,9 @@ void StageView::updateReadout()
 StageView::Readout StageView::readoutText() const
 {
     const sim::World& world = m_controller->world();
-    QStringList wide, narrow;
+    // Always the clock and the speed first, whatever the lesson shows.
+    const QString clock = clockText(world.time(), m_controller->timeScale());
+    QStringList wide{clock}, narrow{clock};
     if (m_ownOverlays.readout && !world.balls().empty()) {
         const sim::Matrix2X a = world.accelerations();
         const int selected = m_canvas->selectedBall();
@@ -203,6 +212,19 @@ StageView::Readout StageView::readoutText() const
         narrow << WorldPainter::stageTotalsText(e, p, m_bar->isVertical(), scale);
     }
     return {wide.join(QLatin1Char('\n')), narrow.join(QLatin1Char('\n'))};
+}
+
+QString StageView::clockText(double time, double timeScale)
+{
+    // The speeds the Slower and Faster buttons step through, as a class
+    // reads them: fractions (½ and ¼ are in every projector font).
+    static const std::pair<double, const char*> fractions[] = {
+        {0.5, "½"}, {0.25, "¼"}, {0.125, "1/8"}, {1.0 / 16, "1/16"}, {1.0 / 32, "1/32"}, {1.0 / 64, "1/64"}};
+    QString speed = humanNumber(timeScale, 3);
+    for (const auto& [value, text] : fractions)
+        if (std::abs(timeScale - value) < 1e-12)
+            speed = QString::fromUtf8(text);
+    return tr("t = %1 s   %2× speed").arg(time, 0, 'f', 2).arg(speed);
 }
 
 // In the stage view the bar takes the strip the box leaves: a column beside

@@ -61,6 +61,9 @@ public:
     /// The bar's Balls button: shows or hides the ball table.
     QAction* ballsAction() const { return m_ballsAction; }
 
+    /// The stage's clock line: the simulated time and the speed ("t = 2.00 s   ¼× speed").
+    static QString clockText(double time, double timeScale);
+
 public slots:
     /// Why the simulation stopped itself; empty hides the banner.
     void showHalted(const QString& reason);

@@ -208,6 +208,7 @@ void MainWindow::createDocks()
     m_simulationToolBar->addSeparator();
     m_simulationToolBar->addAction(m_undoAction);
     m_simulationToolBar->addAction(m_redoAction);
+    addActions({m_undoAction, m_redoAction}); // Ctrl+Z works on the stage too, where menus and toolbars are hidden
 
     m_viewMenu->addAction(m_lessonsDock->toggleViewAction());
     m_viewMenu->addAction(m_parametersDock->toggleViewAction());

@@ -323,12 +323,21 @@ void MainWindow::createFileActions()
     m_presentationAction = new QAction(tr("&Stage View (Projector)"), this);
     m_presentationAction->setObjectName(QStringLiteral("presentationAction"));
     m_presentationAction->setCheckable(true);
-    m_presentationAction->setShortcut(QKeySequence::FullScreen);
+    // F11 everywhere: the platform's own full-screen key (QKeySequence::FullScreen)
+    // is none at all under a bare X server, which left the stage view with no key.
+    QList<QKeySequence> stageKeys{QKeySequence(Qt::Key_F11)};
+    for (const QKeySequence& key : QKeySequence::keyBindings(QKeySequence::FullScreen))
+        if (!stageKeys.contains(key))
+            stageKeys << key;
+    m_presentationAction->setShortcuts(stageKeys);
     m_presentationAction->setStatusTip(
         tr("The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)"));
     m_presentationAction->setIconText(tr("Stage"));
     m_presentationAction->setIcon(style()->standardIcon(QStyle::SP_TitleBarMaxButton));
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
+    // The keys of the menus and toolbars the stage view hides work there too.
+    addActions({m_presentationAction, m_previousAction, m_nextAction, m_playAction, m_stepAction, m_resetAction,
+                m_slowerAction, m_fasterAction, m_quitAction});
 
     m_themeAction = new QAction(tr("P&rojector Theme"), this);
     m_themeAction->setObjectName(QStringLiteral("themeAction"));
