@@ -32,6 +32,24 @@ using namespace forcelab;
 
 namespace {
 
+// A number as humanNumber writes it ("−1.234 × 10⁵", "12.5") read back.
+double studentNumber(QString text)
+{
+    text.replace(QChar(0x2212), QLatin1Char('-'));
+    const qsizetype times = text.indexOf(QStringLiteral(" × 10"));
+    if (times < 0)
+        return text.toDouble();
+    static const QString superscripts = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+    int exponent = 0, sign = 1;
+    for (const QChar c : text.mid(times + 5)) {
+        if (c == QChar(0x207B))
+            sign = -1;
+        else
+            exponent = 10 * exponent + static_cast<int>(superscripts.indexOf(c));
+    }
+    return text.left(times).toDouble() * std::pow(10.0, sign * exponent);
+}
+
 int colorDistance(QRgb a, QRgb b)
 {
     return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
@@ -356,11 +374,22 @@ void GuiCanvasTest::totalsShowTheWorldsEnergyAndMomentum()
     controller.stepOnce();
     const sim::Energy e = controller.world().energy();
     const QStringList text = WorldPainter::totalsText(controller.world());
-    QCOMPARE(text.size(), 4);
-    QCOMPARE(text[0].section(u' ', -1).toDouble(), QString::number(e.kinetic, 'g', 6).toDouble());
-    QCOMPARE(text[2].section(u' ', -1).toDouble(), QString::number(e.total(), 'g', 6).toDouble());
-    QVERIFY(std::abs(text[2].section(u' ', -1).toDouble() / e.total() - 1.0) < 1e-5);
-    QVERIFY(text[3].contains(QString::number(controller.world().momentum().x(), 'g', 6)));
+    // Six lines: energy's head line with the unit, kinetic, potential and
+    // total, the momentum's head line, its x and y. Four digits counted from
+    // the larger of kinetic and potential (and from Σm|v| for the momentum).
+    QCOMPARE(text.size(), 6);
+    QVERIFY(text[0].contains(QStringLiteral("mass·px²/s²")) && text[4].contains(QStringLiteral("mass·px/s")));
+    const double energyScale = std::max(std::abs(e.kinetic), std::abs(e.potential));
+    const double kinetic = studentNumber(text[1].section(QStringLiteral("kinetic"), 1).trimmed());
+    const double total = studentNumber(text[3].section(QStringLiteral("total"), 1).trimmed());
+    QVERIFY2(std::abs(kinetic - e.kinetic) <= 5e-4 * energyScale, qPrintable(text[1]));
+    QVERIFY2(std::abs(total - e.total()) <= 5e-4 * energyScale, qPrintable(text[3]));
+    const sim::Vec2 p = controller.world().momentum();
+    const double pScale = WorldPainter::momentumScale(controller.world());
+    const QStringList pxy = text[5].trimmed().mid(1).chopped(1).split(QStringLiteral(", "));
+    QCOMPARE(pxy.size(), 2);
+    QVERIFY2(std::abs(studentNumber(pxy[0]) - p.x()) <= 5e-4 * pScale, qPrintable(text[5]));
+    QVERIFY2(std::abs(studentNumber(pxy[1]) - p.y()) <= 5e-4 * pScale, qPrintable(text[5]));
 
     // The panel sits in the box's top-right corner only when switched on.
     Canvas canvas(&controller);

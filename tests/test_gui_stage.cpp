@@ -20,6 +20,8 @@
 #include "sim/world/parameters.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QScopeGuard>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -61,6 +63,7 @@ private slots:
     void slidersButtonShowsARowBarsSliders();
     void stageAlwaysShowsTheClockAndTheSpeed();
     void stageKeysAreTheNormalLayoutsKeys();
+    void textSizeKeysScaleEveryTextAndAreRemembered();
 };
 
 namespace {
@@ -686,6 +689,55 @@ void GuiStageTest::stageKeysAreTheNormalLayoutsKeys()
     QTest::keyClick(window.canvas(), Qt::Key_F11);
     QTRY_VERIFY(!stage->isChecked());
     QTRY_VERIFY(window.menuBar()->isVisible());
+}
+
+// Ctrl+= makes the text larger on the stage (title, challenge, readout),
+// in every panel (the application's font) and on the canvas (its panels'
+// scale); a new window opens at the same size; Ctrl+0 brings the usual
+// size back. The setting lives in this test's own settings file, removed
+// whatever happens, so the other tests open at the usual size.
+void GuiStageTest::textSizeKeysScaleEveryTextAndAreRemembered()
+{
+    const QString key = QStringLiteral("view/textScale");
+    QSettings().remove(key);
+    const auto forget = qScopeGuard([&] { QSettings().remove(key); });
+    double title = 0.0, app = 0.0, lines = 0.0;
+    {
+        MainWindow window(QStringLiteral("two-bodies-in-orbit"));
+        QVERIFY(presentAt(window, QSize(1280, 720)));
+        QVERIFY(test::waitForSettledLayout(&window));
+        auto* titleLabel = window.findChild<QLabel*>(QStringLiteral("stageTitle"));
+        QVERIFY(titleLabel);
+        title = titleLabel->font().pointSizeF();
+        app = QApplication::font().pointSizeF();
+        lines = window.canvas()->paintOptions().lineScale;
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QTest::keyClick(window.canvas(), Qt::Key_Equal, Qt::ControlModifier);
+        QTest::keyClick(window.canvas(), Qt::Key_Equal, Qt::ControlModifier);
+        QTRY_COMPARE(window.textScale(), 1.44);
+        QTRY_VERIFY(std::abs(titleLabel->font().pointSizeF() - 1.44 * title) < 0.05 * title);
+        QVERIFY(std::abs(QApplication::font().pointSizeF() - 1.44 * app) < 0.05 * app);
+        QVERIFY(std::abs(window.canvas()->paintOptions().lineScale - 1.44 * lines) < 1e-9);
+        QVERIFY(test::waitForSettledLayout(&window));
+        // Still nothing cut: the challenge shows whole or ends in "…" with
+        // the whole of it as its tooltip.
+        auto* challenge = window.findChild<QLabel*>(QStringLiteral("stageChallenge"));
+        QVERIFY(challenge);
+        QVERIFY(challenge->text() == challenge->toolTip() || challenge->toolTip().isEmpty() ||
+                challenge->text().endsWith(QStringLiteral(" …")));
+    }
+    QCOMPARE(QSettings().value(key).toDouble(), 1.44);
+    MainWindow again(QStringLiteral("two-bodies-in-orbit"));
+    QCOMPARE(again.textScale(), 1.44);
+    QVERIFY(std::abs(QApplication::font().pointSizeF() - 1.44 * app) < 0.05 * app);
+    QVERIFY(presentAt(again, QSize(1280, 720)));
+    again.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&again));
+    QTest::keyClick(again.canvas(), Qt::Key_0, Qt::ControlModifier);
+    QTRY_COMPARE(again.textScale(), 1.0);
+    QTRY_VERIFY(std::abs(QApplication::font().pointSizeF() - app) < 1e-9);
+    QCOMPARE(QSettings().value(key).toDouble(), 1.0);
 }
 
 #include "test_gui_stage.moc"

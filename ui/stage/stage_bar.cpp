@@ -33,22 +33,9 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     // names (lessons/lesson_markup.h keeps that to the lesson pane).
     m_title->setTextFormat(Qt::PlainText);
     m_challenge->setTextFormat(Qt::PlainText);
-    QFont big = font();
-    big.setPointSizeF(big.pointSizeF() * 1.6);
-    big.setBold(true);
-    m_title->setFont(big);
-    QFont text = font();
-    text.setPointSizeF(text.pointSizeF() * 1.3);
-    m_challenge->setFont(text);
     m_challenge->setAlignment(Qt::AlignLeft | Qt::AlignTop); // if anything is cut, never the start
-    m_challengeFont = text;
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("stageReadout"));
-    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    mono.setPointSizeF(text.pointSizeF());
-    m_readout->setFont(mono);
-    m_readoutFont = mono;
-    m_fitFont = mono;
     m_readout->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     // Each label fits its text again whenever the grid gives it a new size.
     m_readout->installEventFilter(this);
@@ -59,7 +46,6 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
         b->setDefaultAction(action);
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
         b->setIconSize(QSize(32, 32));
-        b->setFont(text);
         b->setMinimumSize(80, 60); // 72 px wide in a row (setVertical)
         b->setFocusPolicy(Qt::NoFocus); // the keyboard stays with the stage: Space, →, R
         // A button shows only while its action is visible (a tool button
@@ -71,7 +57,42 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     m_grid = new QGridLayout(this);
     m_grid->setContentsMargins(8, 8, 8, 8);
     m_grid->setSpacing(6);
+    applyFonts();
     setVertical(true);
+}
+
+// The bar's text sizes, from the window's (the desktop's, the projector
+// theme's, times the teacher's text size): the title 1.6 times it, the
+// challenge, the readout and the buttons 1.3 times.
+void StageBar::applyFonts()
+{
+    QFont big = font();
+    big.setPointSizeF(big.pointSizeF() * 1.6);
+    big.setBold(true);
+    m_title->setFont(big);
+    QFont text = font();
+    text.setPointSizeF(text.pointSizeF() * 1.3);
+    m_challengeFont = text;
+    m_challenge->setFont(text);
+    QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    mono.setPointSizeF(text.pointSizeF());
+    m_readout->setFont(mono);
+    m_readoutFont = mono;
+    m_fitFont = mono;
+    m_fitKey = {}; // the readout's size is searched for again
+    for (QToolButton* b : m_buttons)
+        b->setFont(text);
+}
+
+void StageBar::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange && m_grid) {
+        applyFonts();
+        updateGeometry();
+        scheduleFit();
+        emit readoutRoomChanged(); // the readout's form may change with its size
+    }
 }
 
 void StageBar::setCaption(const QString& title, const QString& challenge)

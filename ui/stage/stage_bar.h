@@ -56,9 +56,11 @@ signals:
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    void applyFonts();
     void scheduleFit();
     void fitReadout();
     void sizeReadoutColumn(const QStringList& lines);

@@ -68,6 +68,7 @@ const QString kStateKey = QStringLiteral("mainWindow/layout2"); // the docks sin
 const QString kLastLessonKey = QStringLiteral("lesson/last");
 const QString kDirectoryKey = QStringLiteral("lesson/directory");
 const QString kThemeKey = QStringLiteral("view/projectorTheme");
+const QString kTextScaleKey = QStringLiteral("view/textScale");
 
 // The tabs of docks stacked in one place keep their whole names and scroll
 // when the column is too narrow for all of them. Qt's own tab bars for docks
@@ -329,6 +330,15 @@ void MainWindow::readSettings()
         refuse(kThemeKey, tr("not true or false; using the plain theme"));
     else if (theme.toBool())
         m_themeAction->setChecked(true); // applied through toggled
+    const QVariant textScale = settings.value(kTextScaleKey, 1.0);
+    bool number = false;
+    const double scale = textScale.toDouble(&number);
+    if (!number || !(scale >= kSmallestTextScale && scale <= kLargestTextScale))
+        refuse(kTextScaleKey, tr("not a text size from %1 to %2; using the usual size")
+                                  .arg(kSmallestTextScale)
+                                  .arg(kLargestTextScale));
+    else if (scale != 1.0)
+        setTextScale(scale);
 }
 
 void MainWindow::writeSettings() const
@@ -342,6 +352,7 @@ void MainWindow::writeSettings() const
         settings.setValue(kLastLessonKey, m_lesson.source);
     settings.setValue(kDirectoryKey, m_lastDirectory);
     settings.setValue(kThemeKey, m_themeAction->isChecked());
+    settings.setValue(kTextScaleKey, m_textScale);
 }
 
 void MainWindow::openInitialLesson(const QString& requested)
@@ -519,8 +530,24 @@ void MainWindow::setProjectorTheme(bool on)
 {
     if (m_themeAction->isChecked() != on)
         m_themeAction->setChecked(on); // comes back here through toggled
-    applyProjectorFonts(this, on);
+    applyProjectorFonts(this, on, m_textScale);
     applyCanvasLook();
+}
+
+void MainWindow::setTextScale(double scale)
+{
+    m_textScale = scale;
+    applyProjectorFonts(this, m_themeAction->isChecked(), m_textScale);
+    applyCanvasLook();
+    m_stage->layoutStage(); // the bar's text takes new room
+    // The step that would leave the range is off, not cut short.
+    m_largerTextAction->setEnabled(m_textScale * kTextScaleStep <= kLargestTextScale + 1e-9);
+    m_smallerTextAction->setEnabled(m_textScale / kTextScaleStep >= kSmallestTextScale - 1e-9);
+    m_normalTextAction->setEnabled(m_textScale != 1.0);
+    QSettings().setValue(kTextScaleKey, m_textScale); // remembered at once, not only on a clean quit
+    statusBar()->showMessage(tr("Text at %1% of its usual size (Ctrl+= larger, Ctrl+− smaller, Ctrl+0 usual)")
+                                 .arg(std::lround(m_textScale * 100)),
+                             4000);
 }
 
 void MainWindow::applyCanvasLook()
@@ -528,7 +555,8 @@ void MainWindow::applyCanvasLook()
     // The stage view always uses the projector theme.
     const bool stage = m_presentationAction->isChecked();
     m_canvas->setColors(canvasColors(stage || m_themeAction->isChecked()));
-    m_canvas->setLineScale(stage ? 1.6 : m_themeAction->isChecked() ? 1.4 : 1.0);
+    // The canvas's panels and labels follow the teacher's text size (their lines too).
+    m_canvas->setLineScale((stage ? 1.6 : m_themeAction->isChecked() ? 1.4 : 1.0) * m_textScale);
 }
 
 void MainWindow::updateStatus()

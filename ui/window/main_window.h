@@ -78,6 +78,11 @@ public:
     static QString lessonsFolder();
     /// The projector theme (View menu; always on in the stage view).
     void setProjectorTheme(bool on);
+    /// The teacher's text size, a factor of the usual one
+    /// (kSmallestTextScale to kLargestTextScale): every panel, the stage bar
+    /// and the canvas's labels; remembered.
+    void setTextScale(double scale);
+    double textScale() const { return m_textScale; }
 
     /// Shows the Balls table (the dock, or under the box in the stage view)
     /// with ball `index` selected (−1: none), its keyboard focus in the table.
@@ -197,6 +202,10 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
     QAction* m_themeAction = nullptr;
+    QAction* m_largerTextAction = nullptr;
+    QAction* m_smallerTextAction = nullptr;
+    QAction* m_normalTextAction = nullptr;
+    double m_textScale = 1.0;
     /// Below this window width (px) the first layout puts the lesson in a tab beside the Parameters.
     static constexpr int kCompactWidth = 1400;
     bool m_dockLayoutChosen = false; // a saved layout was restored, or the first show chose one

@@ -339,6 +339,25 @@ void MainWindow::createFileActions()
     addActions({m_presentationAction, m_previousAction, m_nextAction, m_playAction, m_stepAction, m_resetAction,
                 m_slowerAction, m_fasterAction, m_quitAction});
 
+    // Text size: Ctrl with = (or +) and −, as in a web browser; the plain
+    // keys zoom the stage (createCameraActions).
+    m_largerTextAction = new QAction(tr("&Larger Text"), this);
+    m_largerTextAction->setObjectName(QStringLiteral("largerTextAction"));
+    m_largerTextAction->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Equal), QKeySequence(Qt::CTRL | Qt::Key_Plus)});
+    m_largerTextAction->setStatusTip(tr("Larger text in every panel and on the stage (Ctrl+=)"));
+    connect(m_largerTextAction, &QAction::triggered, this, [this] { setTextScale(m_textScale * kTextScaleStep); });
+    m_smallerTextAction = new QAction(tr("S&maller Text"), this);
+    m_smallerTextAction->setObjectName(QStringLiteral("smallerTextAction"));
+    m_smallerTextAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Minus));
+    m_smallerTextAction->setStatusTip(tr("Smaller text in every panel and on the stage (Ctrl+−)"));
+    connect(m_smallerTextAction, &QAction::triggered, this, [this] { setTextScale(m_textScale / kTextScaleStep); });
+    m_normalTextAction = new QAction(tr("&Usual Text Size"), this);
+    m_normalTextAction->setObjectName(QStringLiteral("normalTextAction"));
+    m_normalTextAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    m_normalTextAction->setEnabled(false);
+    connect(m_normalTextAction, &QAction::triggered, this, [this] { setTextScale(1.0); });
+    addActions({m_largerTextAction, m_smallerTextAction, m_normalTextAction}); // on the stage too
+
     m_themeAction = new QAction(tr("P&rojector Theme"), this);
     m_themeAction->setObjectName(QStringLiteral("themeAction"));
     m_themeAction->setCheckable(true);
@@ -399,6 +418,9 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_presentationAction);
     m_viewMenu->addAction(m_themeAction);
+    m_viewMenu->addAction(m_largerTextAction);
+    m_viewMenu->addAction(m_smallerTextAction);
+    m_viewMenu->addAction(m_normalTextAction);
     m_viewMenu->addSeparator();
     for (QAction* action : {m_zoomInAction, m_zoomOutAction, m_fitBoxAction, m_fitBallsAction, m_followAction})
         m_viewMenu->addAction(action);

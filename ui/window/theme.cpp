@@ -17,16 +17,17 @@ namespace {
 std::optional<QFont> g_desktopFont; // the application's font before the projector theme
 }
 
-void applyProjectorFonts(QWidget* root, bool projector)
+void applyProjectorFonts(QWidget* root, bool projector, double textScale)
 {
     if (!g_desktopFont)
         g_desktopFont = QApplication::font();
     QFont font = *g_desktopFont;
-    if (projector) {
+    const double scale = (projector ? kProjectorFontScale : 1.0) * textScale;
+    if (scale != 1.0) {
         if (font.pointSizeF() > 0)
-            font.setPointSizeF(font.pointSizeF() * kProjectorFontScale);
+            font.setPointSizeF(font.pointSizeF() * scale);
         else
-            font.setPixelSize(static_cast<int>(std::lround(font.pixelSize() * kProjectorFontScale)));
+            font.setPixelSize(static_cast<int>(std::lround(font.pixelSize() * scale)));
     }
     QApplication::setFont(font);
     if (!root)

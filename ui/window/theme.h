@@ -13,8 +13,13 @@ namespace forcelab {
 /// How much larger than the desktop's the projector theme's text is.
 inline constexpr double kProjectorFontScale = 1.35;
 
-/// Switches the application's font (menus, docks, dialogs) and the charts'
-/// fonts below `root` between the desktop size and the projector size.
-void applyProjectorFonts(QWidget* root, bool projector);
+/// The text size a teacher chooses (Ctrl+= and Ctrl+−), as a factor of the
+/// desktop's: from kSmallestTextScale to kLargestTextScale in steps of kTextScaleStep.
+inline constexpr double kSmallestTextScale = 0.75, kLargestTextScale = 3.0, kTextScaleStep = 1.2;
+
+/// Switches the application's font (menus, docks, dialogs, the stage bar)
+/// and the charts' fonts below `root` between the desktop size and the
+/// projector size, times the teacher's `textScale`.
+void applyProjectorFonts(QWidget* root, bool projector, double textScale = 1.0);
 
 } // namespace forcelab
