@@ -73,6 +73,7 @@ struct Lesson {
     QStringList challenges;
     QStringList controls; ///< parameter names shown first in the Parameters dock
     QStringList overlays; ///< overlays switched on, e.g. "velocity", "readout"
+    QStringList tools;    ///< panels the text and challenges use, e.g. "stopwatch" (lesson_tools.h)
     /// What the text says about the scene, as measurements `forcelab-cli
     /// check` runs (sim/studies/claims.h); each claim's text is the lesson's sentence.
     std::vector<sim::Claim> claims;

@@ -6,6 +6,7 @@
 #include "lesson_parser.h"
 
 #include "lesson_controls.h"
+#include "lesson_tools.h"
 #include "lesson_limits.h"
 #include "lesson_markup.h"
 #include "lesson_parse_sections.h"
@@ -90,6 +91,23 @@ void checkProse(Reader& r, const Lesson& lesson)
     }
 }
 
+/// The text, every challenge and every answer name only tools the lesson lists, so the
+/// stage view can offer each one (lesson_tools.h).
+void checkToolsNamed(Reader& r, const Lesson& lesson)
+{
+    auto check = [&](const QString& path, const QString& text) {
+        for (const QString& name : undeclaredToolsIn(markupToPlainText(text), lesson))
+            r.fail(path, QStringLiteral("names the %1 panel; list %2 in \"tools\" so the stage view offers it")
+                             .arg(findTool(name)->title, quoted(name)));
+    };
+    check(QStringLiteral("text"), lesson.text);
+    for (qsizetype i = 0; i < lesson.challenges.size(); ++i)
+        check(join(QStringLiteral("challenges"), i), lesson.challenges[i]);
+    // The answers say how the class does a challenge, on the stage too.
+    for (qsizetype i = 0; i < lesson.teacher.answers.size(); ++i)
+        check(join(QStringLiteral("teacher.answers"), i), lesson.teacher.answers[i]);
+}
+
 } // namespace
 
 const QStringList& overlayNames()
@@ -108,7 +126,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "claims", "not_measured", "teacher", "compare", "predict"});
+                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -133,6 +151,7 @@ ParseResult parseLesson(const QJsonObject& root)
     r.stringList(root, top, "challenges", lesson.challenges);
     nameList(r, root, "controls", controlNames(), lesson.controls);
     nameList(r, root, "overlays", overlayNames(), lesson.overlays);
+    nameList(r, root, "tools", toolNames(), lesson.tools);
 
     sim::Scene& scene = lesson.scene;
     if (const auto o = r.object(root, top, "world"))
@@ -156,6 +175,7 @@ ParseResult parseLesson(const QJsonObject& root)
     if (const auto a = r.array(root, top, "predict", QStringLiteral("an array of questions")))
         parsePredict(r, *a, static_cast<int>(lesson.claims.size()), lesson.predict);
     checkProse(r, lesson);
+    checkToolsNamed(r, lesson);
     checkClaimWork(r, lesson);
     return result;
 }

@@ -373,6 +373,8 @@ QByteArray saveLesson(const Lesson& lesson)
         {"controls", strings(lesson.controls, false)},
         {"overlays", strings(lesson.overlays, false)},
     };
+    if (!lesson.tools.isEmpty()) // only when listed, so a lesson without tools saves as before
+        top.push_back({"tools", strings(lesson.tools, false)});
     if (!lesson.teacher.empty()) {
         // Only what the notes hold: an empty list or goal is left out.
         const TeacherNotes& t = lesson.teacher;

@@ -17,6 +17,7 @@
 #include "ui/drawing/world_painter.h"
 
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_tools.h"
 #include "sim/world/parameters.h"
 
 #include <QAction>
@@ -27,6 +28,7 @@
 #include <QFileInfo>
 #include <QFontMetrics>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -64,6 +66,8 @@ private slots:
     void stageAlwaysShowsTheClockAndTheSpeed();
     void stageKeysAreTheNormalLayoutsKeys();
     void textSizeKeysScaleEveryTextAndAreRemembered();
+    void everyLessonToolWorksOnTheStage_data();
+    void everyLessonToolWorksOnTheStage();
 };
 
 namespace {
@@ -738,6 +742,70 @@ void GuiStageTest::textSizeKeysScaleEveryTextAndAreRemembered()
     QTRY_COMPARE(again.textScale(), 1.0);
     QTRY_VERIFY(std::abs(QApplication::font().pointSizeF() - app) < 1e-9);
     QCOMPARE(QSettings().value(key).toDouble(), 1.0);
+}
+
+void GuiStageTest::everyLessonToolWorksOnTheStage_data()
+{
+    addProjectorSizes(false);
+}
+
+// Every shipped lesson that sends its class to a panel (the Stopwatch in
+// lesson 19, the Inspector in 02, Predict where it asks) offers it on the
+// stage: the start banner lists its key, the key opens the panel floating over the
+// stage and inside the screen, ready to use, the key again closes it, and
+// the right-click menu has the same tools and the Show menu.
+void GuiStageTest::everyLessonToolWorksOnTheStage()
+{
+    QFETCH(QSize, size);
+    MainWindow window(QStringLiteral("gravity"));
+    QVERIFY(presentAt(window, size));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    int used = 0;
+    for (const QString& file : LessonLoader::builtInFiles()) {
+        QVERIFY(window.openLesson(file));
+        const QStringList tools = lessons::stageTools(window.lesson());
+        for (qsizetype k = 0; k < tools.size(); ++k) {
+            const QString what = file + QStringLiteral(": ") + tools[k];
+            const lessons::ToolInfo* tool = lessons::findTool(tools[k]);
+            QVERIFY2(tool, qPrintable(what));
+            const QString key = QStringLiteral("%1 %2").arg(k + 1).arg(tool->title);
+            QVERIFY2(window.canvas()->toolKeys().contains(key), qPrintable(what));
+            auto* action = window.findChild<QAction*>(QStringLiteral("toolAction_") + tools[k]);
+            QVERIFY2(action && action->shortcut() == QKeySequence(Qt::Key_1 + static_cast<int>(k)), qPrintable(what));
+            QTest::keyClick(window.canvas(), static_cast<Qt::Key>(Qt::Key_1 + k));
+            QDockWidget* dock = nullptr;
+            QTRY_VERIFY2((dock = [&]() -> QDockWidget* {
+                             for (QDockWidget* d : window.findChildren<QDockWidget*>())
+                                 if (d->isVisible() && d->isFloating())
+                                     return d;
+                             return nullptr;
+                         }()) != nullptr,
+                         qPrintable(what));
+            QVERIFY2(dock->widget() && dock->widget()->isEnabled(), qPrintable(what));
+            const QRect screen(window.mapToGlobal(QPoint(0, 0)), window.size());
+            QVERIFY2(screen.contains(dock->frameGeometry()),
+                     qPrintable(what + QStringLiteral(" at %1,%2 %3x%4")
+                                           .arg(dock->frameGeometry().x())
+                                           .arg(dock->frameGeometry().y())
+                                           .arg(dock->frameGeometry().width())
+                                           .arg(dock->frameGeometry().height())));
+            window.canvas()->setFocus();
+            QTest::keyClick(window.canvas(), static_cast<Qt::Key>(Qt::Key_1 + k));
+            QTRY_VERIFY2(!dock->isVisible(), qPrintable(what));
+            ++used;
+        }
+    }
+    QVERIFY2(used >= 20, qPrintable(QString::number(used))); // Predict in most lessons, and the listed tools
+    // The right-click menu ends with the Tools and Show menus.
+    QVERIFY(window.openLesson(QStringLiteral("two-bodies-in-orbit")));
+    QMenu menu;
+    window.canvas()->fillContextMenu(menu, QPointF(5, 5));
+    QStringList titles;
+    for (QAction* a : menu.actions())
+        if (a->menu())
+            titles << a->menu()->title().remove(QLatin1Char('&'));
+    QVERIFY2(titles.contains(QStringLiteral("Tools")) && titles.size() == 2, qPrintable(titles.join(u',')));
 }
 
 #include "test_gui_stage.moc"

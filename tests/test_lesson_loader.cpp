@@ -5,6 +5,7 @@
 #include "sim_test_util.h"
 
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_tools.h"
 #include "lessons/lesson_markup.h"
 #include "lessons/sentence_check.h"
 #include "sim/world/names.h"
@@ -67,6 +68,7 @@ void compareLessons(const Lesson& a, const Lesson& b)
     QCOMPARE(a.challenges, b.challenges);
     QCOMPARE(a.controls, b.controls);
     QCOMPARE(a.overlays, b.overlays);
+    QCOMPARE(a.tools, b.tools);
     QVERIFY(a.teacher == b.teacher);
     QCOMPARE(a.claims.size(), b.claims.size());
     for (std::size_t i = 0; i < a.claims.size(); ++i)
@@ -191,6 +193,7 @@ private slots:
     void eachKeyLandsInItsMember();
     void absentModelsAreOff();
     void presentModelWithEnabledFalseIsOff();
+    void toolsAreListedAndNamedOnlyWhenListed();
     void badInput_data();
     void badInput();
     void lessonTextIsASafeSubset_data();
@@ -696,6 +699,37 @@ void TestLessonLoader::presentModelWithEnabledFalseIsOff()
     QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
     QVERIFY(!r.lesson->scene.settings.gravity.enabled);
     QCOMPARE(r.lesson->scene.settings.gravity.g.y(), 123.0);
+}
+
+// A lesson lists the panels its words send students to ("tools"); a text,
+// challenge or answer that names a panel the lesson does not list is
+// refused, naming the field and the tool, so the stage view can offer all
+// a lesson asks for. Predict questions offer the Predict panel by themselves.
+void TestLessonLoader::toolsAreListedAndNamedOnlyWhenListed()
+{
+    const QByteArray challenge = R"("challenges": ["Time one orbit with the Stopwatch."])";
+    const LoadResult missing = loadText(minimal(challenge));
+    QVERIFY(!missing.ok());
+    QVERIFY2(firstError(missing).contains(QStringLiteral("challenges.0: names the Stopwatch panel; list \"stopwatch\"")),
+             qPrintable(firstError(missing)));
+    const LoadResult listed = loadText(minimal(challenge + R"(, "tools": ["stopwatch"])"));
+    QVERIFY2(listed.ok(), qPrintable(listed.errors().join('\n')));
+    QCOMPARE(listed.lesson->tools, QStringList{QStringLiteral("stopwatch")});
+    QCOMPARE(lessons::stageTools(*listed.lesson), QStringList{QStringLiteral("stopwatch")});
+    // Written back only when listed, and read back the same.
+    const QByteArray saved = saveLesson(*listed.lesson);
+    QVERIFY(saved.contains(R"("tools": ["stopwatch"])"));
+    QCOMPARE(loadText(saved).lesson->tools, listed.lesson->tools);
+    QVERIFY(!saveLesson(*loadText(minimal()).lesson).contains("\"tools\""));
+    // Markup does not hide a name; the text and the answers count too.
+    const LoadResult bold = loadText(minimal(R"("text": "Open the <b>Force editor</b>.")"));
+    QVERIFY2(!bold.ok() && firstError(bold).contains(QStringLiteral("text: names the Force editor panel")),
+             qPrintable(firstError(bold)));
+    // "Predict" alone is a verb, not the panel.
+    QVERIFY(loadText(minimal(R"("challenges": ["Predict, and explain why."])")).ok());
+    const LoadResult unknown = loadText(minimal(R"("tools": ["stopwatch", "ruler"])"));
+    QVERIFY2(!unknown.ok() && firstError(unknown).contains(QStringLiteral("tools.1: \"ruler\" is not one of stopwatch")),
+             qPrintable(firstError(unknown)));
 }
 
 void TestLessonLoader::badInput_data()

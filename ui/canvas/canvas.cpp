@@ -342,18 +342,28 @@ bool Canvas::showsStartHint() const
     return !m_controller->isPlaying() && m_controller->world().time() == 0.0;
 }
 
+void Canvas::setToolKeys(const QStringList& keys)
+{
+    m_toolKeys = keys;
+    update();
+}
+
 // A lesson opens paused at t = 0: a banner at the bottom of the stage says
-// how to start it, large enough for the back of a classroom.
+// how to start it and which keys open the lesson's tools, large enough for
+// the back of a classroom.
 void Canvas::paintStartHint(QPainter& p) const
 {
-    const QString text = tr("Paused at t = 0 · press Space to run");
+    QString text = tr("Paused at t = 0 · press Space to run");
+    if (!m_toolKeys.isEmpty())
+        text += QLatin1Char('\n') + tr("Tools: press %1").arg(m_toolKeys.join(QStringLiteral(" · ")));
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::lround(18 * m_options.lineScale)));
     font.setBold(true);
     p.setFont(font);
     const QFontMetricsF fm(font);
     const double pad = 10.0 * m_options.lineScale;
-    const QSizeF size(fm.horizontalAdvance(text) + 2 * pad, fm.height() + pad);
+    const QSizeF size(fm.boundingRect(QRectF(), 0, text).width() + 2 * pad,
+                      fm.lineSpacing() * (1 + text.count(QLatin1Char('\n'))) + pad);
     const QRectF banner(QPointF(0.5 * (width() - size.width()), height() - size.height() - 2 * pad), size);
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setPen(Qt::NoPen);

@@ -23,6 +23,7 @@
 
 #include <QImage>
 #include <QPainter>
+#include <QPointer>
 #include <QWidget>
 
 class QMenu;
@@ -57,6 +58,14 @@ public:
     QColor markedColor() const;
     /// Thicker lines and larger text (presentation mode).
     void setLineScale(double scale);
+    /// Menus the right-click menu ends with (the window's Tools and Show,
+    /// for the stage view, where the menu bar is hidden); not owned, and
+    /// an empty or deleted one is left out.
+    void setContextMenus(const QList<QMenu*>& menus);
+    /// The keys of the lesson's tools ("1 Stopwatch"), which the start
+    /// banner lists under "press Space to run".
+    void setToolKeys(const QStringList& keys);
+    const QStringList& toolKeys() const { return m_toolKeys; }
     /// px of free space kept around the box (10; the stage view uses 4).
     void setBoxMargin(double pixels);
     /// Arrows scaled so a typical one is readable (WorldPainter::kArrowPixels).
@@ -277,6 +286,8 @@ private:
     SimulationController* m_controller; // not owned
     WorldPainter m_painter;
     PaintOptions m_options;
+    QList<QPointer<QMenu>> m_contextMenus; // not owned
+    QStringList m_toolKeys;                // "1 Stopwatch", …
     Ruler m_ruler;
     bool m_measuring = false;
     void paintRuler(QPainter& p) const;

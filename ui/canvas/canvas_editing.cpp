@@ -16,6 +16,8 @@
 #include <QClipboard>
 #include <QContextMenuEvent>
 #include <QMenu>
+
+#include <utility>
 #include <QToolTip>
 
 #include <cmath>
@@ -274,6 +276,21 @@ void Canvas::fillContextMenu(QMenu& menu, const QPointF& at)
         menu.addAction(tr("Fit the box"), this, &Canvas::fitBox);
         menu.addAction(tr("Fit all balls"), this, &Canvas::fitAllBalls);
     }
+    bool separated = false;
+    for (const QPointer<QMenu>& extra : m_contextMenus) {
+        if (!extra || extra->isEmpty())
+            continue;
+        if (!std::exchange(separated, true))
+            menu.addSeparator();
+        menu.addMenu(extra);
+    }
+}
+
+void Canvas::setContextMenus(const QList<QMenu*>& menus)
+{
+    m_contextMenus.clear();
+    for (QMenu* m : menus)
+        m_contextMenus << m;
 }
 
 void Canvas::contextMenuEvent(QContextMenuEvent* event)

@@ -21,6 +21,7 @@
 #include "ui/docks/force_editor_dock.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/window/theme.h"
+#include "lessons/lesson_tools.h"
 #include "ui/docks/trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
@@ -422,6 +423,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     else if (!m_plotsDock->isHidden())
         m_plotsDock->raise();
     m_stage->setLesson(lesson);
+    setLessonTools(lessons::stageTools(lesson));
     setWindowTitle(lesson.title.isEmpty() ? tr("ForceLab")
                                           : tr("%1 — ForceLab").arg(lessons::markupToPlainText(lesson.title)));
     m_lessonsDock->setCurrentLesson(lesson);
@@ -532,6 +534,87 @@ void MainWindow::setProjectorTheme(bool on)
         m_themeAction->setChecked(on); // comes back here through toggled
     applyProjectorFonts(this, on, m_textScale);
     applyCanvasLook();
+}
+
+// The lesson's tools (lesson_tools.h) in the Tools menu, on keys 1, 2, …,
+// which work in the stage view too; the canvas's start banner lists them. Panels opened on the stage float over it and close again with
+// the next lesson.
+void MainWindow::setLessonTools(const QStringList& tools)
+{
+    // The old tools' actions go: QMenu::clear() keeps those the window also
+    // holds, and their keys would clash with the new ones.
+    const QList<QAction*> old = m_toolsMenu->actions();
+    m_toolsMenu->clear();
+    qDeleteAll(old);
+    QStringList keys;
+    for (qsizetype k = 0; k < tools.size(); ++k) {
+        const lessons::ToolInfo* tool = lessons::findTool(tools[k]);
+        QDockWidget* dock = toolDock(tools[k]);
+        if (!tool || !dock)
+            continue;
+        QAction* action = m_toolsMenu->addAction(tool->title, this, [this, name = tools[k]] { showTool(name); });
+        action->setObjectName(QStringLiteral("toolAction_") + tools[k]);
+        addAction(action); // the menu bar is hidden on the stage
+        if (k < 9) {
+            action->setShortcut(QKeySequence(Qt::Key_1 + static_cast<int>(k)));
+            keys << tr("%1 %2").arg(k + 1).arg(tool->title);
+        }
+    }
+    m_toolsMenu->menuAction()->setVisible(!m_toolsMenu->isEmpty());
+    m_canvas->setToolKeys(keys);
+    if (m_stage->isStaged())
+        for (QDockWidget* dock : findChildren<QDockWidget*>())
+            if (dock->isFloating())
+                dock->hide();
+}
+
+QDockWidget* MainWindow::toolDock(const QString& name) const
+{
+    if (name == QLatin1String("stopwatch"))
+        return m_stopwatchDock;
+    if (name == QLatin1String("predict"))
+        return m_predictDock;
+    if (name == QLatin1String("inspector"))
+        return m_inspectorDock;
+    if (name == QLatin1String("plots"))
+        return m_plotsDock;
+    if (name == QLatin1String("code"))
+        return m_codeDock;
+    if (name == QLatin1String("force_editor"))
+        return m_forceEditorDock;
+    if (name == QLatin1String("accuracy"))
+        return m_accuracyDock;
+    return nullptr;
+}
+
+void MainWindow::showTool(const QString& name)
+{
+    QDockWidget* dock = toolDock(name);
+    if (!dock)
+        return;
+    if (!m_stage->isStaged()) {
+        dock->show();
+        dock->raise();
+        return;
+    }
+    // On the stage: a floating panel in the top-right corner, over the box
+    // (the class sees the tool and the run at once); the key again closes it.
+    if (dock->isVisible() && dock->isFloating()) {
+        dock->hide();
+        m_canvas->setFocus(Qt::OtherFocusReason);
+        return;
+    }
+    dock->setFloating(true);
+    const QSize size = dock->sizeHint()
+                           .expandedTo(QSize(width() * 3 / 10, height() * 2 / 5))
+                           .boundedTo(QSize(width() * 9 / 20, height() * 3 / 4));
+    dock->resize(size);
+    dock->show();
+    // Where it fits whole, with the size it took (a panel's least size may be larger).
+    const QSize shown = dock->frameGeometry().size();
+    const QPoint corner(std::max(0, width() - shown.width() - 12), std::min(12, std::max(0, height() - shown.height())));
+    dock->move(mapToGlobal(corner));
+    dock->raise();
 }
 
 void MainWindow::setTextScale(double scale)

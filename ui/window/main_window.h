@@ -82,6 +82,9 @@ public:
     /// (kSmallestTextScale to kLargestTextScale): every panel, the stage bar
     /// and the canvas's labels; remembered.
     void setTextScale(double scale);
+    /// Shows the lesson tool `name` (lesson_tools.h): its panel, or on the
+    /// stage a panel floating over it; on the stage again, hides it.
+    void showTool(const QString& name);
     double textScale() const { return m_textScale; }
 
     /// Shows the Balls table (the dock, or under the box in the stage view)
@@ -127,6 +130,8 @@ private slots:
     void showTimeDropped(double seconds);
     void setPresentationMode(bool on);
     void applyCanvasLook();
+    void setLessonTools(const QStringList& tools);
+    QDockWidget* toolDock(const QString& name) const;
     void useCompactDocks();
     void about();
 
@@ -202,6 +207,7 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
     QAction* m_themeAction = nullptr;
+    QMenu* m_toolsMenu = nullptr; // the lesson's tools, keys 1, 2, …
     QAction* m_largerTextAction = nullptr;
     QAction* m_smallerTextAction = nullptr;
     QAction* m_normalTextAction = nullptr;

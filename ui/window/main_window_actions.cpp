@@ -411,6 +411,11 @@ void MainWindow::createMenus()
     lessons->addAction(m_previousAction);
     lessons->addAction(m_nextAction);
 
+    // Filled by setLessonTools with the panels the lesson's text uses; its
+    // keys work on the stage too (the actions are the window's).
+    m_toolsMenu = menuBar()->addMenu(tr("&Tools"));
+    m_toolsMenu->setObjectName(QStringLiteral("toolsMenu"));
+
     m_accuracyMenu = menuBar()->addMenu(tr("&Accuracy"));
     m_accuracyMenu->setObjectName(QStringLiteral("accuracyMenu"));
 
@@ -426,6 +431,9 @@ void MainWindow::createMenus()
         m_viewMenu->addAction(action);
     m_viewMenu->addSeparator();
     m_viewMenu->addMenu(m_overlayActions->menu());
+    // The stage view hides the menu bar: its right-click menu ends with the
+    // lesson's tools and what the stage shows.
+    m_canvas->setContextMenus({m_toolsMenu, m_overlayActions->menu()});
     m_viewMenu->addSeparator();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
