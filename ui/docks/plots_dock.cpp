@@ -1,5 +1,8 @@
 #include "ui/docks/plots_dock.h"
 
+#include "ui/charts/energy_bars.h"
+#include "ui/charts/quantity_graph.h"
+
 #include "ui/controls/readable_numbers.h"
 #include "ui/canvas/simulation_controller.h"
 
@@ -117,6 +120,10 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
     m_tabs->setAccessibleName(tr("Plots of energy, momentum and step cost"));
     m_tabs->setDocumentMode(true);
     m_tabs->addTab(makeChart(tr("Energy"), {m_kinetic, m_potential, m_total}, &m_energyX, &m_energyY), tr("Energy"));
+    m_energyBars = new EnergyBars(m_controller);
+    m_tabs->addTab(m_energyBars, tr("Energy bars"));
+    m_quantityGraph = new QuantityGraph(m_controller);
+    m_tabs->addTab(m_quantityGraph, tr("Graph"));
     m_tabs->addTab(makeChart(tr("Momentum"), {m_p, m_px, m_py}, &m_momentumX, &m_momentumY), tr("Momentum"));
     m_tabs->addTab(makeChart(tr("Cost of a step"), {m_cost}, &m_costX, &m_costY), tr("Step cost"));
     m_histogramView = makeChart(tr("Speeds"), {m_histogram, m_maxwell}, &m_speedX, &m_speedY);

@@ -1,6 +1,8 @@
 #pragma once
 // The Plots dock: energy (kinetic, potential, total), momentum (|p|, px, py)
-// and the cost of a step over the last kWindowSeconds of simulated time, and
+// and the cost of a step over the last kWindowSeconds of simulated time, the
+// energies now as bars (ui/charts/energy_bars.h), any quantity of a ball or
+// of all balls against time with its theory (ui/charts/quantity_graph.h), and
 // for the gas lesson the histogram of speeds with the 2D Maxwell–Boltzmann
 // curve of the same mean energy.
 //
@@ -25,6 +27,8 @@ class QValueAxis;
 
 namespace forcelab {
 
+class EnergyBars;
+class QuantityGraph;
 class SimulationController;
 
 class PlotsDock : public QDockWidget {
@@ -50,6 +54,13 @@ public:
     static constexpr int kHistogramBins = 30;
 
     const std::deque<Sample>& samples() const { return m_samples; }
+
+    /// The "Energy bars" tab: the energies now as bars (ui/charts/energy_bars.h).
+    EnergyBars* energyBars() const { return m_energyBars; }
+    /// The "Graph" tab: any quantity against time with its theory (ui/charts/quantity_graph.h).
+    QuantityGraph* quantityGraph() const { return m_quantityGraph; }
+    /// The tabs (tests pick one to show).
+    QTabWidget* tabs() const { return m_tabs; }
 
     /// Shows the speed-histogram tab (a lesson whose overlays name "histogram").
     void setHistogramShown(bool shown);
@@ -96,6 +107,8 @@ private:
     double m_energyFactor = 1.0, m_momentumFactor = 1.0, m_costFactor = 1.0, m_speedFactor = 1.0;
 
     QTabWidget* m_tabs = nullptr;
+    EnergyBars* m_energyBars = nullptr;
+    QuantityGraph* m_quantityGraph = nullptr;
     QLineSeries* m_kinetic = nullptr;
     QLineSeries* m_potential = nullptr;
     QLineSeries* m_total = nullptr;
