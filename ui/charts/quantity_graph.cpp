@@ -72,7 +72,9 @@ double QuantityGraph::valueOf(const sim::World& world, Quantity q, int ball)
 {
     const sim::BallState& b = world.balls();
     if (ball == kAllBalls) {
-        const sim::Energy e = world.energy();
+        // The potential energy can cost a sum over all pairs: only when asked.
+        const bool energy = q == Quantity::Kinetic || q == Quantity::Potential || q == Quantity::Total;
+        const sim::Energy e = energy ? world.energy() : sim::Energy{};
         const sim::Vec2 p = world.momentum();
         const int n = b.size();
         // The totals' position and velocity are those of the centre of mass.
