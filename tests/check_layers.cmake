@@ -14,7 +14,7 @@ set(rules
   "sim/collision|sim/studies/,lessons/,ui/,app/"
   "sim/studies|lessons/,ui/,app/"
   "lessons|ui/,app/"
-  "ui/drawing|ui/canvas/,ui/controls/,ui/docks/,ui/stage/,ui/window/,app/"
+  "ui/drawing|ui/canvas/,ui/charts/,ui/controls/,ui/docks/,ui/stage/,ui/window/,app/"
   "ui|app/"
 )
 set(checked 0)

@@ -128,7 +128,6 @@ private slots:
     void renderImageMatchesTheCanvas();
     void trajectoryCsvHoldsTheStates();
     void plotsSampleOncePerStepAndNotWhilePaused();
-    void speedHistogramAndMaxwellBoltzmann();
 };
 
 void GuiCanvasTest::overlayNamesSwitchOverlays()
@@ -796,59 +795,6 @@ void GuiCanvasTest::plotsSampleOncePerStepAndNotWhilePaused()
     controller.reset();
     QCOMPARE(dock.samples().size(), std::size_t{1});
     QCOMPARE(dock.samples().front().t, 0.0);
-}
-
-void GuiCanvasTest::speedHistogramAndMaxwellBoltzmann()
-{
-    // Equal masses with speeds drawn from the 2D Maxwell–Boltzmann law of
-    // kT/m = σ² = 100² (px/s)²: speed σ √(−2 ln U).
-    sim::BallState balls;
-    std::vector<sim::Ball> list;
-    const double sigma = 100.0;
-    const int n = 4000;
-    for (int i = 0; i < n; ++i) {
-        const double u = (i + 0.5) / n; // quantiles: no random numbers needed
-        const double speed = sigma * std::sqrt(-2.0 * std::log(u));
-        const double angle = 2.399963 * i;
-        list.push_back(ball({0, 0}, {speed * std::cos(angle), speed * std::sin(angle)}, 5));
-    }
-    balls.assign(list);
-    const PlotsDock::Histogram h = PlotsDock::speedHistogram(balls, 30, 301);
-    QCOMPARE(h.density.size(), 30);
-    double area = 0.0;
-    for (double d : h.density)
-        area += d * h.binWidth;
-    QVERIFY(std::abs(area - 1.0) < 1e-12);
-    // kT is the mean kinetic energy per ball: m σ² for this sample (to 1%).
-    const double m = balls.mass[0];
-    QVERIFY(std::abs(h.kT / (m * sigma * sigma) - 1.0) < 0.01);
-    // The curve integrates to 1 − exp(−m v_max² / 2kT) over [0, v_max].
-    double integral = 0.0;
-    for (qsizetype k = 1; k < h.curve.size(); ++k)
-        integral += 0.5 * (h.curve[k].y() + h.curve[k - 1].y()) * (h.curve[k].x() - h.curve[k - 1].x());
-    const double top = h.curve.back().x();
-    QVERIFY(std::abs(integral - (1.0 - std::exp(-m * top * top / (2.0 * h.kT)))) < 1e-3);
-    // And the balls follow it: each bin within 15% of the curve's mean over the bin where it is tall.
-    for (int k = 0; k < 30; ++k) {
-        const double lo = k * h.binWidth, hi = lo + h.binWidth;
-        const double expected =
-            (std::exp(-m * lo * lo / (2 * h.kT)) - std::exp(-m * hi * hi / (2 * h.kT))) / h.binWidth;
-        if (expected * h.binWidth > 0.02)
-            QVERIFY2(std::abs(h.density[k] / expected - 1.0) < 0.15, qPrintable(QString::number(k)));
-    }
-
-    // The dock shows the tab only when asked.
-    SimulationController controller;
-    sim::Scene scene = box({});
-    scene.balls = list;
-    for (sim::Ball& b : scene.balls)
-        b.position = {300, 200};
-    QVERIFY(!controller.setScene(scene));
-    PlotsDock dock(&controller);
-    QVERIFY(!dock.isHistogramShown());
-    dock.setHistogramShown(true);
-    QVERIFY(dock.series(PlotsDock::Series::MaxwellBoltzmann)->count() > 100);
-    QCOMPARE(dock.series(PlotsDock::Series::Histogram)->count(), 2 * 30 + 2);
 }
 
 QTEST_MAIN(GuiCanvasTest)

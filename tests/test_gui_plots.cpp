@@ -5,6 +5,9 @@
 
 #include "ui/docks/plots_dock.h"
 #include "ui/drawing/world_painter.h"
+#include "ui/charts/energy_bars.h"
+#include "ui/charts/quantity_graph.h"
+#include "ui/charts/speed_histogram.h"
 #include "lessons/lesson_loader.h"
 #include "sim/world/world.h"
 #include "ui/controls/readable_numbers.h"
@@ -12,10 +15,14 @@
 
 #include "sim/world/scene.h"
 
+#include <QBarCategoryAxis>
+#include <QBarSet>
+#include <QComboBox>
 #include <QChart>
 #include <QRegularExpression>
 #include <QChartView>
 #include <QLineSeries>
+#include <QTabWidget>
 #include <QTest>
 #include <QValueAxis>
 
@@ -51,6 +58,12 @@ private slots:
     void panelsWriteNumbersAsAStudentDoes();
     void countsHaveTheRightPlural();
     void bigEnergiesAreReadable();
+    void energyBarsAreTheClosedFormEnergies();
+    void energyBarsBookWhatDragTakes();
+    void graphFollowsTheFallUntilTheBounce();
+    void graphOfTotalsKeepsEnergyWhereNothingDissipates();
+    void speedHistogramOfAMaxwellBoltzmannSample();
+    void gasLessonSettlesOnTheCurve();
 };
 
 void GuiPlotsTest::niceAxisHasRoundTicksAndOneFactor_data()
@@ -223,6 +236,291 @@ void GuiPlotsTest::bigEnergiesAreReadable()
             QVERIFY2(xTitle <= chart->plotArea().width(), qPrintable(a->titleText()));
         }
     }
+}
+
+// One ball thrown up under gravity, no walls, no drag, rk4 (exact for a
+// constant acceleration, up to rounding): after t the bars are
+//     kinetic   ½ m (vx₀² + (vy₀ + g t)²)
+//     potential m g h with h = −y (y down, 0 at the top), y = y₀ + vy₀ t + ½ g t²
+//     lost      0
+//     total     the starting ½ m v₀² − m g y₀, the same all the time
+// to 1e-9 of the energy scale.
+void GuiPlotsTest::energyBarsAreTheClosedFormEnergies()
+{
+    const double g = 980.0, y0 = 300.0, vx0 = 50.0, vy0 = -400.0;
+    sim::Scene scene = sim::openScene({sim::ballAt(200.0, y0, vx0, vy0, 10.0)});
+    scene.settings.gravity.enabled = true;
+    scene.settings.time.integrator = sim::IntegratorKind::Rk4;
+    SimulationController controller;
+    QVERIFY(!controller.setScene(scene));
+    PlotsDock dock(&controller);
+    dock.tabs()->setCurrentWidget(dock.energyBars());
+    dock.resize(420, 360);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    EnergyBars* bars = dock.energyBars();
+    QVERIFY(bars->isVisible());
+    QVERIFY(controller.world().accounting()); // shown bars keep the books
+
+    const double m = controller.world().balls().mass[0];
+    const double start = 0.5 * m * (vx0 * vx0 + vy0 * vy0) - m * g * y0;
+    const double scale = 0.5 * m * (vx0 * vx0 + vy0 * vy0) + m * g * y0;
+    for (int k = 0; k < 45; ++k) {
+        controller.advance(controller.world().settings().time.dt);
+        bars->refresh();
+        const double t = controller.world().time();
+        const double vy = vy0 + g * t, y = y0 + vy0 * t + 0.5 * g * t * t;
+        const EnergyBars::Account& a = bars->shown();
+        QVERIFY2(std::abs(a.kinetic - 0.5 * m * (vx0 * vx0 + vy * vy)) < 1e-9 * scale, qPrintable(QString::number(t)));
+        QVERIFY2(std::abs(a.potential - m * g * (-y)) < 1e-9 * scale, qPrintable(QString::number(t)));
+        QVERIFY(a.lostKnown);
+        QVERIFY(std::abs(a.lost) < 1e-9 * scale);
+        QVERIFY2(std::abs(a.total - start) < 1e-9 * scale, qPrintable(QString::number(a.total - start)));
+    }
+    QCOMPARE(controller.world().stepCount(), 45);
+    QVERIFY(controller.world().balls().velocity(1, 0) > 0.0); // past the top: on its way down again
+
+    // The bars are those values over the factor the axis title names, with
+    // the unit; each category says its value in those units, in human notation.
+    for (EnergyBars::Bar bar : {EnergyBars::Bar::Kinetic, EnergyBars::Bar::Potential, EnergyBars::Bar::Lost,
+                                EnergyBars::Bar::Total}) {
+        const int k = static_cast<int>(bar);
+        QCOMPARE(bars->barSet(bar)->at(k) * bars->shownFactor(), bars->shown().value(bar));
+        QVERIFY(bars->categoryAxis()->categories().at(k).endsWith(
+            humanNumber(bars->shown().value(bar) / bars->shownFactor(), 3)));
+    }
+    // Energies of about 10⁹ (mass ≈ 4189): one factor, a power of 1000, named with the unit.
+    const double exponent = std::log10(bars->shownFactor());
+    QVERIFY2(exponent >= 6 && std::fmod(exponent, 3.0) == 0.0, qPrintable(QString::number(exponent)));
+    QCOMPARE(bars->valueAxis()->titleText(),
+             QStringLiteral("energy (×10%1 mass·px²/s²)").arg(exponent == 6 ? QStringLiteral("⁶") : QStringLiteral("⁹")));
+    QVERIFY(std::max(std::abs(bars->valueAxis()->min()), std::abs(bars->valueAxis()->max())) < 1e4);
+    QVERIFY(isRoundStep(bars->valueAxis()->tickInterval()));
+    QVERIFY(!bars->valueAxis()->labelFormat().contains(QLatin1Char('e')));
+
+    // Hidden, the bars let the books go (nobody else holds them).
+    dock.tabs()->setCurrentIndex(0);
+    QTRY_VERIFY(!bars->isVisible());
+    QVERIFY(!controller.world().accounting());
+}
+
+// Linear drag takes energy away: the lost bar grows by what the books say
+// drag took, and the total stays where it started to the error of the
+// books' trapezoid rule, second order in the step: below 2 (k dt)² = 3.6e-4
+// of the starting energy (k = 0.8/s, dt = 1/60 s, rk4; measured 8.3e-5 over 2 s).
+void GuiPlotsTest::energyBarsBookWhatDragTakes()
+{
+    sim::Scene scene = sim::openScene({sim::ballAt(200.0, 300.0, 300.0, -200.0, 10.0)});
+    scene.settings.gravity.enabled = true;
+    scene.settings.drag = sim::DragSettings{true, sim::DragLaw::Linear, 0.8};
+    scene.settings.time.integrator = sim::IntegratorKind::Rk4;
+    SimulationController controller;
+    QVERIFY(!controller.setScene(scene));
+    EnergyBars bars(&controller);
+    bars.resize(360, 300);
+    bars.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bars));
+    const double start = controller.world().energy().total();
+    for (int k = 0; k < 120; ++k)
+        controller.advance(controller.world().settings().time.dt);
+    QTRY_VERIFY(bars.shown().lost > 0.0); // the timer redraws
+    bars.refresh();
+    const EnergyBars::Account& a = bars.shown();
+    QCOMPARE(a.lost, -controller.world().bookedEnergy());
+    QVERIFY2(a.lost > 0.1 * a.kinetic, qPrintable(QString::number(a.lost)));
+    const double k = 0.8, dt = controller.world().settings().time.dt;
+    QVERIFY2(std::abs(a.total - start) < 2.0 * k * k * dt * dt * std::abs(start), qPrintable(QString::number((a.total - start) / start)));
+}
+
+// Lesson 07: the orange ball (ball 4) thrown up from y₀ = 300 px at
+// v₀ = −400 px/s under g = 980 px/s², picked from the combo boxes. Until it
+// reaches the floor (y = 390 px, t = 1.0 s in closed form; a little earlier
+// for the integrator) its graphed y is the theory y₀ + v₀t + ½gt² plus
+// semi-implicit Euler's own offset ½g·dt·t (at most 8.2 px at 1 s), to
+// 1e-8 px; vy is v₀ + gt to 1e-9 px/s; with the exact integrator y is the
+// theory itself to 1e-8 px. The theory curve stops at the bounce.
+void GuiPlotsTest::graphFollowsTheFallUntilTheBounce()
+{
+    const LoadResult r = LessonLoader::load(QStringLiteral("gravity"));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
+    for (const sim::IntegratorKind integrator : {sim::IntegratorKind::SemiImplicitEuler, sim::IntegratorKind::Exact}) {
+        sim::Scene scene = r.lesson->scene;
+        scene.settings.time.integrator = integrator;
+        SimulationController controller;
+        QVERIFY(!controller.setScene(scene));
+        PlotsDock dock(&controller);
+        QuantityGraph* graph = dock.quantityGraph();
+        dock.tabs()->setCurrentWidget(graph);
+        dock.resize(480, 400);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        graph->ballBox()->setCurrentIndex(graph->ballBox()->findText(QStringLiteral("ball 4")));
+        QCOMPARE(graph->ball(), 3);
+        graph->quantityBox()->setCurrentIndex(graph->quantityBox()->findText(QStringLiteral("y position")));
+        QCOMPARE(graph->quantity(), QuantityGraph::Quantity::Y);
+        QCOMPARE(graph->theoryName(), QStringLiteral("theory: y₀ + v₀t + ½gt²"));
+
+        const double dt = controller.world().settings().time.dt, g = 980.0, y0 = 300.0, v0 = -400.0;
+        while (controller.world().time() < 1.5)
+            controller.advance(dt);
+        // Its own bounce ends the theory (the red, blue and green balls reach the floor earlier).
+        QVERIFY2(graph->theoryEnd() > 0.95 && graph->theoryEnd() <= 1.0, qPrintable(QString::number(graph->theoryEnd())));
+        int compared = 0;
+        for (const QPointF& p : graph->samples()) {
+            const std::optional<double> theory = graph->theoryAt(p.x());
+            if (p.x() > graph->theoryEnd()) {
+                QVERIFY(!theory);
+                continue;
+            }
+            QVERIFY(theory);
+            const double t = p.x();
+            QVERIFY(std::abs(*theory - (y0 + v0 * t + 0.5 * g * t * t)) < 1e-9);
+            const double offset = integrator == sim::IntegratorKind::Exact ? 0.0 : 0.5 * g * dt * t;
+            QVERIFY2(std::abs(p.y() - *theory - offset) < 1e-8,
+                     qPrintable(QStringLiteral("t %1: y %2, theory %3").arg(t).arg(p.y()).arg(*theory)));
+            ++compared;
+        }
+        QVERIFY(compared >= 57); // 0 … 0.95 s at 60 samples a second
+
+        // On screen: the theory dashed, named, and only up to the bounce.
+        graph->refresh();
+        QLineSeries* theory = graph->theorySeries();
+        QVERIFY(theory->isVisible());
+        QCOMPARE(theory->pen().style(), Qt::DashLine);
+        QCOMPARE(theory->name(), QStringLiteral("theory: y₀ + v₀t + ½gt²"));
+        QVERIFY(theory->count() > 100);
+        QCOMPARE(theory->at(theory->count() - 1).x(), graph->theoryEnd());
+        QVERIFY(graph->measuredSeries()->at(graph->measuredSeries()->count() - 1).x() > graph->theoryEnd());
+
+        // vy: v₀ + gt, exact for every integrator, from a fresh start now (after the bounce).
+        graph->quantityBox()->setCurrentIndex(graph->quantityBox()->findText(QStringLiteral("velocity v_y")));
+        QCOMPARE(graph->theoryName(), QStringLiteral("theory: v₀ + gt"));
+        const double t0 = controller.world().time();
+        const double vy0 = controller.world().balls().velocity(1, 3);
+        for (int k = 0; k < 10; ++k)
+            controller.advance(dt);
+        QCOMPARE(graph->samples().size(), std::size_t{11});
+        for (const QPointF& p : graph->samples())
+            if (p.x() <= graph->theoryEnd())
+                QVERIFY(std::abs(p.y() - (vy0 + g * (p.x() - t0))) < 1e-9);
+    }
+}
+
+// All balls of a box without walls under gravity and a spring: nothing
+// takes energy away, so the theory is the starting total, and the total
+// energy graphed stays on it to rk4's error (1e-6 of the energy scale over
+// 1 s at dt = 1/60 s). With drag there is no theory curve.
+void GuiPlotsTest::graphOfTotalsKeepsEnergyWhereNothingDissipates()
+{
+    sim::Scene scene = sim::openScene({sim::ballAt(100, 100, 120, 0), sim::ballAt(300, 50, -60, 30, 15)});
+    scene.settings.gravity.enabled = true;
+    scene.settings.spring.enabled = true;
+    scene.settings.spring.k = 4.0;
+    scene.settings.spring.anchor = {200.0, 100.0};
+    scene.settings.time.integrator = sim::IntegratorKind::Rk4;
+    SimulationController controller;
+    QVERIFY(!controller.setScene(scene));
+    QuantityGraph graph(&controller);
+    graph.setBall(QuantityGraph::kAllBalls);
+    graph.setQuantity(QuantityGraph::Quantity::Total);
+    QCOMPARE(graph.theoryName(), QStringLiteral("theory: E₀, nothing takes energy away"));
+    const double e0 = controller.world().energy().total();
+    const double scale = controller.world().energy().kinetic + std::abs(controller.world().energy().potential);
+    for (int k = 0; k < 60; ++k)
+        controller.advance(controller.world().settings().time.dt);
+    QCOMPARE(graph.samples().size(), std::size_t{61});
+    for (const QPointF& p : graph.samples()) {
+        QCOMPARE(*graph.theoryAt(p.x()), e0);
+        QVERIFY2(std::abs(p.y() - e0) < 1e-6 * scale, qPrintable(QString::number((p.y() - e0) / scale)));
+    }
+    scene.settings.drag.enabled = true;
+    QVERIFY(controller.setSettings(scene.settings));
+    QVERIFY(graph.theoryName().isEmpty());
+    QVERIFY(!graph.theoryAt(controller.world().time()));
+}
+
+// 4000 equal balls with speeds at the quantiles of the 2D Maxwell–Boltzmann
+// law of kT/m = σ² = 100² (px/s)²: speed σ √(−2 ln U). Bins of a round
+// width; the counts add up to N; kT is the balls' mean kinetic energy; the
+// curve, N Δv f(v), has that same mean energy: over [0, V] the trapezoid sum
+// of ½mv² f(v) is the closed form kT (1 − e^(−x)(1 + x)), x = mV²/2kT, to
+// 1e-6 kT; and the balls follow the curve, total variation below 0.02.
+void GuiPlotsTest::speedHistogramOfAMaxwellBoltzmannSample()
+{
+    std::vector<sim::Ball> list;
+    const double sigma = 100.0;
+    const int n = 4000;
+    for (int i = 0; i < n; ++i) {
+        const double u = (i + 0.5) / n; // quantiles: no random numbers needed
+        const double speed = sigma * std::sqrt(-2.0 * std::log(u));
+        const double angle = 2.399963 * i;
+        list.push_back(sim::ballAt(0, 0, speed * std::cos(angle), speed * std::sin(angle), 5));
+    }
+    sim::BallState balls;
+    balls.assign(list);
+    const SpeedHistogram::Histogram h = SpeedHistogram::compute(balls, 20, 4001);
+    QVERIFY(isRoundStep(h.binWidth));
+    QVERIFY(h.counts.size() >= 10 && h.counts.size() <= 40);
+    double counted = 0.0;
+    for (double c : h.counts)
+        counted += c;
+    QCOMPARE(counted, double(n));
+    const double m = balls.mass[0];
+    double kinetic = 0.0;
+    for (int i = 0; i < n; ++i)
+        kinetic += 0.5 * m * balls.velocity.col(i).squaredNorm();
+    QVERIFY(std::abs(h.kT / (kinetic / n) - 1.0) < 1e-12);
+    QVERIFY(std::abs(h.kT / (m * sigma * sigma) - 1.0) < 0.01); // the sample's own kT/m is σ² to 1%
+
+    double energy = 0.0; // ∫ ½mv² f(v) dv over the curve's range
+    for (qsizetype k = 1; k < h.curve.size(); ++k) {
+        const QPointF a = h.curve[k - 1], b = h.curve[k];
+        const double fa = a.y() / (n * h.binWidth), fb = b.y() / (n * h.binWidth);
+        energy += 0.5 * (0.5 * m * a.x() * a.x() * fa + 0.5 * m * b.x() * b.x() * fb) * (b.x() - a.x());
+    }
+    const double x = m * h.curve.back().x() * h.curve.back().x() / (2.0 * h.kT);
+    const double closedForm = h.kT * (1.0 - std::exp(-x) * (1.0 + x));
+    QVERIFY2(std::abs(energy - closedForm) < 1e-6 * h.kT, qPrintable(QString::number((energy - closedForm) / h.kT)));
+    QVERIFY(std::abs(closedForm - h.kT) < 1e-3 * h.kT); // the range holds all but the far tail
+    QVERIFY2(h.totalVariation() < 0.02, qPrintable(QString::number(h.totalVariation())));
+}
+
+// Lesson 32: 400 equal balls all at 200 px/s spread into the curve through
+// their collisions. At the start the histogram is one spike far from it
+// (total variation above 0.5; measured 0.93); after 5 s below 0.2 (measured
+// 0.09 with 25 bins of 20 px/s). The dock shows the tab.
+void GuiPlotsTest::gasLessonSettlesOnTheCurve()
+{
+    const LoadResult r = LessonLoader::load(QStringLiteral("gas-in-a-box"));
+    QVERIFY2(r.ok(), qPrintable(r.errors().join(" | ")));
+    SimulationController controller;
+    QVERIFY(!controller.setScene(r.lesson->scene));
+    const sim::BallState& balls = controller.world().balls();
+    QCOMPARE(balls.size(), 400);
+    QCOMPARE(balls.mass.minCoeff(), balls.mass.maxCoeff()); // equal masses: one curve
+    PlotsDock dock(&controller);
+    QVERIFY(!dock.tabs()->isAncestorOf(dock.speedHistogram()));
+    dock.setHistogramShown(true);
+    QCOMPARE(dock.tabs()->currentWidget(), dock.speedHistogram());
+    dock.resize(480, 400);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    SpeedHistogram* histogram = dock.speedHistogram();
+    histogram->refresh();
+    const double start = histogram->shown().totalVariation();
+    QVERIFY2(start > 0.5, qPrintable(QString::number(start)));
+    QCOMPARE(histogram->shown().kT, controller.world().energy().kinetic / 400);
+    while (controller.world().time() < 5.0)
+        controller.advance(controller.world().settings().time.dt);
+    histogram->refresh();
+    const SpeedHistogram::Histogram& h = histogram->shown();
+    QVERIFY(std::abs(h.kT / (controller.world().energy().kinetic / 400) - 1.0) < 1e-12);
+    qInfo("gas: total variation %.3f at 0 s, %.3f at 5 s (%lld bins of %g px/s)", start, h.totalVariation(),
+          static_cast<long long>(h.counts.size()), h.binWidth);
+    QVERIFY2(h.totalVariation() < 0.2, qPrintable(QString::number(h.totalVariation())));
+    QCOMPARE(histogram->countSeries()->count(), 2 * h.counts.size() + 2);
+    QVERIFY(histogram->curveSeries()->count() > 100);
+    QVERIFY(histogram->countAxis()->titleText().startsWith(QStringLiteral("balls per ")));
 }
 
 QTEST_MAIN(GuiPlotsTest)

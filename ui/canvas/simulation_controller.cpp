@@ -337,6 +337,17 @@ void SimulationController::setTimeScale(double scale)
     emit timeScaleChanged(m_timeScale);
 }
 
+void SimulationController::holdAccounting(const void* holder, bool hold)
+{
+    if (hold)
+        m_accountingHolders.insert(holder);
+    else
+        m_accountingHolders.erase(holder);
+    const bool on = !m_accountingHolders.empty();
+    if (m_world.accounting() != on)
+        m_world.setAccounting(on);
+}
+
 void SimulationController::setSuspended(bool suspended)
 {
     if (suspended == m_suspended)

@@ -19,6 +19,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 
 namespace forcelab {
 
@@ -81,6 +82,11 @@ public:
     bool setSettings(const sim::WorldSettings& settings);
 
     void setPointer(const sim::PointerInput& pointer);
+    /// The world's energy books (sim::World::setAccounting) stay on while
+    /// any view holds them: each view that shows booked energy (the Accuracy
+    /// dock's drift, the energy bars' "lost") holds them while it is shown,
+    /// and one view hiding does not switch them off under another.
+    void holdAccounting(const void* holder, bool hold);
 
     bool isPlaying() const { return m_playing; }
     bool isSuspended() const { return m_suspended; }
@@ -194,6 +200,7 @@ private:
     sim::WorldSettings ghostSettings(const sim::WorldSettings& live) const;
 
     sim::World m_world;
+    std::set<const void*> m_accountingHolders; // see holdAccounting
     sim::Timeline m_timeline;
     std::optional<sim::PointerInput> m_pendingPointer; // the live pointer, held while re-running the record
     bool m_handMoved = false; // a held ball was moved since the last step (noteHandMoved)

@@ -140,7 +140,7 @@ AccuracyDock::AccuracyDock(SimulationController* controller, Canvas* canvas, QWi
     });
     // The books cost force evaluations: kept only while someone looks at them.
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        m_controller->mutableWorld().setAccounting(visible);
+        m_controller->holdAccounting(this, visible);
         updateNumbers();
     });
     // Opened from the menu while tabbed behind the plots: bring it to the front.

@@ -1,5 +1,9 @@
 #include "ui/docks/plots_dock.h"
 
+#include "ui/charts/energy_bars.h"
+#include "ui/charts/quantity_graph.h"
+#include "ui/charts/speed_histogram.h"
+
 #include "ui/controls/readable_numbers.h"
 #include "ui/canvas/simulation_controller.h"
 
@@ -13,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 namespace forcelab {
 
@@ -108,26 +111,23 @@ PlotsDock::PlotsDock(SimulationController* controller, QWidget* parent)
     m_py->setName(tr("p_y"));
     m_cost = new QLineSeries(this);
     m_cost->setName(tr("one step"));
-    m_histogram = new QLineSeries(this);
-    m_histogram->setName(tr("balls"));
-    m_maxwell = new QLineSeries(this);
-    m_maxwell->setName(tr("Maxwell–Boltzmann (2D)"));
 
     m_tabs = new QTabWidget(this);
     m_tabs->setAccessibleName(tr("Plots of energy, momentum and step cost"));
     m_tabs->setDocumentMode(true);
     m_tabs->addTab(makeChart(tr("Energy"), {m_kinetic, m_potential, m_total}, &m_energyX, &m_energyY), tr("Energy"));
+    m_energyBars = new EnergyBars(m_controller);
+    m_tabs->addTab(m_energyBars, tr("Energy bars"));
+    m_quantityGraph = new QuantityGraph(m_controller);
+    m_tabs->addTab(m_quantityGraph, tr("Graph"));
     m_tabs->addTab(makeChart(tr("Momentum"), {m_p, m_px, m_py}, &m_momentumX, &m_momentumY), tr("Momentum"));
     m_tabs->addTab(makeChart(tr("Cost of a step"), {m_cost}, &m_costX, &m_costY), tr("Step cost"));
-    m_histogramView = makeChart(tr("Speeds"), {m_histogram, m_maxwell}, &m_speedX, &m_speedY);
-    m_speedX->setTitleText(tr("speed (px/s)"));
-    m_histogramView->setParent(this);
-    m_histogramView->hide();
+    m_speedHistogram = new SpeedHistogram(m_controller, this);
+    m_speedHistogram->hide();
     setWidget(m_tabs);
 
     // The same colours as the canvas where they mean the same thing.
     m_total->setPen(QPen(QColor(0x1d, 0x22, 0x2c), 2.0));
-    m_maxwell->setPen(QPen(QColor(0xd9, 0x48, 0x0f), 2.0));
 
     m_redraw.setSingleShot(true);
     m_redraw.setInterval(kRedrawMs);
@@ -179,8 +179,6 @@ double PlotsDock::shownFactor(Series which) const
     case Series::MomentumX:
     case Series::MomentumY: return m_momentumFactor;
     case Series::StepCost: return m_costFactor;
-    case Series::Histogram:
-    case Series::MaxwellBoltzmann: return m_speedFactor;
     }
     return 1.0;
 }
@@ -195,8 +193,6 @@ QLineSeries* PlotsDock::series(Series which) const
     case Series::MomentumX: return m_px;
     case Series::MomentumY: return m_py;
     case Series::StepCost: return m_cost;
-    case Series::Histogram: return m_histogram;
-    case Series::MaxwellBoltzmann: return m_maxwell;
     }
     return nullptr;
 }
@@ -207,13 +203,12 @@ void PlotsDock::setHistogramShown(bool shown)
         return;
     m_histogramShown = shown;
     if (shown) {
-        m_tabs->addTab(m_histogramView, tr("Speeds"));
-        m_tabs->setCurrentWidget(m_histogramView);
-        refreshHistogram();
+        m_tabs->addTab(m_speedHistogram, tr("Speeds"));
+        m_tabs->setCurrentWidget(m_speedHistogram);
     } else {
-        m_tabs->removeTab(m_tabs->indexOf(m_histogramView));
-        m_histogramView->setParent(this);
-        m_histogramView->hide();
+        m_tabs->removeTab(m_tabs->indexOf(m_speedHistogram));
+        m_speedHistogram->setParent(this);
+        m_speedHistogram->hide();
     }
 }
 
@@ -285,82 +280,6 @@ void PlotsDock::refreshCharts()
 
     const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
     m_costFactor = showOnAxis(m_costY, tr("Computer time per step"), tr("µs"), {{m_cost, cost}}, true, ticksFor(m_cost));
-
-    if (m_histogramShown)
-        refreshHistogram();
-}
-
-void PlotsDock::refreshHistogram()
-{
-    const Histogram h = speedHistogram(m_controller->world().balls());
-    // The histogram as a step outline: up the left edge of each bin, across, down.
-    QList<QPointF> steps;
-    steps.reserve(2 * h.density.size() + 2);
-    steps.append(QPointF(0.0, 0.0));
-    for (qsizetype k = 0; k < h.density.size(); ++k) {
-        steps.append(QPointF(static_cast<double>(k) * h.binWidth, h.density[k]));
-        steps.append(QPointF(static_cast<double>(k + 1) * h.binWidth, h.density[k]));
-    }
-    if (!h.density.isEmpty())
-        steps.append(QPointF(static_cast<double>(h.density.size()) * h.binWidth, 0.0));
-    const double top = static_cast<double>(h.density.size()) * h.binWidth;
-    applyNiceAxis(m_speedX, niceAxis(0.0, top > 0.0 ? top : 1.0));
-    m_speedX->setRange(0.0, top > 0.0 ? top : 1.0);
-    m_speedFactor =
-        showOnAxis(m_speedY, tr("Speeds: share of balls"), tr("per px/s"), {{m_histogram, steps}, {m_maxwell, h.curve}},
-                   true, ticksFor(m_histogram));
-}
-
-PlotsDock::Histogram PlotsDock::speedHistogram(const sim::BallState& balls, int bins, int curvePoints)
-{
-    Histogram h;
-    const int n = balls.size();
-    if (n == 0 || bins < 1)
-        return h;
-    const Eigen::VectorXd speed = balls.velocity.colwise().norm().transpose();
-    const double top = speed.maxCoeff();
-    if (!(top > 0.0) || !std::isfinite(top))
-        return h;
-    h.binWidth = top * (1.0 + 1e-9) / bins;
-    h.density = QList<double>(bins, 0.0);
-    for (int i = 0; i < n; ++i)
-        h.density[std::min(bins - 1, static_cast<int>(speed[i] / h.binWidth))] += 1.0;
-    for (double& d : h.density)
-        d /= n * h.binWidth;
-
-    // In 2D each ball has two degrees of freedom, so its mean kinetic energy
-    // is kT (½kT each). A ball of mass m then has the speed density
-    //     f_m(v) = (m v / kT) exp(−m v² / 2kT),
-    // and a mix of masses has the mixture of these curves.
-    h.kT = 0.5 * balls.mass.dot(speed.cwiseAbs2()) / n;
-    if (!(h.kT > 0.0))
-        return h;
-    std::map<double, int> masses;
-    for (int i = 0; i < n; ++i)
-        ++masses[balls.mass[i]];
-    // Many distinct masses (random radii): the curve from every ball would
-    // cost N per point; 256 mass quantiles of equal weight describe it.
-    std::vector<std::pair<double, double>> groups; // (mass, weight)
-    if (masses.size() <= 256) {
-        for (const auto& [m, count] : masses)
-            groups.emplace_back(m, static_cast<double>(count) / n);
-    } else {
-        std::vector<double> sorted(balls.mass.data(), balls.mass.data() + n);
-        std::sort(sorted.begin(), sorted.end());
-        for (int q = 0; q < 256; ++q)
-            groups.emplace_back(sorted[static_cast<std::size_t>((2 * q + 1) * n / 512)], 1.0 / 256.0);
-    }
-    const int points = std::max(2, curvePoints);
-    const double range = static_cast<double>(bins) * h.binWidth;
-    h.curve.reserve(points);
-    for (int k = 0; k < points; ++k) {
-        const double v = range * k / (points - 1);
-        double f = 0.0;
-        for (const auto& [m, weight] : groups)
-            f += weight * (m * v / h.kT) * std::exp(-m * v * v / (2.0 * h.kT));
-        h.curve.append(QPointF(v, f));
-    }
-    return h;
 }
 
 } // namespace forcelab

@@ -1,15 +1,15 @@
 #pragma once
 // The Plots dock: energy (kinetic, potential, total), momentum (|p|, px, py)
-// and the cost of a step over the last kWindowSeconds of simulated time, and
+// and the cost of a step over the last kWindowSeconds of simulated time, the
+// energies now as bars (ui/charts/energy_bars.h), any quantity of a ball or
+// of all balls against time with its theory (ui/charts/quantity_graph.h), and
 // for the gas lesson the histogram of speeds with the 2D Maxwell–Boltzmann
-// curve of the same mean energy.
+// curve of the same mean energy (ui/charts/speed_histogram.h).
 //
 // One sample per controller frame in which the world's time moved on, so a
 // paused simulation adds nothing and the plots stand still. Samples are kept
 // in a ring; the charts are redrawn at most every kRedrawMs and only while the
 // dock is visible, each series with at most kMaxPoints points (decimated).
-
-#include "sim/world/ball_state.h"
 
 #include <QDockWidget>
 #include <QList>
@@ -25,6 +25,9 @@ class QValueAxis;
 
 namespace forcelab {
 
+class EnergyBars;
+class QuantityGraph;
+class SpeedHistogram;
 class SimulationController;
 
 class PlotsDock : public QDockWidget {
@@ -47,33 +50,28 @@ public:
     static constexpr std::size_t kMaxSamples = 20000; ///< ring bound (very slow motion shortens the window)
     static constexpr int kMaxPoints = 1000;        ///< points per series on screen
     static constexpr int kRedrawMs = 100;
-    static constexpr int kHistogramBins = 30;
 
     const std::deque<Sample>& samples() const { return m_samples; }
+
+    /// The "Energy bars" tab: the energies now as bars (ui/charts/energy_bars.h).
+    EnergyBars* energyBars() const { return m_energyBars; }
+    /// The "Graph" tab: any quantity against time with its theory (ui/charts/quantity_graph.h).
+    QuantityGraph* quantityGraph() const { return m_quantityGraph; }
+    /// The tabs (tests pick one to show).
+    QTabWidget* tabs() const { return m_tabs; }
 
     /// Shows the speed-histogram tab (a lesson whose overlays name "histogram").
     void setHistogramShown(bool shown);
     bool isHistogramShown() const { return m_histogramShown; }
 
-    enum class Series { Kinetic, Potential, Total, MomentumMagnitude, MomentumX, MomentumY, StepCost,
-                        Histogram, MaxwellBoltzmann };
+    enum class Series { Kinetic, Potential, Total, MomentumMagnitude, MomentumX, MomentumY, StepCost };
     /// The chart series (for tests and screenshots). Their points are the
     /// values divided by shownFactor(), the common factor the axis names.
     QLineSeries* series(Series which) const;
     double shownFactor(Series which) const;
 
-    /// The speed histogram of the current balls as a density (bins of width
-    /// `binWidth` from 0; the areas sum to 1) and the 2D Maxwell–Boltzmann
-    /// density for the same kinetic energy per ball, sampled at `curvePoints`
-    /// speeds. Balls of different masses each follow their own curve with the
-    /// same kT; the curve is their mixture.
-    struct Histogram {
-        double binWidth = 0.0; ///< px/s
-        QList<double> density; ///< 1/(px/s), per bin
-        QList<QPointF> curve;  ///< (speed px/s, density)
-        double kT = 0.0;       ///< mean kinetic energy per ball (2 degrees of freedom: kT)
-    };
-    static Histogram speedHistogram(const sim::BallState& balls, int bins = kHistogramBins, int curvePoints = 121);
+    /// The "Speeds" tab (shown by setHistogramShown).
+    SpeedHistogram* speedHistogram() const { return m_speedHistogram; }
 
 public slots:
     /// Redraws the charts from the samples now (the timer calls it).
@@ -83,7 +81,6 @@ public slots:
 private:
     void onStepped();
     void scheduleRefresh();
-    void refreshHistogram();
     QChartView* makeChart(const QString& title, const QList<QLineSeries*>& series, QValueAxis** xAxis,
                           QValueAxis** yAxis);
 
@@ -93,9 +90,11 @@ private:
     bool m_histogramShown = false;
     QTimer m_redraw;
     // The common factor divided out of each chart's points.
-    double m_energyFactor = 1.0, m_momentumFactor = 1.0, m_costFactor = 1.0, m_speedFactor = 1.0;
+    double m_energyFactor = 1.0, m_momentumFactor = 1.0, m_costFactor = 1.0;
 
     QTabWidget* m_tabs = nullptr;
+    EnergyBars* m_energyBars = nullptr;
+    QuantityGraph* m_quantityGraph = nullptr;
     QLineSeries* m_kinetic = nullptr;
     QLineSeries* m_potential = nullptr;
     QLineSeries* m_total = nullptr;
@@ -103,17 +102,13 @@ private:
     QLineSeries* m_px = nullptr;
     QLineSeries* m_py = nullptr;
     QLineSeries* m_cost = nullptr;
-    QLineSeries* m_histogram = nullptr;
-    QLineSeries* m_maxwell = nullptr;
     QValueAxis* m_energyX = nullptr;
     QValueAxis* m_energyY = nullptr;
     QValueAxis* m_momentumX = nullptr;
     QValueAxis* m_momentumY = nullptr;
     QValueAxis* m_costX = nullptr;
     QValueAxis* m_costY = nullptr;
-    QValueAxis* m_speedX = nullptr;
-    QValueAxis* m_speedY = nullptr;
-    QChartView* m_histogramView = nullptr;
+    SpeedHistogram* m_speedHistogram = nullptr;
 };
 
 } // namespace forcelab
