@@ -332,7 +332,7 @@ void GuiPlotsTest::energyBarsBookWhatDragTakes()
     QVERIFY2(std::abs(a.total - start) < 2.0 * k * k * dt * dt * std::abs(start), qPrintable(QString::number((a.total - start) / start)));
 }
 
-// Lesson 07: the orange ball (ball 4) thrown up from y₀ = 300 px at
+// Lesson 07: the orange ball (ball 3) thrown up from y₀ = 300 px at
 // v₀ = −400 px/s under g = 980 px/s², picked from the combo boxes. Until it
 // reaches the floor (y = 390 px, t = 1.0 s in closed form; a little earlier
 // for the integrator) its graphed y is the theory y₀ + v₀t + ½gt² plus
@@ -354,10 +354,15 @@ void GuiPlotsTest::graphFollowsTheFallUntilTheBounce()
         dock.resize(480, 400);
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
-        graph->ballBox()->setCurrentIndex(graph->ballBox()->findText(QStringLiteral("ball 4")));
+        // Numbered from 0, as in the readout, the table and the lesson texts.
+        graph->ballBox()->setCurrentIndex(graph->ballBox()->findText(QStringLiteral("ball 3")));
         QCOMPARE(graph->ball(), 3);
         graph->quantityBox()->setCurrentIndex(graph->quantityBox()->findText(QStringLiteral("y position")));
         QCOMPARE(graph->quantity(), QuantityGraph::Quantity::Y);
+        // y grows downwards in the box and on the graph's axis.
+        const QList<QAbstractAxis*> vertical = graph->findChild<QChartView*>()->chart()->axes(Qt::Vertical);
+        QCOMPARE(vertical.size(), 1);
+        QVERIFY(qobject_cast<QValueAxis*>(vertical[0])->isReverse());
         QCOMPARE(graph->theoryName(), QStringLiteral("theory: y₀ + v₀t + ½gt²"));
 
         const double dt = controller.world().settings().time.dt, g = 980.0, y0 = 300.0, v0 = -400.0;

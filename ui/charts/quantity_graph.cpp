@@ -197,7 +197,7 @@ void QuantityGraph::fillBallBox()
     m_ballBox->clear();
     m_ballBox->addItem(tr("all balls"), kAllBalls);
     for (int i = 0; i < n; ++i)
-        m_ballBox->addItem(tr("ball %1").arg(i + 1), i);
+        m_ballBox->addItem(tr("ball %1").arg(i), i);
     if (m_ball >= n)
         m_ball = n > 0 ? 0 : kAllBalls;
     m_ballBox->setCurrentIndex(m_ballBox->findData(m_ball));
@@ -393,6 +393,10 @@ void QuantityGraph::refresh()
     const int ticks = std::clamp(static_cast<int>(m_view->chart()->plotArea().height() / 45.0), 2, 6);
     const NiceAxis nice = niceAxis(lo, hi, ticks);
     applyNiceAxis(m_valueAxis, nice);
+    // y grows downwards in the box: its axis does too, so a ball's highest
+    // point is a peak on the graph as on the screen, not a dip.
+    m_valueAxis->setReverse(m_quantity == Quantity::Y || m_quantity == Quantity::Vy ||
+                            m_quantity == Quantity::MomentumY);
     m_factor = nice.factor();
     for (QList<QPointF>* points : {&measured, &theory})
         for (QPointF& p : *points)
@@ -404,7 +408,7 @@ void QuantityGraph::refresh()
     const double span = std::max(end - start, 1.0);
     applyNiceAxis(m_timeAxis, niceAxis(start, start + span));
     m_timeAxis->setRange(start, start + span);
-    const QString of = m_ball == kAllBalls ? tr("all balls") : tr("ball %1").arg(m_ball + 1);
+    const QString of = m_ball == kAllBalls ? tr("all balls") : tr("ball %1").arg(m_ball);
     m_view->chart()->setTitle(
         tr("%1 of %2 (%3%4)").arg(quantityName(m_quantity), of, nice.factorText(), unitOf(m_quantity)));
 }
