@@ -537,8 +537,8 @@ void MainWindow::setProjectorTheme(bool on)
 }
 
 // The lesson's tools (lesson_tools.h) in the Tools menu, on keys 1, 2, …,
-// which work in the stage view too; the canvas's start banner lists them. Panels opened on the stage float over it and close again with
-// the next lesson.
+// which work in the stage view too; the canvas's start banner lists them.
+// Panels opened on the stage float over it and close with the next lesson.
 void MainWindow::setLessonTools(const QStringList& tools)
 {
     // The old tools' actions go: QMenu::clear() keeps those the window also
