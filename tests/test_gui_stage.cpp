@@ -26,6 +26,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QFontInfo>
 #include <QFontMetrics>
 #include <QLabel>
 #include <QMenu>
@@ -396,7 +397,7 @@ void GuiStageTest::normalLayoutGivesTheBoxHalfTheWindow()
 
 void GuiStageTest::stageTextIsNeverCut_data()
 {
-    addProjectorSizes(false);
+    addProjectorSizes(true);
 }
 
 // Every lesson in the stage view at a projector's 1024x768 and 1280x720:
@@ -418,6 +419,7 @@ void GuiStageTest::stageTextIsNeverCut()
     auto* sliderArea = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
     QVERIFY(bar && challenge && readout && sliderArea);
     QStringList shortened;
+    int backRow = 0, challenges = 0; // challenges at 2.4% of the height or more
     struct Smallest {
         qreal points = 1000.0;
         QString lesson;
@@ -436,6 +438,8 @@ void GuiStageTest::stageTextIsNeverCut()
             QVERIFY2(need <= room.height(), qPrintable(QStringLiteral("%1: challenge needs %2 px, has %3")
                                                            .arg(name).arg(need).arg(room.height())));
             QVERIFY2(challenge->font().pointSizeF() >= bar->font().pointSizeF(), qPrintable(name));
+            ++challenges;
+            backRow += QFontInfo(challenge->font()).pixelSize() >= StageView::kTextFloorShare * size.height() - 0.5;
             if (challenge->text() != window.lesson().challenges.value(0)) {
                 shortened << name;
                 QVERIFY2(challenge->text().endsWith(QStringLiteral("…")), qPrintable(name));
@@ -492,6 +496,7 @@ void GuiStageTest::stageTextIsNeverCut()
     qInfo("%dx%d: %lld of %lld challenges shortened (%s)", size.width(), size.height(),
           static_cast<long long>(shortened.size()), static_cast<long long>(LessonLoader::builtInFiles().size()),
           qPrintable(shortened.join(QStringLiteral(", "))));
+    qInfo("%dx%d: %d of %d challenges at 2.4%% of the height or more", size.width(), size.height(), backRow, challenges);
     qInfo("%dx%d: smallest readout %.1f pt in a row (%s), %.1f pt in a column (%s)", size.width(), size.height(),
           smallestInRow.points, qPrintable(smallestInRow.lesson), smallestInColumn.points,
           qPrintable(smallestInColumn.lesson));

@@ -63,17 +63,22 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
 
 // The bar's text sizes, from the window's (the desktop's, the projector
 // theme's, times the teacher's text size): the title 1.6 times it, the
-// challenge, the readout and the buttons 1.3 times.
+// challenge, the readout and the buttons 1.3 times (the challenge larger,
+// from the floor the stage sets).
 void StageBar::applyFonts()
 {
-    QFont big = font();
-    big.setPointSizeF(big.pointSizeF() * 1.6);
-    big.setBold(true);
-    m_title->setFont(big);
     QFont text = font();
     text.setPointSizeF(text.pointSizeF() * 1.3);
-    m_challengeFont = text;
-    m_challenge->setFont(text);
+    // The challenge starts at the floor the stage sets from the screen's
+    // height when that is larger; fitChallenge takes it down to fit.
+    QFont challenge = text;
+    challenge.setPointSizeF(std::max(text.pointSizeF(), pointsOfPixels(m_textFloor)));
+    m_challengeFont = challenge;
+    m_challenge->setFont(challenge);
+    QFont big = font(); // the title never smaller than the challenge's start
+    big.setPointSizeF(std::max(big.pointSizeF() * 1.6, challenge.pointSizeF()));
+    big.setBold(true);
+    m_title->setFont(big);
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     mono.setPointSizeF(text.pointSizeF());
     m_readout->setFont(mono);
@@ -82,6 +87,20 @@ void StageBar::applyFonts()
     m_fitKey = {}; // the readout's size is searched for again
     for (QToolButton* b : m_buttons)
         b->setFont(text);
+}
+
+double StageBar::pointsOfPixels(double pixels) const
+{
+    return pixels * 72.0 / (logicalDpiY() > 0 ? logicalDpiY() : 96);
+}
+
+void StageBar::setTextFloor(double pixels)
+{
+    if (std::abs(pixels - m_textFloor) < 0.5)
+        return;
+    m_textFloor = pixels;
+    applyFonts();
+    scheduleFit();
 }
 
 void StageBar::changeEvent(QEvent* event)
@@ -380,10 +399,21 @@ void StageBar::fitChallenge()
     if (m_challengeText.isEmpty())
         return;
     if (m_vertical) {
-        // A column gives the challenge the height its lines need.
-        m_challenge->setFont(m_challengeFont);
+        // A column gives the challenge the height its lines need: from the
+        // floor's size down (never below the bar's 1.3 times the window's
+        // text) until the whole column, sliders too, fits the bar's height.
         m_challenge->setText(m_challengeText);
         m_challenge->setToolTip(QString());
+        QFont f = m_challengeFont;
+        const double least = font().pointSizeF() * 1.3;
+        auto fits = [&] {
+            if (f != m_challenge->font())
+                m_challenge->setFont(f);
+            return m_grid->totalHeightForWidth(width()) <= height();
+        };
+        while (f.pointSizeF() - 0.5 >= least && !fits())
+            f.setPointSizeF(f.pointSizeF() - 0.5);
+        fits();
         return;
     }
     const QRect room = m_challenge->contentsRect();

@@ -46,6 +46,10 @@ public:
     /// The challenge at its own size again, so that sizeHint() does not
     /// depend on how the last room fitted it; it is fitted again at once.
     void unfitChallenge();
+    /// The size the challenge's text starts at, in pixels, when larger than
+    /// the bar's own (the stage sets it from the screen's height); it comes
+    /// down from there only to fit the bar.
+    void setTextFloor(double pixels);
     /// Whether a fit of the readout or the challenge waits in the event
     /// queue (the bar has not settled on its last room yet).
     bool isFitPending() const { return m_fitQueued; }
@@ -61,6 +65,7 @@ protected:
 
 private:
     void applyFonts();
+    double pointsOfPixels(double pixels) const;
     void scheduleFit();
     void fitReadout();
     void sizeReadoutColumn(const QStringList& lines);
@@ -92,6 +97,7 @@ private:
     QList<QToolButton*> m_buttons;
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;
+    double m_textFloor = 0.0; // px, setTextFloor
     bool m_fitQueued = false; // scheduleFit's call waits in the event queue
 };
 

@@ -234,6 +234,8 @@ void StageView::layoutStage()
 {
     if (!isStaged())
         return;
+    // The challenge for the back row: from 2.4% of the screen's height.
+    m_bar->setTextFloor(kTextFloorShare * height());
     const sim::BoxSettings& box = m_controller->world().settings().box;
     const double aspect = box.width > 0 && box.height > 0 ? box.width / box.height : 1.5;
     QSize area = size();

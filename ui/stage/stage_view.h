@@ -61,6 +61,9 @@ public:
     /// The bar's Balls button: shows or hides the ball table.
     QAction* ballsAction() const { return m_ballsAction; }
 
+    /// The size the challenge's text starts at, as a share of the stage's height.
+    static constexpr double kTextFloorShare = 0.024;
+
     /// The stage's clock line: the simulated time and the speed ("t = 2.00 s   ¼× speed").
     static QString clockText(double time, double timeScale);
 
