@@ -66,6 +66,7 @@ private slots:
     void centreOfMassIsTheMassWeightedMean();
     void forcesBySourceAddUpToTheNetForce();
     void arrowLengthMenuScalesTheArrows();
+    void autoArrowsKeepOneScaleThroughARun();
     void pathLayerMatchesAWholeRedraw();
     void projectorThemeDrawsOkabeItoBallsWithOutlines();
     void stageViewAlwaysUsesTheProjectorTheme();
@@ -193,6 +194,63 @@ void GuiOverlaysTest::arrowLengthMenuScalesTheArrows()
     window.canvas()->grab();
     const double m = median(window.canvas()->painter().lastFrame().forceLengths);
     QVERIFY2(std::abs(m - WorldPainter::kArrowPixels) < 1.0, qPrintable(QString::number(m)));
+}
+
+// Lesson 31 (break shot): the auto scale is fixed once per run, so the
+// fastest ball's arrow at 8 s over its arrow at 0.8 s is its speed ratio
+// (1 %); the legend says what an arrow stands for; the scale survives a
+// Reset and doubles with the teacher's ×2.
+void GuiOverlaysTest::autoArrowsKeepOneScaleThroughARun()
+{
+    MainWindow window(QStringLiteral("break-shot"));
+    window.resize(1280, 720);
+    Canvas* canvas = window.canvas();
+    SimulationController* controller = window.controller();
+    Overlays o = canvas->overlays();
+    o.velocity = true;
+    canvas->setOverlays(o);
+    QVERIFY(action(window, "autoArrows")->isChecked());
+    canvas->grab();
+    const sim::BallState& balls = controller->world().balls();
+    const auto fastest = [&] {
+        int best = 0;
+        for (int i = 1; i < balls.size(); ++i)
+            if (balls.velocity.col(i).norm() > balls.velocity.col(best).norm())
+                best = i;
+        return best;
+    };
+    while (controller->world().time() < 0.8)
+        controller->stepOnce();
+    canvas->grab();
+    const int early = fastest();
+    const double earlySpeed = balls.velocity.col(early).norm();
+    const double earlyLength = canvas->painter().lastFrame().velocityLengths.at(static_cast<std::size_t>(early));
+    QVERIFY(!canvas->painter().lastFrame().arrowLegend.isEmpty());
+    QVERIFY(canvas->painter().lastFrame().arrowLegend.first().contains(QStringLiteral("px/s")));
+    while (controller->world().time() < 8.0)
+        controller->stepOnce();
+    canvas->grab();
+    const int late = fastest();
+    const double lateSpeed = balls.velocity.col(late).norm();
+    const double lateLength = canvas->painter().lastFrame().velocityLengths.at(static_cast<std::size_t>(late));
+    qInfo("fastest %.1f px/s → %.1f px arrow at 0.8 s, %.1f px/s → %.1f px at 8 s", earlySpeed, earlyLength,
+          lateSpeed, lateLength);
+    QVERIFY(lateSpeed < 0.5 * earlySpeed);
+    const double ratio = (lateLength / earlyLength) / (lateSpeed / earlySpeed);
+    QVERIFY2(std::abs(ratio - 1.0) < 0.01, qPrintable(QString::number(ratio)));
+    const double fixed = canvas->arrowRun().velocity;
+    QVERIFY(fixed > 0.0);
+    controller->reset();
+    canvas->grab();
+    QCOMPARE(canvas->arrowRun().velocity, fixed);
+    action(window, "arrowsLonger")->trigger();
+    canvas->grab();
+    const std::vector<double> lengths = canvas->painter().lastFrame().velocityLengths;
+    const ViewTransform view = canvas->viewTransform();
+    const int first = fastest();
+    const double expected = view.toWidget(2.0 * fixed * balls.velocity.col(first).norm());
+    QVERIFY2(std::abs(lengths.at(static_cast<std::size_t>(first)) - expected) < 1e-6 * expected + 1e-9,
+             qPrintable(QString::number(lengths.at(static_cast<std::size_t>(first)) / expected)));
 }
 
 // Lesson 09 with its paths: 150 frames appended to the layer without a

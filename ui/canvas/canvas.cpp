@@ -28,6 +28,7 @@ Canvas::Canvas(SimulationController* controller, QWidget* parent)
     setFocusPolicy(Qt::ClickFocus); // a click on the canvas takes focus from a spin box, so Space plays again
     setAttribute(Qt::WA_OpaquePaintEvent); // paintEvent fills every pixel
     m_options.colors = &m_colors;
+    m_options.arrowRun = &m_arrowRun;
     connect(m_controller, &SimulationController::stepped, this, &Canvas::onStepped);
     connect(m_controller, &SimulationController::stepped, this, qOverload<>(&QWidget::update));
     connect(m_controller, &SimulationController::framePassed, this, qOverload<>(&QWidget::update));
@@ -164,6 +165,18 @@ void Canvas::setColors(const CanvasColors& colors)
 void Canvas::setArrowFactor(double factor)
 {
     m_options.arrowFactor = factor;
+    update();
+}
+
+void Canvas::scaleRunArrows(double factor)
+{
+    m_arrowRun.factor *= factor;
+    update();
+}
+
+void Canvas::fixRunArrowsFromNow()
+{
+    m_arrowRun.clear();
     update();
 }
 
@@ -569,6 +582,10 @@ void Canvas::sendPointer(const QPointF& widget, bool inside, bool pressed)
 
 void Canvas::onSceneChanged()
 {
+    if (m_controller->sceneSerial() != m_sceneSerial) { // a new lesson, not a reset: its arrows get their own scale
+        m_sceneSerial = m_controller->sceneSerial();
+        m_arrowRun.clear();
+    }
     if (m_arrow.ball >= 0) { // a new scene ends an arrow drag with no edit
         m_options.autoArrows = m_arrow.autoArrows;
         m_options.velocityScale = m_arrow.velocityScale;

@@ -72,6 +72,11 @@ public:
     void setAutoArrows(bool on);
     /// Without auto arrows: the lesson's arrow scales times `factor`.
     void setArrowFactor(double factor);
+    /// Auto arrows keep one scale through a run (and a Reset): these make it
+    /// `factor` times longer, or fix it again from the frame shown now.
+    void scaleRunArrows(double factor);
+    void fixRunArrowsFromNow();
+    const ArrowRun& arrowRun() const { return m_arrowRun; }
     /// The theme's colours and marks (ui/window/theme.h).
     void setColors(const CanvasColors& colors);
     const CanvasColors& colors() const { return m_colors; }
@@ -288,6 +293,8 @@ private:
     PaintOptions m_options;
     QList<QPointer<QMenu>> m_contextMenus; // not owned
     QStringList m_toolKeys;                // "1 Stopwatch", …
+    ArrowRun m_arrowRun;                   // the arrows' scales of this run (m_options.arrowRun)
+    int m_sceneSerial = -1;                // the controller's scene the run scales belong to
     Ruler m_ruler;
     bool m_measuring = false;
     void paintRuler(QPainter& p) const;

@@ -28,6 +28,7 @@ std::optional<QString> SimulationController::setScene(const sim::Scene& scene)
         return message;
     }
     m_scene = scene;
+    ++m_sceneSerial;
     startedScene();
     return std::nullopt;
 }

@@ -69,6 +69,8 @@ public:
     /// running one is kept and the error is returned (and signalled).
     std::optional<QString> setScene(const sim::Scene& scene);
     const sim::Scene& scene() const { return m_scene; }
+    /// Counts setScene calls: a new scene, not a reset (what is kept per run, like the arrows' scale, starts over).
+    int sceneSerial() const { return m_sceneSerial; }
 
     /// The spawn settings the world was last started with (the scene's, or a respawn's).
     const sim::SpawnSettings& spawn() const { return m_spawn; }
@@ -206,6 +208,7 @@ private:
     bool m_handMoved = false; // a held ball was moved since the last step (noteHandMoved)
     QString m_haltReason; // the last reason reported by haltedChanged
     sim::Scene m_scene;
+    int m_sceneSerial = 0;
     sim::SpawnSettings m_spawn; // of the running world
     QTimer m_timer;
     QElapsedTimer m_clock;

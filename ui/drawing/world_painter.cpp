@@ -113,21 +113,30 @@ WorldPainter::ArrowScales WorldPainter::arrowScales(const sim::World& world, con
     if (!options.autoArrows || !(view.scale() > 0.0))
         return s;
     // A scale of k seconds draws a speed v as k v world px, k v scale screen px.
-    const double v = medianLength(world.balls().velocity);
-    if (v > 0.0)
-        s.velocity = kArrowPixels / (view.scale() * v);
-    const double a = accelerations ? medianLength(*accelerations) : 0.0;
-    if (a > 0.0)
-        s.acceleration = kArrowPixels / (view.scale() * a);
+    // A scale fixed earlier in the run is kept; one fixed now is stored.
+    ArrowRun* run = options.arrowRun;
+    const double factor = run && run->factor > 0.0 ? run->factor : 1.0;
+    const auto fix = [&](double ArrowRun::*member, double median, double& out) {
+        double fixed = run ? run->*member : 0.0;
+        if (!(fixed > 0.0) && median > 0.0) {
+            fixed = kArrowPixels / (view.scale() * median);
+            if (run)
+                run->*member = fixed;
+        }
+        if (fixed > 0.0)
+            out = factor * fixed;
+    };
+    fix(&ArrowRun::velocity, medianLength(world.balls().velocity), s.velocity);
+    fix(&ArrowRun::acceleration, accelerations ? medianLength(*accelerations) : 0.0, s.acceleration);
     if (accelerations && (options.overlays.forces || options.overlays.forceSources)) {
         // The net forces m a set the scale; the per-source arrows share it.
         sim::Matrix2X forces = *accelerations;
         const sim::BallState& balls = world.balls();
         for (Eigen::Index i = 0; i < forces.cols() && i < balls.size(); ++i)
             forces.col(i) *= balls.mass[static_cast<int>(i)];
-        const double m = medianLength(forces);
-        if (m > 0.0)
-            s.force = kArrowPixels / (view.scale() * m);
+        fix(&ArrowRun::force, medianLength(forces), s.force);
+    } else if (run && run->force > 0.0) {
+        s.force = factor * run->force;
     }
     return s;
 }

@@ -72,6 +72,19 @@ struct ApexMark {
     double radius = 0.0;    ///< px
 };
 
+/// The arrows' scales kept through a run with autoArrows: each is fixed by
+/// the first frame in which that quantity is not zero everywhere (the start,
+/// or the first frame that moves) and kept after, through a Reset, so the
+/// arrows of two moments compare. The canvas owns it and clears it for a new
+/// lesson; the teacher's "from now" clears it too.
+struct ArrowRun {
+    double velocity = 0.0;     ///< s; 0: not fixed yet
+    double acceleration = 0.0; ///< s²; 0: not fixed yet
+    double force = 0.0;        ///< s² per unit of mass; 0: not fixed yet
+    double factor = 1.0;       ///< the teacher's ×2 / ÷2 on top of the fixed scales
+    void clear() { *this = ArrowRun(); }
+};
+
 struct PaintOptions {
     Overlays overlays;
     int selected = -1;              ///< the selected ball, -1 for none (the readout then shows ball 0)
@@ -81,7 +94,8 @@ struct PaintOptions {
     double margin = 10.0;           ///< px, free space around the box (the stage view uses less)
     Camera camera;                  ///< zoom and centre of the view; the default shows the whole box
     bool sprites = true;            ///< false: one antialiased drawEllipse per ball (the render benchmark's baseline)
-    bool autoArrows = false;        ///< scale the arrows so the median one is kArrowPixels long on screen
+    bool autoArrows = false;        ///< scale the arrows so the median one is kArrowPixels long on screen (once per run, with arrowRun)
+    ArrowRun* arrowRun = nullptr;   ///< with autoArrows: the scales kept through the run (filled as they are fixed); null: every frame its own; not owned
     double arrowFactor = 1.0;       ///< without autoArrows: the fixed scales are multiplied by this
     double forceScale = 0.05;       ///< s² per unit of mass: a force arrow is F × this
     bool incrementalPaths = true;   ///< false: every path is redrawn whole each frame (the reference for tests)
@@ -134,6 +148,8 @@ struct CanvasColors {
 /// whether the path layer was drawn afresh.
 struct PaintedFrame {
     std::vector<double> forceLengths; ///< widget px, one per net force arrow drawn
+    std::vector<double> velocityLengths; ///< widget px, one per ball whose velocity arrow is drawn (0: too short to draw)
+    QStringList arrowLegend;          ///< the arrow legend's lines as drawn (empty: none)
     double forceScale = 0.0;          ///< s² per unit of mass, the scale the force arrows used
     std::vector<sim::Vec2> momenta;   ///< mass·px/s, each ball's momentum (the inset's arrows)
     sim::Vec2 momentumSum{0, 0};      ///< mass·px/s, their sum
@@ -184,8 +200,13 @@ public:
         double acceleration = 0.05;
         double force = 0.05;
     };
+    /// With options.arrowRun, a scale fixed earlier in the run is kept and one
+    /// fixed now is stored there.
     static ArrowScales arrowScales(const sim::World& world, const ViewTransform& view, const PaintOptions& options,
                                    const sim::Matrix2X* accelerations);
+    /// The arrow legend's sample arrow is the round quantity (1, 2, 5 × 10^k)
+    /// whose arrow is at least this many widget px long.
+    static constexpr double kArrowLegendPixels = 40.0;
 
     /// In a zoomed or moved view the grid's labelled lines are the smallest
     /// round spacing (1, 2 or 5 × 10^k world px) at least this many widget px

@@ -54,6 +54,17 @@ OverlayActions::OverlayActions(Canvas* canvas, QWidget* parent)
         });
     }
     m_canvas->setAutoArrows(true);
+    // Auto arrows keep one scale through a run, so slowing down shows; the
+    // teacher can make them longer or shorter, or fix the scale again now.
+    const auto runAction = [this, length](const char* name, const QString& text, auto slot) {
+        QAction* a = length->addAction(text);
+        a->setObjectName(QString::fromLatin1(name));
+        connect(a, &QAction::triggered, m_canvas, slot);
+    };
+    length->addSeparator();
+    runAction("arrowsLonger", tr("Arrow scale ×&2"), [this] { m_canvas->scaleRunArrows(2.0); });
+    runAction("arrowsShorter", tr("Arrow scale ÷2"), [this] { m_canvas->scaleRunArrows(0.5); });
+    runAction("arrowsFromNow", tr("Arrow scale &from now"), [this] { m_canvas->fixRunArrowsFromNow(); });
     // The actions show what is drawn, whoever changed it (a lesson, a panel).
     connect(m_canvas, &Canvas::overlaysChanged, this, &OverlayActions::sync);
 }

@@ -1,13 +1,23 @@
 // The arrows overlay: velocity [velocity], acceleration [acceleration], net
 // force F = m a [forces] and one force per model that acts [sources], from each
 // ball's centre. They share one set of scales (WorldPainter::arrowScales) and
-// stay on the stage, out of the panels.
+// stay on the stage, out of the panels. With autoArrows the scales are kept
+// through a run (PaintOptions::arrowRun), and a legend in the stage's
+// bottom-right corner says what a sample arrow stands for.
 
 #include "overlay_table.h"
 
 #include "arrow.h"
+#include "panel.h"
 
+#include "ui/drawing/round_steps.h"
+
+#include "sim/world/number_text.h"
+
+#include <QFontMetricsF>
 #include <QList>
+
+#include <cmath>
 
 namespace forcelab {
 
@@ -40,6 +50,71 @@ void paintSourceArrows(const PaintContext& c, const QList<int>& which, double fo
     }
 }
 
+// One row of the legend: a sample arrow of a round quantity, its colour, its words.
+struct LegendRow {
+    QString name;
+    QString unit;
+    double scale = 0.0; // world px per unit of the quantity
+    QRgb color = 0;
+};
+
+// The legend: for each kind of arrow drawn, a sample arrow of a round
+// quantity (1, 2, 5 × 10^k, at least kArrowLegendPixels long) and its value,
+// on a card in the stage's bottom-right corner.
+void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
+{
+    const ViewTransform& view = c.view;
+    if (rows.isEmpty() || !(view.scale() > 0.0))
+        return;
+    QPainter& p = c.painter;
+    const double k = c.options.lineScale;
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(13 * k)));
+    font.setBold(true);
+    const QFontMetricsF fm(font);
+    struct Drawn {
+        double pixels;
+        QString label;
+        QRgb color;
+    };
+    QList<Drawn> drawn;
+    double widestArrow = 0.0, widestLabel = 0.0;
+    for (const LegendRow& row : rows) {
+        const double perUnit = view.toWidget(row.scale); // widget px per unit of the quantity
+        if (!(perUnit > 0.0) || !std::isfinite(perUnit))
+            continue;
+        const double value = roundStep(WorldPainter::kArrowLegendPixels / perUnit);
+        const double pixels = value * perUnit;
+        const QString label = QStringLiteral("%1 %2 (%3)")
+                                  .arg(QString::fromStdString(sim::numberText(value)), row.unit, row.name);
+        drawn.append({pixels, label, row.color});
+        c.frame.arrowLegend.append(QStringLiteral("%1: arrow %2 px = %3 %4")
+                                       .arg(row.name, QString::number(pixels, 'f', 1),
+                                            QString::fromStdString(sim::numberText(value)), row.unit));
+        widestArrow = std::max(widestArrow, pixels);
+        widestLabel = std::max(widestLabel, fm.horizontalAdvance(label));
+    }
+    if (drawn.isEmpty())
+        return;
+    const double pad = 8.0 * k, gap = 10.0 * k, rowHeight = fm.height() + 4.0 * k;
+    const double width = widestArrow + gap + widestLabel + 2 * pad;
+    const double height = drawn.size() * rowHeight + 2 * pad;
+    const QRectF area = view.area();
+    const QRectF card(area.right() - 8.0 * k - width, area.bottom() - 8.0 * k - height, width, height);
+    drawPanelCard(p, card);
+    p.setFont(font);
+    for (qsizetype i = 0; i < drawn.size(); ++i) {
+        const double y = card.top() + pad + (static_cast<double>(i) + 0.5) * rowHeight;
+        const QPointF tail(card.left() + pad, y);
+        QList<QLineF> lines;
+        appendArrow(lines, tail, tail + QPointF(drawn[i].pixels, 0.0), 9.0 * k);
+        p.setPen(QPen(QColor::fromRgb(drawn[i].color), 2.0 * k, Qt::SolidLine, Qt::RoundCap));
+        p.drawLines(lines);
+        p.setPen(QColor(0x1d, 0x22, 0x2c));
+        p.drawText(QPointF(card.left() + pad + widestArrow + gap, y - fm.height() / 2 + fm.ascent()), drawn[i].label);
+    }
+}
+
 void paintArrows(const PaintContext& c)
 {
     QPainter& p = c.painter;
@@ -66,7 +141,9 @@ void paintArrows(const PaintContext& c)
         QList<QLineF> lines;
         for (int i : which) {
             const sim::Vec2 x = at.col(i);
-            appendArrow(lines, view.toWidget(x), view.toWidget(x + scales.velocity * balls.velocity.col(i)), head);
+            const QPointF tail = view.toWidget(x), tip = view.toWidget(x + scales.velocity * balls.velocity.col(i));
+            appendArrow(lines, tail, tip, head);
+            c.frame.velocityLengths.push_back(QLineF(tail, tip).length());
         }
         p.setPen(QPen(QColor::fromRgb(canvas_colors::kVelocity), 2.0 * options.lineScale, Qt::SolidLine, Qt::RoundCap));
         p.drawLines(lines);
@@ -101,6 +178,17 @@ void paintArrows(const PaintContext& c)
     if (options.overlays.forceSources)
         paintSourceArrows(c, which, scales.force, head);
     p.restore();
+    {
+        QList<LegendRow> rows;
+        if (options.overlays.velocity)
+            rows.append({QStringLiteral("velocity"), QStringLiteral("px/s"), scales.velocity, canvas_colors::kVelocity});
+        if (options.overlays.acceleration && accelerations)
+            rows.append({QStringLiteral("acceleration"), QStringLiteral("px/s²"), scales.acceleration,
+                         canvas_colors::kAcceleration});
+        if ((options.overlays.forces || options.overlays.forceSources) && accelerations)
+            rows.append({QStringLiteral("force"), QStringLiteral("mass·px/s²"), scales.force, canvas_colors::kForce});
+        paintLegend(c, rows);
+    }
 }
 
 } // namespace
