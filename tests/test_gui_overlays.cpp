@@ -457,6 +457,12 @@ void GuiOverlaysTest::predictionIsMeasuredByItsClaim()
     const QString shown = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();
     QVERIFY2(shown.contains(QStringLiteral("You said <b>200 px</b>")), qPrintable(shown));
     QVERIFY2(shown.contains(QString::number(want.measured, 'g', 5)), qPrintable(shown));
+    // In a student's words: the lesson's sentence, not the measurement
+    // table's rule ("the ball's height … at its n-th highest point").
+    QVERIFY2(shown.contains(QString::fromStdString(lesson.lesson->claims[0].text).toHtmlEscaped()), qPrintable(shown));
+    QVERIFY2(!shown.contains(QStringLiteral("n-th")) && !shown.contains(QLatin1Char('`')) &&
+                 !shown.contains(QStringLiteral("claim")),
+             qPrintable(shown));
     // A reset asks again.
     window.controller()->reset();
     QVERIFY(!dock->predicted() && number->isEnabled());
@@ -564,7 +570,7 @@ void GuiOverlaysTest::stopwatchTimesBounceToBounce()
 }
 
 // Shift + drag: the ruler's length is the world distance between the two
-// points, and measuring leaves every ball as it was.
+// points, measuring leaves every ball as it was, and Reset clears it.
 void GuiOverlaysTest::rulerMeasuresInWorldPixels()
 {
     MainWindow window(QStringLiteral("gravity"));
@@ -588,6 +594,13 @@ void GuiOverlaysTest::rulerMeasuresInWorldPixels()
     QVERIFY(std::abs(r.angle() - 33.69) < 1.0);
     QVERIFY(window.controller()->world().balls().position == before);
     QTest::mouseClick(canvas, Qt::LeftButton, Qt::NoModifier, canvas->worldToWidget(sim::Vec2(580, 20)).toPoint());
+    QVERIFY(!canvas->ruler().shown);
+    // Reset takes the ruler away with the scene it measured.
+    QTest::mousePress(canvas, Qt::LeftButton, Qt::ShiftModifier, a);
+    QCoreApplication::sendEvent(canvas, &move);
+    QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ShiftModifier, b);
+    QVERIFY(canvas->ruler().shown);
+    window.controller()->reset();
     QVERIFY(!canvas->ruler().shown);
 }
 

@@ -594,6 +594,8 @@ void Canvas::onSceneChanged()
     }
     m_drag = Drag();
     m_press = Press();
+    m_ruler = Ruler(); // it measured the scene that went (a reset or a new lesson)
+    m_measuring = false;
     m_previousTime = -1.0; // the recorder starts over too
     if (m_options.selected >= m_controller->world().balls().size())
         setSelectedBall(-1);

@@ -299,12 +299,14 @@ void PredictDock::reveal()
     m_show->setEnabled(false);
     const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
     const sim::Claim& claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
-    const sim::ClaimMeasure* m = sim::findClaimMeasure(claim.measure);
     const QString unit = unitOf(claim);
-    const QString rule = m ? qs(m->doc) : QString();
+    // The student reads the lesson's own sentence the answer checks, not
+    // the measurement table's rule (written for lesson authors).
+    const QString sentence = QString::fromStdString(claim.text).toHtmlEscaped();
     const double measured = *m_measured;
     if (!std::isfinite(measured)) {
-        m_result->setText(tr("It could not be measured in this run (%1). Did a setting change it?").arg(rule.toHtmlEscaped()));
+        m_result->setText(tr("It could not be measured in this run (the lesson's sentence “%1”). Did a setting change it?")
+                              .arg(sentence));
         return;
     }
     QString text;
@@ -326,7 +328,7 @@ void PredictDock::reveal()
         text = tr("You said <b>%1 %2</b>. Measured: <b>%3 %2</b>. You were %4 %2 off%5.")
                    .arg(number(*m_predicted), unit, number(measured), number(std::abs(off)), share);
     }
-    m_result->setText(text + tr("<br><small>Measured by the lesson's claim: %1.</small>").arg(rule.toHtmlEscaped()));
+    m_result->setText(text + tr("<br><small>The run measured what the lesson says: “%1”.</small>").arg(sentence));
 }
 
 void PredictDock::nextQuestion()
