@@ -346,6 +346,17 @@ void GuiCanvasTest::lineOfImpactPassesThroughBothCentres()
     QVERIFY(std::abs((view.afterA - view.beforeA).dot(t)) < 1e-9);
     QVERIFY(std::abs(view.beforeA.squaredNorm() - view.afterA.squaredNorm() - view.afterB.squaredNorm()) < 1e-6);
     QVERIFY(view.afterB.dot(n) > 0.0);
+    // Ball 1, selected only after the hit, shows the same collision from its side.
+    canvas.setSelectedBall(1);
+    const CollisionView other = canvas.collisionView();
+    QVERIFY(other.valid());
+    QCOMPARE(other.a, 1);
+    QCOMPARE(other.b, 0);
+    QCOMPARE(other.time, view.time);
+    QCOMPARE(other.beforeA, view.beforeB);
+    QCOMPARE(other.afterB, view.afterA);
+    canvas.setSelectedBall(0);
+    QCOMPARE(canvas.collisionView().time, view.time);
 
     // The drawn line of impact runs through both centres and on beyond them.
     const QImage image = canvas.grab().toImage();

@@ -38,7 +38,7 @@ void HistoryRecorder::setSelectedBall(int index)
         return;
     m_selected = index;
     m_trails.setSelected(index);
-    resetCollision();
+    showSelectedCollision(); // its latest, also from before it was selected
     emit changed();
 }
 
@@ -118,52 +118,64 @@ void HistoryRecorder::recordApexes()
 void HistoryRecorder::resetCollision()
 {
     m_collision = CollisionView();
+    m_latest.clear();
+    m_previousContacts.clear();
     m_previousVelocity.resize(0, 0);
     m_previousTime = -1.0;
-    m_previousPartner = -1;
 }
 
+// Every ball's latest collision is kept, so a ball selected after its hit
+// shows it; the shown one is the selected ball's (ball 0 when none is
+// selected, as the readout does: a lesson on one collision shows it
+// without a click).
 void HistoryRecorder::trackCollision()
 {
     const sim::World& world = m_controller->world();
     const sim::BallState& balls = world.balls();
-    // Nothing selected: ball 0, as the readout does (a lesson on one
-    // collision shows it without a click).
-    const int i = m_selected >= 0 ? m_selected : 0;
-    if (i >= balls.size()) {
-        m_previousVelocity.resize(0, 0);
-        return;
-    }
+    const int n = balls.size();
     if (world.time() == m_previousTime) { // no step (an edit while paused): only the state moved
         m_previousVelocity = balls.velocity;
         return;
     }
-    // The selected ball's partner in this step's contacts (sorted by (a, b)).
-    int partner = -1;
-    for (const sim::Contact& c : world.contacts()) {
-        if (c.a == i || c.b == i) {
-            partner = c.a == i ? c.b : c.a;
-            break;
-        }
+    if (m_latest.size() != static_cast<std::size_t>(n)) { // balls added or deleted: their numbers changed
+        m_latest.assign(static_cast<std::size_t>(n), CollisionView());
+        m_previousContacts.clear();
     }
+    std::vector<std::pair<int, int>> now;
+    now.reserve(world.contacts().size());
+    for (const sim::Contact& c : world.contacts())
+        now.emplace_back(std::min(c.a, c.b), std::max(c.a, c.b));
+    std::sort(now.begin(), now.end());
     // A new contact, not one that lasts from the frame before (resting balls).
-    if (partner >= 0 && partner != m_previousPartner && m_previousVelocity.cols() == balls.size()) {
-        CollisionView v;
-        v.a = i;
-        v.b = partner;
-        v.positionA = balls.position.col(i);
-        v.positionB = balls.position.col(partner);
-        v.radiusA = balls.radius[i];
-        v.radiusB = balls.radius[partner];
-        v.beforeA = m_previousVelocity.col(i);
-        v.beforeB = m_previousVelocity.col(partner);
-        v.afterA = balls.velocity.col(i);
-        v.afterB = balls.velocity.col(partner);
-        v.time = world.time();
-        m_collision = v;
-    }
-    m_previousPartner = partner;
+    if (m_previousVelocity.cols() == n)
+        for (const auto& [a, b] : now) {
+            if (std::binary_search(m_previousContacts.begin(), m_previousContacts.end(), std::pair{a, b}))
+                continue;
+            for (const auto& [i, partner] : {std::pair{a, b}, std::pair{b, a}}) {
+                CollisionView v;
+                v.a = i;
+                v.b = partner;
+                v.positionA = balls.position.col(i);
+                v.positionB = balls.position.col(partner);
+                v.radiusA = balls.radius[i];
+                v.radiusB = balls.radius[partner];
+                v.beforeA = m_previousVelocity.col(i);
+                v.beforeB = m_previousVelocity.col(partner);
+                v.afterA = balls.velocity.col(i);
+                v.afterB = balls.velocity.col(partner);
+                v.time = world.time();
+                m_latest[static_cast<std::size_t>(i)] = v;
+            }
+        }
+    m_previousContacts = std::move(now);
     m_previousVelocity = balls.velocity;
+    showSelectedCollision();
+}
+
+void HistoryRecorder::showSelectedCollision()
+{
+    const int i = m_selected >= 0 ? m_selected : 0;
+    m_collision = i < static_cast<int>(m_latest.size()) ? m_latest[static_cast<std::size_t>(i)] : CollisionView();
 }
 
 } // namespace forcelab

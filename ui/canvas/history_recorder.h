@@ -13,6 +13,7 @@
 
 #include <QObject>
 
+#include <utility>
 #include <vector>
 
 namespace forcelab {
@@ -69,6 +70,7 @@ private:
     void recordApexes();
     void trackCollision();
     void resetCollision();
+    void showSelectedCollision();
 
     SimulationController* m_controller; // not owned
     Overlays m_recorded;
@@ -81,7 +83,8 @@ private:
     CollisionView m_collision;
     sim::Matrix2X m_previousVelocity; // end of the previous frame (impact only)
     double m_previousTime = -1.0;
-    int m_previousPartner = -1;
+    std::vector<CollisionView> m_latest;                // each ball's latest collision (a is that ball)
+    std::vector<std::pair<int, int>> m_previousContacts; // the frame before's contacts, sorted (a < b)
 };
 
 } // namespace forcelab
