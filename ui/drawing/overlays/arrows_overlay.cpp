@@ -99,8 +99,28 @@ void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
     const double pad = 8.0 * k, gap = 10.0 * k, rowHeight = fm.height() + 4.0 * k;
     const double width = widestArrow + gap + widestLabel + 2 * pad;
     const double height = drawn.size() * rowHeight + 2 * pad;
-    const QRectF area = view.area();
-    const QRectF card(area.right() - 8.0 * k - width, area.bottom() - 8.0 * k - height, width, height);
+    // The first corner of the painted area where the card covers neither
+    // the box nor a panel (a letterbox strip, the space under an inset);
+    // the bottom-right corner, over the box, when none is free.
+    const QRectF area = c.area; // the whole painted area, the panels' strip too
+    const double margin = 8.0 * k;
+    const QRectF box = view.boxRect().intersected(area);
+    const QRectF corners[] = {
+        {area.right() - margin - width, area.bottom() - margin - height, width, height},
+        {area.left() + margin, area.bottom() - margin - height, width, height},
+        {area.right() - margin - width, area.top() + margin, width, height},
+        {area.left() + margin, area.top() + margin, width, height},
+    };
+    QRectF card = corners[0];
+    for (const QRectF& corner : corners) {
+        bool free = !corner.intersects(box);
+        for (const QRectF& panel : {c.panels.readout, c.panels.totals, c.panels.sources, c.panels.momenta})
+            free = free && !(panel.isValid() && corner.intersects(panel));
+        if (free) {
+            card = corner;
+            break;
+        }
+    }
     drawPanelCard(p, card);
     p.setFont(font);
     for (qsizetype i = 0; i < drawn.size(); ++i) {
