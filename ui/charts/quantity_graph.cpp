@@ -68,52 +68,65 @@ long long bounces(const sim::World& world)
 
 } // namespace
 
+namespace {
+
+// What the graph can show of one ball or of all of them: a position, a
+// velocity, the energies and a momentum.
+struct State {
+    sim::Vec2 x{0, 0}, v{0, 0}, p{0, 0}; // px, px/s, mass·px/s
+    double kinetic = 0.0, potential = 0.0; // mass·px²/s²
+};
+
+double pick(const State& s, QuantityGraph::Quantity q)
+{
+    using Quantity = QuantityGraph::Quantity;
+    switch (q) {
+    case Quantity::X: return s.x.x();
+    case Quantity::Y: return s.x.y();
+    case Quantity::Vx: return s.v.x();
+    case Quantity::Vy: return s.v.y();
+    case Quantity::Speed: return s.v.norm();
+    case Quantity::Kinetic: return s.kinetic;
+    case Quantity::Potential: return s.potential;
+    case Quantity::Total: return s.kinetic + s.potential;
+    case Quantity::MomentumX: return s.p.x();
+    case Quantity::MomentumY: return s.p.y();
+    }
+    return 0.0;
+}
+
+} // namespace
+
 double QuantityGraph::valueOf(const sim::World& world, Quantity q, int ball)
 {
     const sim::BallState& b = world.balls();
+    State s;
     if (ball == kAllBalls) {
         // The potential energy can cost a sum over all pairs: only when asked.
         const bool energy = q == Quantity::Kinetic || q == Quantity::Potential || q == Quantity::Total;
         const sim::Energy e = energy ? world.energy() : sim::Energy{};
-        const sim::Vec2 p = world.momentum();
-        const int n = b.size();
+        s.p = world.momentum();
         // The totals' position and velocity are those of the centre of mass.
         const double m = b.mass.sum();
-        const sim::Vec2 x = n > 0 && m > 0.0 ? sim::Vec2((b.position * b.mass) / m) : sim::Vec2::Zero();
-        const sim::Vec2 v = n > 0 && m > 0.0 ? sim::Vec2(p / m) : sim::Vec2::Zero();
-        switch (q) {
-        case Quantity::X: return x.x();
-        case Quantity::Y: return x.y();
-        case Quantity::Vx: return v.x();
-        case Quantity::Vy: return v.y();
-        case Quantity::Speed: return v.norm();
-        case Quantity::Kinetic: return e.kinetic;
-        case Quantity::Potential: return e.potential;
-        case Quantity::Total: return e.total();
-        case Quantity::MomentumX: return p.x();
-        case Quantity::MomentumY: return p.y();
+        if (b.size() > 0 && m > 0.0) {
+            s.x = (b.position * b.mass) / m;
+            s.v = s.p / m;
         }
-        return 0.0;
+        s.kinetic = e.kinetic;
+        s.potential = e.potential;
+        return pick(s, q);
     }
     if (ball < 0 || ball >= b.size())
         return std::numeric_limits<double>::quiet_NaN();
-    const sim::Vec2 x = b.position.col(ball), v = b.velocity.col(ball);
+    s.x = b.position.col(ball);
+    s.v = b.velocity.col(ball);
     const double m = b.mass[ball];
+    s.p = m * s.v;
+    // A ball's potential energy is gravity's alone (m g h).
     const sim::Vec2 g = world.settings().gravity.enabled ? world.settings().gravity.g : sim::Vec2::Zero();
-    const double kinetic = 0.5 * m * v.squaredNorm(), potential = -m * g.dot(x);
-    switch (q) {
-    case Quantity::X: return x.x();
-    case Quantity::Y: return x.y();
-    case Quantity::Vx: return v.x();
-    case Quantity::Vy: return v.y();
-    case Quantity::Speed: return v.norm();
-    case Quantity::Kinetic: return kinetic;
-    case Quantity::Potential: return potential;
-    case Quantity::Total: return kinetic + potential;
-    case Quantity::MomentumX: return m * v.x();
-    case Quantity::MomentumY: return m * v.y();
-    }
-    return 0.0;
+    s.kinetic = 0.5 * m * s.v.squaredNorm();
+    s.potential = -m * g.dot(s.x);
+    return pick(s, q);
 }
 
 QuantityGraph::QuantityGraph(SimulationController* controller, QWidget* parent)

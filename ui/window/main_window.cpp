@@ -570,20 +570,14 @@ void MainWindow::setLessonTools(const QStringList& tools)
 
 QDockWidget* MainWindow::toolDock(const QString& name) const
 {
-    if (name == QLatin1String("stopwatch"))
-        return m_stopwatchDock;
-    if (name == QLatin1String("predict"))
-        return m_predictDock;
-    if (name == QLatin1String("inspector"))
-        return m_inspectorDock;
-    if (name == QLatin1String("plots"))
-        return m_plotsDock;
-    if (name == QLatin1String("code"))
-        return m_codeDock;
-    if (name == QLatin1String("force_editor"))
-        return m_forceEditorDock;
-    if (name == QLatin1String("accuracy"))
-        return m_accuracyDock;
+    // lessons::lessonTools()'s names and the panels they open.
+    const std::pair<const char*, QDockWidget*> docks[] = {
+        {"stopwatch", m_stopwatchDock}, {"predict", m_predictDock}, {"inspector", m_inspectorDock},
+        {"plots", m_plotsDock},         {"code", m_codeDock},       {"force_editor", m_forceEditorDock},
+        {"accuracy", m_accuracyDock}};
+    for (const auto& [key, dock] : docks)
+        if (name == QLatin1String(key))
+            return dock;
     return nullptr;
 }
 
