@@ -110,7 +110,8 @@ EnergyBars::EnergyBars(SimulationController* controller, QWidget* parent)
 
 EnergyBars::~EnergyBars()
 {
-    m_controller->holdAccounting(this, false);
+    if (m_controller) // gone first when the window closes
+        m_controller->holdAccounting(this, false);
 }
 
 QBarSet* EnergyBars::barSet(Bar bar) const
@@ -128,7 +129,8 @@ void EnergyBars::showEvent(QShowEvent* event)
 void EnergyBars::hideEvent(QHideEvent* event)
 {
     QChartView::hideEvent(event);
-    m_controller->holdAccounting(this, false);
+    if (m_controller)
+        m_controller->holdAccounting(this, false);
 }
 
 void EnergyBars::scheduleRefresh()

@@ -11,6 +11,7 @@
 // books on (SimulationController::holdAccounting) while it is shown.
 
 #include <QChartView>
+#include <QPointer>
 #include <QTimer>
 
 class QBarSet;
@@ -71,7 +72,9 @@ protected:
 private:
     void scheduleRefresh();
 
-    SimulationController* m_controller; // not owned
+    // Not owned; a QPointer because the window deletes its controller,
+    // made first, before the docks that hold this chart.
+    QPointer<SimulationController> m_controller;
     QTimer m_redraw;
     Account m_shown;
     double m_factor = 1.0;
