@@ -93,7 +93,10 @@ EnergyBars::EnergyBars(SimulationController* controller, QWidget* parent)
     chart->addAxis(m_valueAxis, Qt::AlignLeft);
     series->attachAxis(m_categoryAxis);
     series->attachAxis(m_valueAxis);
+    // setChart releases the chart QChartView made for itself without deleting it.
+    QChart* made = this->chart();
     setChart(chart);
+    delete made;
     setMinimumSize(240, 180);
     setToolTip(tr("Lost: energy taken out by drag, bumpy collisions and walls since the bars were shown or the "
                   "lesson restarted. Energy put in (wind, your hand, an edit) counts as negative lost energy, "

@@ -130,7 +130,10 @@ SpeedHistogram::SpeedHistogram(SimulationController* controller, QWidget* parent
         s->attachAxis(m_speedAxis);
         s->attachAxis(m_countAxis);
     }
+    // setChart releases the chart QChartView made for itself without deleting it.
+    QChart* made = this->chart();
     setChart(chart);
+    delete made;
     setMinimumSize(260, 180);
 
     m_redraw.setSingleShot(true);
