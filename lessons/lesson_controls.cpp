@@ -2,7 +2,11 @@
 
 #include "sim/world/parameters.h"
 
+#include <QList>
+#include <QRegularExpression>
 #include <QSet>
+
+#include <algorithm>
 
 namespace forcelab::lessons {
 
@@ -38,7 +42,7 @@ const QHash<QString, QStringList>& controlRows()
         {QStringLiteral("per_frame"), {"per_frame"}},
         {QStringLiteral("close_passes"), {"close_passes"}},
         {QStringLiteral("seed"), {"seed"}},
-        {QStringLiteral("spawn"), {"ball_count"}},
+        {QStringLiteral("spawn"), {"ball_count", "spawn_min_speed", "spawn_max_speed"}},
         {QStringLiteral("fully_inside"), {"fully_inside"}},
         {QStringLiteral("point_clamp"), {"point_clamp"}},
         {QStringLiteral("response"), {"response"}},
@@ -72,6 +76,78 @@ const QStringList& controlNames()
         return out;
     }();
     return names;
+}
+
+namespace {
+
+struct PhraseRule {
+    QRegularExpression pattern;
+    QStringList anyOf; ///< empty: the first capture is itself the control's name
+};
+
+QRegularExpression words(const char* pattern, bool caseSensitive = false)
+{
+    return QRegularExpression(QString::fromUtf8(pattern),
+                              caseSensitive ? QRegularExpression::NoPatternOption
+                                            : QRegularExpression::CaseInsensitiveOption);
+}
+
+// The wordings with which a challenge asks for a change. Each rule needs a
+// verb of change or an on/off, so "watch the ball reach the right wall" and
+// "gravity pulls" are not requests; names of the Parameters panel's own rows
+// written as code (per_frame) are requests wherever they stand.
+const QList<PhraseRule>& phraseRules()
+{
+    static const QList<PhraseRule> rules{
+        {words(R"(\b(?:turn|switch)(?: on| off)? (?:the )?(?:(?:top|bottom|left|right)(?: and (?:top|bottom|left|right))? )?walls?\b)"),
+         {"walls"}},
+        {words(R"(\bwall model\b)"), {"wall_model", "walls"}},
+        {words(R"(\b(?:switch|change) to (?:clamp|mirror|reverse)\b)"), {"wall_model", "walls"}},
+        {words(R"(\b(?:set|change|raise|lower|drag) the wall restitution\b)"), {"restitution", "walls"}},
+        {words(R"(\b(?:set|change|raise|lower|drag) the (?:collision|ball) restitution\b)"),
+         {"restitution", "collisions"}},
+        {words(R"(\b(?:set|change|raise|lower|drag) the restitution\b)"), {"restitution", "collisions", "walls"}},
+        {words(R"(\b(?:set|add|change|turn|switch) (?:the )?gravity\b)"), {"gravity"}},
+        {words(R"(\b(?:switch|change|set) the integrator\b)"), {"integrator"}},
+        {words(R"(\b(?:switch|change) to (?:euler|rk4|verlet|semi-implicit-euler)\b)"), {"integrator"}},
+        {words(R"(\b(?:halve|double|set|change|lower|raise|try)(?: and double)? (?:the )?dt\b)"), {"dt"}},
+        {words(R"(\b(?:raise|set|use|lower) (?:the )?(?:\d+ )?sub-?steps\b)"), {"substeps"}},
+        {words(R"(\b(?:switch|turn) (?:the )?drag (?:off|on)\b|\braise the drag\b|\bwith the drag (?:on|off)\b)"),
+         {"drag"}},
+        {words(R"(\b(?:switch|turn|set) the speed limit\b)"), {"speed_limit"}},
+        {words(R"(\b(?:set|change) the softening\b)"), {"mutual_gravity"}},
+        {words(R"(\b(?:Double|Halve|Make|Set|double|halve|make|set) G\b)", true), {"mutual_gravity"}},
+        {words(R"(\b(?:switch|set|change) (?:the )?response\b|\bresponse none\b)"), {"response", "collisions"}},
+        {words(R"(\b(?:switch|change) to (?:1d-elastic|1d-reverse|2d-axis|2d-impulse)\b)"), {"response", "collisions"}},
+        {words(R"(\b(?:switch|set|change) (?:the )?detection\b)"), {"detection", "collisions"}},
+        {words(R"(\bwith(?:out)? continuous detection\b)"), {"collisions"}},
+        {words(R"(\b(?:switch )?resting contacts (?:off|on|back on)\b)"), {"resting", "collisions"}},
+        {words(R"(\b(?:double|halve|change|set) the (?:ball count|number of balls|spawn speeds?(?: range)?)\b)"),
+         {"spawn"}},
+        {words(R"(\bmax_accel to\b|\bwith(?:out)? the clamp\b)"), {"point_clamp", "point"}},
+        {words(R"(\b(centre_only|fully_inside|per_frame)\b)"), {}},
+        {words(R"(\bsmoothed_step\b|\bmake the wind\b)"), {"wind", "wind_compare"}},
+    };
+    return rules;
+}
+
+} // namespace
+
+QList<ControlPhrase> undeclaredControlsIn(const QString& plainText, const QStringList& declared)
+{
+    QList<ControlPhrase> missing;
+    for (const PhraseRule& rule : phraseRules()) {
+        auto it = rule.pattern.globalMatch(plainText);
+        while (it.hasNext()) {
+            const QRegularExpressionMatch m = it.next();
+            const QStringList anyOf = rule.anyOf.isEmpty() ? QStringList{m.captured(1)} : rule.anyOf;
+            const bool offered = std::any_of(anyOf.begin(), anyOf.end(),
+                                             [&](const QString& name) { return declared.contains(name); });
+            if (!offered)
+                missing << ControlPhrase{m.captured(0), anyOf};
+        }
+    }
+    return missing;
 }
 
 } // namespace forcelab::lessons

@@ -108,6 +108,24 @@ void checkToolsNamed(Reader& r, const Lesson& lesson)
         check(join(QStringLiteral("teacher.answers"), i), lesson.teacher.answers[i]);
 }
 
+/// A challenge that asks for a change ("Turn the bottom wall off") names a
+/// control the lesson lists, so the stage's sliders offer it.
+void checkControlsNamed(Reader& r, const Lesson& lesson)
+{
+    for (qsizetype i = 0; i < lesson.challenges.size(); ++i) {
+        const QString plain = markupToPlainText(lesson.challenges[i]);
+        for (const ControlPhrase& phrase : undeclaredControlsIn(plain, lesson.controls)) {
+            QStringList names;
+            for (const QString& name : phrase.anyOf)
+                names << quoted(name);
+            r.fail(join(QStringLiteral("challenges"), i),
+                   QStringLiteral("%1 asks for a control the lesson does not list; list %2 in \"controls\" so the "
+                                  "stage offers it")
+                       .arg(quoted(phrase.words), names.join(QStringLiteral(" or "))));
+        }
+    }
+}
+
 } // namespace
 
 const QStringList& overlayNames()
@@ -176,6 +194,7 @@ ParseResult parseLesson(const QJsonObject& root)
         parsePredict(r, *a, static_cast<int>(lesson.claims.size()), lesson.predict);
     checkProse(r, lesson);
     checkToolsNamed(r, lesson);
+    checkControlsNamed(r, lesson);
     checkClaimWork(r, lesson);
     return result;
 }

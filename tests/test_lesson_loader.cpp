@@ -194,6 +194,7 @@ private slots:
     void absentModelsAreOff();
     void presentModelWithEnabledFalseIsOff();
     void toolsAreListedAndNamedOnlyWhenListed();
+    void challengesAskOnlyForListedControls();
     void badInput_data();
     void badInput();
     void lessonTextIsASafeSubset_data();
@@ -705,6 +706,32 @@ void TestLessonLoader::presentModelWithEnabledFalseIsOff()
 // challenge or answer that names a panel the lesson does not list is
 // refused, naming the field and the tool, so the stage view can offer all
 // a lesson asks for. Predict questions offer the Predict panel by themselves.
+// A challenge that asks for a change names a control its lesson lists, so
+// the stage's sliders offer it; a sentence that only mentions the thing is
+// no request.
+void TestLessonLoader::challengesAskOnlyForListedControls()
+{
+    const QByteArray challenge = R"("challenges": ["Turn the bottom wall off and watch. Then set the collision restitution to 0.5."])";
+    const LoadResult missing = loadText(minimal(challenge));
+    QVERIFY(!missing.ok());
+    const QString all = missing.errors().join('\n');
+    QVERIFY2(all.contains(QStringLiteral("challenges.0: \"Turn the bottom wall\" asks for a control the lesson does not "
+                                         "list; list \"walls\" in \"controls\"")),
+             qPrintable(all));
+    QVERIFY2(all.contains(QStringLiteral("\"set the collision restitution\" asks for a control")), qPrintable(all));
+    QVERIFY2(all.contains(QStringLiteral("\"restitution\" or \"collisions\"")), qPrintable(all));
+    const LoadResult listed = loadText(minimal(challenge + R"(, "controls": ["walls", "collisions"])"));
+    QVERIFY2(listed.ok(), qPrintable(listed.errors().join('\n')));
+    // Words that only talk about a wall or gravity ask for nothing.
+    const LoadResult talk =
+        loadText(minimal(R"("challenges": ["Bring the balls to the right wall. Why does gravity pull them down?"])"));
+    QVERIFY2(talk.ok(), qPrintable(talk.errors().join('\n')));
+    // A switch written as its code name is a request wherever it stands.
+    const LoadResult code = loadText(minimal(R"("challenges": ["With per_frame off, what changes?"])"));
+    QVERIFY(!code.ok());
+    QVERIFY2(firstError(code).contains(QStringLiteral("list \"per_frame\" in \"controls\"")), qPrintable(firstError(code)));
+}
+
 void TestLessonLoader::toolsAreListedAndNamedOnlyWhenListed()
 {
     const QByteArray challenge = R"("challenges": ["Time one orbit with the Stopwatch."])";
