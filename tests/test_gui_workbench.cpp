@@ -169,6 +169,8 @@ const std::vector<ControlCase>& controlCases()
         {"time_scale", "timeScaleSpin", 0.25, 0.25, [](C c) { return c.timeScale(); }},
         {"ball_count", "ballCountSpin", 12.0, 12.0, [](C c) { return double(c.spawn().count); }},
         {"fully_inside", "fullyInsideCheck", false, 0.0, [](C c) { return double(c.spawn().fullyInside); }},
+        {"spawn_min_speed", "spawnMinSpeedSpin", 20.0, 20.0, [](C c) { return c.spawn().minSpeed; }},
+        {"spawn_max_speed", "spawnMaxSpeedSpin", 500.0, 500.0, [](C c) { return c.spawn().maxSpeed; }},
     };
     return cases;
 }
@@ -249,6 +251,7 @@ class GuiWorkbenchTest : public QObject {
 private slots:
     void initTestCase();
     void tableCoversEveryControl();
+    void slowestSpawnAboveFastestIsRefused();
     void manyLoadErrorsFitTheScreen();
     void hostileLessonsAreRefusedAndTheLessonStays();
     void eachControlEditsItsFieldAndUndoes_data();
@@ -348,6 +351,31 @@ void GuiWorkbenchTest::hostileLessonsAreRefusedAndTheLessonStays()
         QCOMPARE(window.lesson().id, before);
         QCOMPARE(window.controller()->world().balls().size(), balls);
     }
+}
+
+// Stage 2 asks to change the spawn speed range: a slowest speed typed above
+// the fastest is refused with a message naming the field, and the range and
+// the balls stay as they were (nothing clamped).
+void GuiWorkbenchTest::slowestSpawnAboveFastestIsRefused()
+{
+    SimulationController controller;
+    QVERIFY(!controller.setScene(plainScene()));
+    SettingsEditor editor(&controller);
+    ParameterPanel panel(&controller, &editor);
+    panel.setShowAll(true);
+    QSignalSpy errors(&controller, &SimulationController::errorOccurred);
+    auto* slowest = panel.findChild<QDoubleSpinBox*>(QStringLiteral("spawnMinSpeedSpin"));
+    QVERIFY(slowest);
+    const sim::SpawnSettings before = controller.spawn();
+    const int steps = editor.undoStack()->count();
+    QVERIFY(setWidget(slowest, before.maxSpeed + 100.0));
+    QCOMPARE(errors.count(), 1);
+    QVERIFY2(errors.first().first().toString().contains(QStringLiteral("spawn.speed")),
+             qPrintable(errors.first().first().toString()));
+    QCOMPARE(controller.spawn().minSpeed, before.minSpeed);
+    QCOMPARE(controller.spawn().maxSpeed, before.maxSpeed);
+    QCOMPARE(slowest->value(), before.minSpeed); // the field shows the range that stands
+    QCOMPARE(editor.undoStack()->count(), steps);
 }
 
 void GuiWorkbenchTest::tableCoversEveryControl()

@@ -142,6 +142,8 @@ ParameterPanel::ParameterPanel(SimulationController* controller, SettingsEditor*
 
     addSection(QStringLiteral("balls"), tr("Balls"));
     addBallCount();
+    addSpawnSpeed(QStringLiteral("spawn_min_speed"));
+    addSpawnSpeed(QStringLiteral("spawn_max_speed"));
     addFullyInside();
 
     connect(m_controller, &SimulationController::settingsChanged, this, &ParameterPanel::refresh);
@@ -625,6 +627,42 @@ void ParameterPanel::addBallCount()
     m_refreshers.push_back([this, control] { control->setValue(m_controller->spawn().count); });
     addRow(QStringLiteral("ball_count"), tr("Random balls"), control,
            tr("How many balls are placed at random (besides the lesson's own); changing it starts again"));
+}
+
+void ParameterPanel::addSpawnSpeed(const QString& row)
+{
+    // The range random balls' speeds are drawn from (stage 2: "change the
+    // spawn speed range"). Like the count, a final value places the balls again.
+    const bool slowest = row == QLatin1String("spawn_min_speed");
+    NumberControl::Spec s;
+    s.min = 0.0;
+    s.max = 1e7; // the lesson reader's range for spawn.speed
+    s.sliderMin = 0.0;
+    s.sliderMax = 1000.0;
+    s.decimals = 0;
+    s.suffix = QStringLiteral(" px/s");
+    auto* control = new NumberControl(slowest ? QStringLiteral("spawnMinSpeed") : QStringLiteral("spawnMaxSpeed"), s,
+                                      currentSection().box);
+    auto apply = [this, slowest](double v) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        (slowest ? spawn.minSpeed : spawn.maxSpeed) = v;
+        // A slowest speed above the fastest is refused by the world with its
+        // message, and the panel shows the old range again (editSpawn).
+        const sim::SpawnSettings before = m_controller->spawn();
+        if (spawn.minSpeed != before.minSpeed || spawn.maxSpeed != before.maxSpeed)
+            editSpawn(tr("Random balls from %1 to %2 px/s").arg(spawn.minSpeed).arg(spawn.maxSpeed), spawn);
+    };
+    connect(control, &NumberControl::valueEdited, this, [apply](double v, bool dragging) {
+        if (!dragging)
+            apply(v);
+    });
+    connect(control->slider(), &QSlider::sliderReleased, this, [apply, control] { apply(control->value()); });
+    m_refreshers.push_back([this, control, slowest] {
+        control->setValue(slowest ? m_controller->spawn().minSpeed : m_controller->spawn().maxSpeed);
+    });
+    addRow(row, slowest ? tr("Slowest random ball") : tr("Fastest random ball"), control,
+           slowest ? tr("Random balls start with a speed of at least this; changing it starts again")
+                   : tr("Random balls start with a speed of at most this; changing it starts again"));
 }
 
 void ParameterPanel::addFullyInside()

@@ -120,6 +120,7 @@ private:
     void addWallSides();
     void addSeed();
     void addBallCount();
+    void addSpawnSpeed(const QString& row);
     void addFullyInside();
     void addTimeScale();
     void addRow(const QString& key, const QString& label, QWidget* field, const QString& tip = {});
