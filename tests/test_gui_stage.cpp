@@ -118,7 +118,11 @@ void GuiStageTest::stageFillsTheScreen()
     const double boxShare = box.width() * box.height() / windowArea;
     qInfo("%dx%d: the box takes %.1f%% of the window (%.0f x %.0f px)", size.width(), size.height(), 100 * boxShare,
           box.width(), box.height());
-    QVERIFY2(boxShare >= 0.80, qPrintable(QString::number(boxShare)));
+    // The bar takes at most a quarter of the height under the box (what the
+    // challenge and the readout need at 2.4% of the height), or a strip
+    // beside it: the box keeps three quarters of the height at least.
+    QVERIFY2(box.height() >= 0.75 * size.height() - 12, qPrintable(QString::number(box.height())));
+    QVERIFY2(boxShare >= 0.70, qPrintable(QString::number(boxShare)));
     QVERIFY(!window.menuBar()->isVisible());
     for (QDockWidget* dock : window.findChildren<QDockWidget*>())
         QVERIFY2(!dock->isVisible(), qPrintable(dock->objectName()));
@@ -420,6 +424,8 @@ void GuiStageTest::stageTextIsNeverCut()
     QVERIFY(bar && challenge && readout && sliderArea);
     QStringList shortened;
     int backRow = 0, challenges = 0; // challenges at 2.4% of the height or more
+    int backRowReadouts = 0, readouts = 0;
+    QStringList smallReadouts, smallChallenges;
     struct Smallest {
         qreal points = 1000.0;
         QString lesson;
@@ -439,7 +445,10 @@ void GuiStageTest::stageTextIsNeverCut()
                                                            .arg(name).arg(need).arg(room.height())));
             QVERIFY2(challenge->font().pointSizeF() >= bar->font().pointSizeF(), qPrintable(name));
             ++challenges;
-            backRow += QFontInfo(challenge->font()).pixelSize() >= StageView::kTextFloorShare * size.height() - 0.5;
+            if (QFontInfo(challenge->font()).pixelSize() >= StageView::kTextFloorShare * size.height() - 0.5)
+                ++backRow;
+            else
+                smallChallenges << name;
             if (challenge->text() != window.lesson().challenges.value(0)) {
                 shortened << name;
                 QVERIFY2(challenge->text().endsWith(QStringLiteral("…")), qPrintable(name));
@@ -487,6 +496,11 @@ void GuiStageTest::stageTextIsNeverCut()
                                     .arg(readout->font().pointSizeF())));
             QVERIFY2(readout->font().pointSizeF() >= 7.0,
                      qPrintable(QStringLiteral("%1: readout at %2 pt").arg(name).arg(readout->font().pointSizeF())));
+            ++readouts;
+            if (QFontInfo(readout->font()).pixelSize() >= StageView::kTextFloorShare * size.height() - 0.5)
+                ++backRowReadouts;
+            else
+                smallReadouts << name;
             auto* stageBar = qobject_cast<StageBar*>(bar);
             Smallest& smallest = stageBar && stageBar->isVertical() ? smallestInColumn : smallestInRow;
             if (readout->font().pointSizeF() < smallest.points)
@@ -496,7 +510,16 @@ void GuiStageTest::stageTextIsNeverCut()
     qInfo("%dx%d: %lld of %lld challenges shortened (%s)", size.width(), size.height(),
           static_cast<long long>(shortened.size()), static_cast<long long>(LessonLoader::builtInFiles().size()),
           qPrintable(shortened.join(QStringLiteral(", "))));
-    qInfo("%dx%d: %d of %d challenges at 2.4%% of the height or more", size.width(), size.height(), backRow, challenges);
+    qInfo("%dx%d: %d of %d challenges at 2.4%% of the height or more (not: %s)", size.width(), size.height(), backRow,
+          challenges, qPrintable(smallChallenges.join(QStringLiteral(", "))));
+    qInfo("%dx%d: %d of %d readouts at 2.4%% of the height or more (not: %s)", size.width(), size.height(),
+          backRowReadouts, readouts, qPrintable(smallReadouts.join(QStringLiteral(", "))));
+    // At 1024x768 the challenges of lessons 02 and 18 are too long for the
+    // quarter of the height a row bar may take, and lesson 33's readout
+    // (three balls' energies) for the column beside its wide box: they come
+    // out a little smaller. Everything else starts at the floor.
+    QVERIFY2(backRow >= challenges - 2, qPrintable(smallChallenges.join(QStringLiteral(", "))));
+    QVERIFY2(backRowReadouts >= readouts - 1, qPrintable(smallReadouts.join(QStringLiteral(", "))));
     qInfo("%dx%d: smallest readout %.1f pt in a row (%s), %.1f pt in a column (%s)", size.width(), size.height(),
           smallestInRow.points, qPrintable(smallestInRow.lesson), smallestInColumn.points,
           qPrintable(smallestInColumn.lesson));

@@ -80,7 +80,9 @@ void StageBar::applyFonts()
     big.setBold(true);
     m_title->setFont(big);
     QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    mono.setPointSizeF(text.pointSizeF());
+    // The readout starts at the floor too: its numbers are read from the
+    // back row as much as the challenge.
+    mono.setPointSizeF(std::max(text.pointSizeF(), pointsOfPixels(m_textFloor)));
     m_readout->setFont(mono);
     m_readoutFont = mono;
     m_fitFont = mono;
@@ -294,6 +296,80 @@ double StageBar::readoutPointSize(const QString& text) const
         .font.pointSizeF();
 }
 
+// The width of a row bar's widest row of shown buttons, spacing included.
+int StageBar::rowButtonsWidth(int rows) const
+{
+    QList<const QToolButton*> shown;
+    for (const QToolButton* b : m_buttons)
+        if (!b->isHidden())
+            shown << b;
+    const qsizetype perRow = (shown.size() + rows - 1) / std::max(1, rows);
+    int widest = 0;
+    for (qsizetype start = 0; start < shown.size(); start += std::max<qsizetype>(1, perRow)) {
+        int w = 0;
+        for (qsizetype i = start; i < std::min(shown.size(), start + perRow); ++i)
+            w += std::max(shown[i]->minimumWidth(), shown[i]->sizeHint().width()) + m_grid->horizontalSpacing();
+        widest = std::max(widest, w);
+    }
+    return widest;
+}
+
+int StageBar::rowHeightAtFloor(int width, int rows) const
+{
+    const QMargins margins = m_grid->contentsMargins();
+    const int hs = m_grid->horizontalSpacing();
+    const int vs = m_grid->verticalSpacing();
+    int buttonHeight = 0;
+    for (const QToolButton* b : m_buttons)
+        if (!b->isHidden())
+            buttonHeight = std::max({buttonHeight, b->minimumHeight(), b->sizeHint().height()});
+    const int buttons = rows * buttonHeight + (rows - 1) * vs;
+    int free = width - margins.left() - margins.right() - rowButtonsWidth(rows) - hs;
+    // The readout in the text columns that make it lowest within 60% of
+    // what the buttons leave (sizeReadoutColumn's most).
+    int readout = 0;
+    if (!m_readout->isHidden() && !m_readoutText.isEmpty()) {
+        const QStringList lines = m_readoutText.split(QLatin1Char('\n'));
+        QSize best = textSize(m_readoutFont, lines);
+        for (int columns = 2; columns <= kMostReadoutColumns; ++columns) {
+            const QStringList flowed = flowLines(lines, columns);
+            if (flowed.isEmpty())
+                continue;
+            const QSize s = textSize(m_readoutFont, flowed);
+            if (best.width() > free * 6 / 10 || (s.width() <= free * 6 / 10 && s.height() < best.height()))
+                best = s;
+        }
+        readout = best.height();
+        free -= std::min(best.width(), free * 6 / 10) + hs;
+    }
+    if (free <= 0)
+        return QWIDGETSIZE_MAX;
+    int caption = m_title->heightForWidth(free);
+    if (!m_challengeText.isEmpty())
+        caption += vs + wrappedHeight(m_challengeFont, free, m_challengeText);
+    return std::max({caption, readout, buttons}) + margins.top() + margins.bottom();
+}
+
+int StageBar::columnWidthAtFloor(const QString& readout) const
+{
+    const QMargins margins = m_grid->contentsMargins();
+    int buttons = m_grid->horizontalSpacing();
+    for (qsizetype i = 0; i < std::min<qsizetype>(2, m_buttons.size()); ++i)
+        buttons += std::max(m_buttons[i]->minimumWidth(), m_buttons[i]->sizeHint().width());
+    const int lines = readout.isEmpty() ? 0 : textSize(m_readoutFont, readout.split(QLatin1Char('\n'))).width() + 2;
+    return std::max(buttons, lines) + margins.left() + margins.right();
+}
+
+void StageBar::setButtonRows(int rows)
+{
+    rows = std::clamp(rows, 1, 2);
+    if (rows == m_buttonRows)
+        return;
+    m_buttonRows = rows;
+    if (!m_vertical)
+        setVertical(false);
+}
+
 void StageBar::fitReadout()
 {
     // The readout's lines are never cut: its font shrinks (to 7 pt at
@@ -316,8 +392,8 @@ void StageBar::fitReadout()
     int shownButtons = 0;
     for (const QToolButton* b : m_buttons)
         shownButtons += b->isHidden() ? 0 : 1;
-    const FitKey key{shapeOf(m_readoutText), room, size(), m_challengeText, m_vertical, m_readout->isHidden(),
-                     shownButtons};
+    const FitKey key{shapeOf(m_readoutText), room,           size(),        m_challengeText, m_vertical,
+                     m_readout->isHidden(),   shownButtons, m_buttonRows};
     if (!(key == m_fitKey)) {
         m_fitKey = key;
         if (!m_vertical && !m_readout->isHidden())
@@ -350,16 +426,9 @@ void StageBar::fitReadout()
 // left alone, so the caption does not reflow as the numbers tick.)
 void StageBar::sizeReadoutColumn(const QStringList& lines)
 {
-    int buttons = 0;
-    int shownButtons = 0;
-    for (const QToolButton* b : m_buttons)
-        if (!b->isHidden()) {
-            buttons += std::max(b->minimumWidth(), b->sizeHint().width());
-            ++shownButtons;
-        }
     const QMargins margins = m_grid->contentsMargins();
     const int spacing = m_grid->horizontalSpacing();
-    const int free = width() - margins.left() - margins.right() - buttons - spacing * (shownButtons + 1);
+    const int free = width() - margins.left() - margins.right() - rowButtonsWidth(m_buttonRows) - spacing;
     if (free <= 0)
         return;
     const int tall = m_readout->contentsRect().height() > 0 ? m_readout->contentsRect().height()
@@ -406,10 +475,14 @@ void StageBar::fitChallenge()
         m_challenge->setToolTip(QString());
         QFont f = m_challengeFont;
         const double least = font().pointSizeF() * 1.3;
+        // The sliders count with two rows at most: the rest of them scroll,
+        // and the challenge keeps its size.
+        const int sliders = m_sliders && !m_sliders->isHidden() ? m_sliders->sizeHint().height() : 0;
+        const int slidersKept = std::min(sliders, 2 * (QFontMetrics(font()).lineSpacing() * 3));
         auto fits = [&] {
             if (f != m_challenge->font())
                 m_challenge->setFont(f);
-            return m_grid->totalHeightForWidth(width()) <= height();
+            return m_grid->totalHeightForWidth(width()) - sliders + slidersKept <= height();
         };
         while (f.pointSizeF() - 0.5 >= least && !fits())
             f.setPointSizeF(f.pointSizeF() - 0.5);
@@ -541,8 +614,13 @@ void StageBar::setVertical(bool vertical)
     m_readoutColumn = 0;
     // A row has six buttons across when the lesson's sliders wait for the
     // Sliders button: a little narrower there, so the caption keeps room.
-    for (QToolButton* b : m_buttons)
+    // In a column the buttons share its width (a layout of fixed-size
+    // buttons would sit centred, narrower than the column, and squeeze the
+    // readout and the challenge that span it).
+    for (QToolButton* b : m_buttons) {
         b->setMinimumWidth(vertical ? 80 : 72);
+        b->setSizePolicy(vertical ? QSizePolicy::Preferred : QSizePolicy::Fixed, QSizePolicy::Fixed);
+    }
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);
@@ -553,6 +631,10 @@ void StageBar::setVertical(bool vertical)
         m_grid->addWidget(m_readout, after, 0, 1, 2);
         if (m_sliders)
             m_grid->addWidget(m_sliders, after + 1, 0, 1, 2);
+        // The column's width goes to its two columns, not to gaps between
+        // the fixed-size buttons: the readout and the challenge span both.
+        m_grid->setColumnStretch(0, 1);
+        m_grid->setColumnStretch(1, 1);
         stretchColumnRows();
     } else {
         // One row: the caption, then the buttons. Without a readout the
@@ -562,10 +644,15 @@ void StageBar::setVertical(bool vertical)
         m_grid->addWidget(m_challenge, 1, 0, 1, captionColumns);
         if (!m_readout->isHidden())
             m_grid->addWidget(m_readout, 0, 1, 2, 1);
+        // The buttons in one row, or in two when the caption needs their width.
+        auto* buttons = new QGridLayout;
+        buttons->setSpacing(m_grid->horizontalSpacing());
+        const int perRow = static_cast<int>((m_buttons.size() + m_buttonRows - 1) / m_buttonRows);
         for (qsizetype i = 0; i < m_buttons.size(); ++i)
-            m_grid->addWidget(m_buttons[i], 0, 2 + static_cast<int>(i), 2, 1);
+            buttons->addWidget(m_buttons[i], static_cast<int>(i) / perRow, static_cast<int>(i) % perRow);
+        m_grid->addLayout(buttons, 0, 2, 2, 1, Qt::AlignTop);
         if (m_sliders) // a row of its own under the caption and the buttons
-            m_grid->addWidget(m_sliders, 2, 0, 1, 2 + static_cast<int>(m_buttons.size()));
+            m_grid->addWidget(m_sliders, 2, 0, 1, 3);
         m_grid->setColumnStretch(0, 1); // the readout's column: see sizeReadoutColumn
         // The challenge has all the height the title leaves, whatever its
         // text asks (fitChallenge fits the text to that room).

@@ -50,6 +50,17 @@ public:
     /// the bar's own (the stage sets it from the screen's height); it comes
     /// down from there only to fit the bar.
     void setTextFloor(double pixels);
+    /// A row bar's buttons in one row or two (two free width for the
+    /// caption, at the cost of height); a column always has two across.
+    void setButtonRows(int rows);
+    int buttonRows() const { return m_buttonRows; }
+    /// The height a row bar `width` px wide needs to show its title, the
+    /// whole challenge and the readout at their starting sizes (the floor),
+    /// with the buttons in `rows` rows; the sliders not counted.
+    int rowHeightAtFloor(int width, int rows) const;
+    /// The width a column needs to show the lines of `readout` at their
+    /// starting size (the floor) and two buttons across.
+    int columnWidthAtFloor(const QString& readout) const;
     /// Whether a fit of the readout or the challenge waits in the event
     /// queue (the bar has not settled on its last room yet).
     bool isFitPending() const { return m_fitQueued; }
@@ -71,6 +82,7 @@ private:
     void sizeReadoutColumn(const QStringList& lines);
     void fitChallenge();
     void stretchColumnRows();
+    int rowButtonsWidth(int rows) const;
 
     QLabel* m_title = nullptr;
     QLabel* m_challenge = nullptr;
@@ -86,6 +98,7 @@ private:
         QString challenge;
         bool vertical = true, hidden = true;
         int buttons = 0; // shown
+        int buttonRows = 1;
         bool operator==(const FitKey&) const = default;
     };
     FitKey m_fitKey;
@@ -97,6 +110,7 @@ private:
     QList<QToolButton*> m_buttons;
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;
+    int m_buttonRows = 1; // a row bar's rows of buttons
     double m_textFloor = 0.0; // px, setTextFloor
     bool m_fitQueued = false; // scheduleFit's call waits in the event queue
 };

@@ -252,9 +252,6 @@ void StageView::layoutStage()
     const bool wasVertical = m_bar->isVertical();
     m_bar->setVertical(vertical);
     m_layout->setDirection(vertical ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
-    // A row is as tall as its caption, readout and sliders need, up to a
-    // seventh of the screen (the box keeps over 80% of it); the sliders
-    // stay in the Parameters panel when they would not fit under that.
     // Two sliders side by side in a column at least 320 px wide (one in a
     // narrower one, so a label such as "Ball restitution" is not cut); in a
     // row as many as fit its width.
@@ -263,22 +260,41 @@ void StageView::layoutStage()
                                         : std::clamp(area.width() / 240, 1, std::max(1, m_sliders->count())));
     int minimum = 200;
     if (!vertical) {
-        // Sliders that do not fit under the cap wait for the Sliders button,
-        // which lets the bar take up to 2/5 of the screen to show them.
-        const int cap = std::max(96, area.height() / 7);
+        // A row is as tall as the title, the whole challenge and the readout
+        // need at their starting size (the floor), between a seventh and a
+        // quarter of the screen (the box keeps three quarters of it at
+        // least); the buttons go in two rows when that gives the caption the
+        // width to need less height. Sliders that do not fit under that wait
+        // for the Sliders button, which lets the bar take up to 2/5 of the
+        // screen to show them.
+        const int least = std::max(96, area.height() / 7);
+        const int most = std::max(least, area.height() / 4);
         const bool sliders = m_sliders->count() > 0;
         m_bar->unfitChallenge(); // its size hint at its own font, whatever room it had before
+        const int oneRow = m_bar->rowHeightAtFloor(area.width(), 1);
+        const int twoRows = m_bar->rowHeightAtFloor(area.width(), 2);
+        m_bar->setButtonRows(oneRow <= least || oneRow <= twoRows ? 1 : 2);
+        const int cap = std::clamp(std::min(oneRow, twoRows), least, most);
+        const int slidersHeight = m_sliders->sizeHint().height() + 8;
         m_bar->setSlidersShown(sliders);
-        const bool fit = m_bar->sizeHint().height() <= cap;
+        const bool fit = m_bar->sizeHint().height() <= least || cap + slidersHeight <= most;
         m_slidersAction->setVisible(sliders && !fit);
         const bool asked = sliders && !fit && m_slidersAction->isChecked();
         m_bar->setSlidersShown(sliders && (fit || asked));
         minimum = std::clamp(m_bar->sizeHint().height(), 96, cap);
+        if (sliders && fit)
+            minimum = std::clamp(std::max(m_bar->sizeHint().height(), cap + slidersHeight), 96, most);
         if (asked) // the bar as without them, plus the rows of sliders
-            minimum = std::min(cap + m_sliders->sizeHint().height() + 8, area.height() * 2 / 5);
+            minimum = std::min(cap + slidersHeight, area.height() * 2 / 5);
+        else if (!sliders || !fit)
+            minimum = cap;
     } else {
         m_slidersAction->setVisible(false);
         m_bar->setSlidersShown(m_sliders->count() > 0);
+        // A column as wide as the readout's short lines need at the floor,
+        // up to 22% of the width (the box keeps the rest).
+        minimum = std::clamp(m_bar->columnWidthAtFloor(readoutText().narrow), 200,
+                             std::max(200, area.width() * 22 / 100));
     }
     const int strip = std::max(minimum, static_cast<int>(vertical ? side : below));
     if (vertical) {
