@@ -277,13 +277,17 @@ void StageView::layoutStage()
         const int cap = std::clamp(std::min(oneRow, twoRows), least, most);
         const int slidersHeight = m_sliders->sizeHint().height() + 8;
         m_bar->setSlidersShown(sliders);
-        const bool fit = m_bar->sizeHint().height() <= least || cap + slidersHeight <= most;
+        // A wide box (lesson 27's 1000 × 300) leaves more than a quarter
+        // under it: the sliders then use that room instead of waiting for
+        // the Sliders button.
+        const int room = std::max(most, static_cast<int>(below));
+        const bool fit = m_bar->sizeHint().height() <= least || cap + slidersHeight <= room;
         m_slidersAction->setVisible(sliders && !fit);
         const bool asked = sliders && !fit && m_slidersAction->isChecked();
         m_bar->setSlidersShown(sliders && (fit || asked));
         minimum = std::clamp(m_bar->sizeHint().height(), 96, cap);
         if (sliders && fit)
-            minimum = std::clamp(std::max(m_bar->sizeHint().height(), cap + slidersHeight), 96, most);
+            minimum = std::clamp(std::max(m_bar->sizeHint().height(), cap + slidersHeight), 96, room);
         if (asked) // the bar as without them, plus the rows of sliders
             minimum = std::min(cap + slidersHeight, area.height() * 2 / 5);
         else if (!sliders || !fit)
