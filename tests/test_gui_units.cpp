@@ -11,7 +11,9 @@
 #include "ui/controls/ball_table_model.h"
 #include "ui/controls/number_control.h"
 #include "ui/controls/parameter_panel.h"
+#include "ui/charts/quantity_graph.h"
 #include "ui/docks/inspector_dock.h"
+#include "ui/docks/plots_dock.h"
 #include "ui/drawing/display_units.h"
 #include "ui/drawing/world_painter.h"
 #include "ui/window/main_window.h"
@@ -20,6 +22,8 @@
 #include "sim/world/parameters.h"
 
 #include <QAction>
+#include <QChart>
+#include <QChartView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QStandardPaths>
@@ -256,6 +260,17 @@ void GuiUnitsTest::readoutsTableInspectorSpeakSi()
     QVERIFY(inspector->findChild<QLabel*>(QStringLiteral("inspectorVelocity"))->text().contains(QStringLiteral("m/s")));
     QVERIFY(inspector->findChild<QLabel*>(QStringLiteral("inspectorPosition"))->text().contains(QStringLiteral("2.5")));
     QVERIFY(inspector->findChild<QLabel*>(QStringLiteral("inspectorMass"))->text().contains(QStringLiteral("kg")));
+
+    // The graphs' titles name the SI units.
+    PlotsDock* plots = w.window.plotsDock();
+    plots->refreshCharts();
+    plots->quantityGraph()->refresh();
+    QStringList titles;
+    for (QChartView* view : plots->findChildren<QChartView*>())
+        titles << view->chart()->title();
+    const QString all = titles.join(QStringLiteral(" | "));
+    QVERIFY2(all.contains(QStringLiteral("J)")) && all.contains(QStringLiteral("kg·m/s)")), qPrintable(all));
+    QVERIFY2(!all.contains(QStringLiteral("px")) && !all.contains(QStringLiteral("mass")), qPrintable(all));
 
     // Pixels again: the same texts speak px.
     w.window.findChild<QAction*>(QStringLiteral("pixelUnitsAction"))->trigger();

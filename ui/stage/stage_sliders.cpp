@@ -1,6 +1,6 @@
-#include "ui/drawing/display_units.h"
 #include "ui/stage/stage_sliders.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/controls/number_control.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"

@@ -18,6 +18,8 @@
 #include "ui/docks/lessons_dock.h"
 #include "ui/controls/parameter_panel.h"
 #include "ui/docks/plots_dock.h"
+#include "ui/charts/energy_bars.h"
+#include "ui/charts/quantity_graph.h"
 #include "ui/docks/predict_dock.h"
 #include "ui/docks/stopwatch_dock.h"
 #include "ui/docks/force_editor_dock.h"
@@ -458,6 +460,12 @@ void MainWindow::setUnits(const DisplayUnits& units)
         m_ballTable->model()->unitsChanged();
     if (m_inspectorDock)
         m_inspectorDock->refresh();
+    if (m_plotsDock) {
+        m_plotsDock->refreshCharts();
+        if (m_plotsDock->energyBars()->isVisible()) // hidden, it keeps no account; it refreshes when shown
+            m_plotsDock->energyBars()->refresh();
+        m_plotsDock->quantityGraph()->refresh();
+    }
     for (StageSliders* sliders : findChildren<StageSliders*>())
         sliders->refresh();
     m_canvas->update();
