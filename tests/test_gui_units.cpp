@@ -206,13 +206,15 @@ void GuiUnitsTest::typedSiReachesTheWorld()
     QVERIFY(!displayUnits().si);
     QCOMPARE(spin->suffix(), QStringLiteral(" px/s²"));
     QCOMPARE(spin->value(), 980.0);
-    type(QStringLiteral("500"));
-    QTRY_COMPARE(w.controller()->world().settings().gravity.g.y(), 500.0);
+    type(QStringLiteral("1234.5"));
+    QTRY_COMPARE(w.controller()->world().settings().gravity.g.y(), 1234.5);
+    // Fixed decimals again, as before SI (not SI's four significant digits: "1235").
+    QCOMPARE(spin->text(), QStringLiteral("1234.5 px/s²"));
 
     // The teacher's switch on again, at another scale: 50 px = 1 m.
     w.window.setUnits({.si = true, .pxPerMetre = 50, .kgPerMass = 1});
     QVERIFY(si->isChecked());
-    QCOMPARE(spin->value(), 10.0);
+    QCOMPARE(spin->value(), 24.69); // 1234.5 px/s² / 50 px per m
     type(QStringLiteral("4"));
     QTRY_COMPARE(w.controller()->world().settings().gravity.g.y(), 200.0);
 }

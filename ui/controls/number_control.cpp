@@ -192,11 +192,11 @@ NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidge
 void NumberControl::applySpec()
 {
     const Spec& spec = m_spec;
-    m_spin->setRange(spec.min, spec.max);
-    if (spec.significant > 0)
-        m_spin->setSignificantDigits(spec.significant);
-    else
+    // Decimals first: the range and the value are rounded to them.
+    m_spin->setSignificantDigits(spec.significant); // 0 (fixed decimals) too, after a spec with digits
+    if (spec.significant <= 0)
         m_spin->setDecimals(spec.decimals);
+    m_spin->setRange(spec.min, spec.max);
     m_spin->setSuffix(spec.suffix);
     // A single step of about a hundredth of the slider's span.
     const double span = spec.scale == Scale::Log ? spec.sliderMin : (spec.sliderMax - spec.sliderMin) / 100.0;

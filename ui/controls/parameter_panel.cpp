@@ -512,18 +512,25 @@ NumberControl* ParameterPanel::addNumber(const QString& key, const QString& obje
     // Typed outside the range: passed on, so the world refuses it with its message.
     connect(control, &NumberControl::outOfRange, this, [apply](double shown) { apply(shown, false); });
     connect(control, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
-    m_refreshers.push_back([this, control, get, unit, spec, k] {
+    auto rangeTip = [](const NumberControl::Spec& shown) {
+        return tr("%1 to %2%3").arg(QLocale().toString(shown.min, 'g', 4), QLocale().toString(shown.max, 'g', 4),
+                                    shown.suffix);
+    };
+    QFormLayout* form = currentSection().form;
+    m_refreshers.push_back([this, control, get, unit, spec, k, form, rangeTip] {
         const double value = get(m_controller->world().settings());
         const ShownUnit now = shownUnit(spec.pixelUnit(), displayUnits());
         if (now.text != unit->text || now.factor() != unit->factor()) {
             *unit = now;
-            control->setSpec(controlSpec(spec, now), now.toShown(value) * k);
+            const NumberControl::Spec shown = controlSpec(spec, now);
+            control->setSpec(shown, now.toShown(value) * k);
+            if (auto* text = qobject_cast<QLabel*>(form->labelForField(control)))
+                text->setToolTip(rangeTip(shown));
             return;
         }
         control->setValue(unit->toShown(value) * k);
     });
-    addRow(key, label, control,
-           tr("%1 to %2%3").arg(QLocale().toString(s.min, 'g', 4), QLocale().toString(s.max, 'g', 4), s.suffix));
+    addRow(key, label, control, rangeTip(s));
     return control;
 }
 

@@ -131,7 +131,13 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_canvas->setFocus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The units are the application's (the painters read them); the window
+    // that set them takes its choice along, so a panel or a picture made
+    // after it (a test, the next window) starts in pixels.
+    forcelab::setDisplayUnits({});
+}
 
 void MainWindow::createDocks()
 {
