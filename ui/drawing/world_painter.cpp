@@ -198,13 +198,23 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
 {
     // Positions and speeds with one decimal, from 10⁵ on with a power of
     // ten (a stiff spring's −1.5 × 10⁶ px/s², never −1e+06); in SI
-    // (ui/drawing/display_units.h) four significant digits, as 1.234 m is
-    // 123.4 px.
+    // (ui/drawing/display_units.h) with the decimals of a tenth of a px
+    // (three at 100 px = 1 m), so the columns keep their width.
     const ShownUnit lu = shownUnit(QStringLiteral("px"), displayUnits());
     const ShownUnit vu = shownUnit(QStringLiteral("px/s"), displayUnits());
     const ShownUnit au = shownUnit(QStringLiteral("px/s²"), displayUnits());
     auto shown = [](const ShownUnit& u, double value) {
-        return u.px != 0 || u.mass != 0 ? humanNumber(u.toShown(value), 4) : oneDecimal(value);
+        if (u.px == 0 && u.mass == 0)
+            return oneDecimal(value);
+        const double v = u.toShown(value);
+        if (!std::isfinite(v) || std::abs(v) >= 1e5)
+            return humanNumber(v, 4);
+        const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(0.1 * u.factor()) - 1e-9)), 0, 6);
+        QString text = QString::number(v, 'f', decimals);
+        if (text.toDouble() == 0.0)
+            text = QString::number(0.0, 'f', decimals); // no "−0.000"
+        text.replace(QLatin1Char('-'), QChar(0x2212));
+        return text;
     };
     const QString L = lu.text, V = vu.text, A = au.text;
     if (shape == ReadoutShape::Wide) {
