@@ -12,6 +12,7 @@
 #include "ui/controls/number_control.h"
 #include "ui/controls/parameter_panel.h"
 #include "ui/charts/quantity_graph.h"
+#include "ui/charts/speed_histogram.h"
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/plots_dock.h"
 #include "ui/drawing/display_units.h"
@@ -21,7 +22,11 @@
 #include "lessons/lesson_loader.h"
 #include "sim/world/parameters.h"
 
+#include <QAbstractAxis>
 #include <QAction>
+#include <QDialog>
+#include <QDoubleSpinBox>
+#include <QTimer>
 #include <QChart>
 #include <QChartView>
 #include <QLabel>
@@ -59,6 +64,7 @@ private slots:
     void lessonUnitsRefused();
     void typedSiReachesTheWorld();
     void readoutsTableInspectorSpeakSi();
+    void scaleDialogSetsTheScale();
 };
 
 void GuiUnitsTest::conversionClosedForms()
@@ -274,11 +280,51 @@ void GuiUnitsTest::readoutsTableInspectorSpeakSi()
     QVERIFY2(all.contains(QStringLiteral("J)")) && all.contains(QStringLiteral("kg·m/s)")), qPrintable(all));
     QVERIFY2(!all.contains(QStringLiteral("px")) && !all.contains(QStringLiteral("mass")), qPrintable(all));
 
+    plots->speedHistogram()->refresh();
+    QStringList axes;
+    for (QAbstractAxis* axis : plots->speedHistogram()->chart()->axes())
+        axes << axis->titleText();
+    QVERIFY2(axes.contains(QStringLiteral("speed (m/s)")), qPrintable(axes.join(QStringLiteral(" | "))));
+    QVERIFY2(!axes.join(QString()).contains(QStringLiteral("px")), qPrintable(axes.join(QStringLiteral(" | "))));
+
     // Pixels again: the same texts speak px.
     w.window.findChild<QAction*>(QStringLiteral("pixelUnitsAction"))->trigger();
     QVERIFY(WorldPainter::readoutText(world, 0, nullptr).join(QLatin1Char('\n')).contains(QStringLiteral("px/s")));
     QCOMPARE(model->headerData(BallTableModel::X, Qt::Horizontal).toString(), QStringLiteral("x (px)"));
     QVERIFY(inspector->findChild<QLabel*>(QStringLiteral("inspectorVelocity"))->text().contains(QStringLiteral("px/s")));
+}
+
+void GuiUnitsTest::scaleDialogSetsTheScale()
+{
+    // A lesson without units opens in pixels; the teacher sets 50 px = 1 m
+    // and 2 kg per mass unit in the View → Units dialog, which switches SI on.
+    test::Workbench w(QStringLiteral("balls-on-a-canvas"));
+    QVERIFY(w.ready());
+    QVERIFY(!displayUnits().si);
+    QVERIFY(w.window.findChild<QAction*>(QStringLiteral("pixelUnitsAction"))->isChecked());
+    bool answered = false;
+    QTimer::singleShot(0, &w.window, [&] {
+        auto* dialog = w.window.findChild<QDialog*>(QStringLiteral("unitScaleDialog"));
+        if (!dialog)
+            return;
+        dialog->findChild<QDoubleSpinBox*>(QStringLiteral("pxPerMetreSpin"))->setValue(50.0);
+        dialog->findChild<QDoubleSpinBox*>(QStringLiteral("kgPerMassSpin"))->setValue(2.0);
+        answered = true;
+        dialog->accept();
+    });
+    QAction* scale = w.window.findChild<QAction*>(QStringLiteral("unitScaleAction"));
+    QVERIFY(scale);
+    scale->trigger(); // returns when the dialog is closed
+    QVERIFY(answered);
+    QVERIFY(displayUnits().si);
+    QCOMPARE(displayUnits().pxPerMetre, 50.0);
+    QCOMPARE(displayUnits().kgPerMass, 2.0);
+    QVERIFY(w.window.findChild<QAction*>(QStringLiteral("siUnitsAction"))->isChecked());
+    QVERIFY2(scale->text().contains(QStringLiteral("50 px = 1 m")), qPrintable(scale->text()));
+    // The ball table's mass column now in kg: twice the mass units.
+    BallTableModel* model = w.window.findChild<BallTable*>()->model();
+    QCOMPARE(model->data(model->index(0, BallTableModel::Mass), BallTableModel::kSortRole).toDouble(),
+             2.0 * w.balls().mass[0]);
 }
 
 QTEST_MAIN(GuiUnitsTest)

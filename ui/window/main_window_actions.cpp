@@ -20,6 +20,7 @@
 #include "ui/docks/plots_dock.h"
 #include "ui/charts/energy_bars.h"
 #include "ui/charts/quantity_graph.h"
+#include "ui/charts/speed_histogram.h"
 #include "ui/docks/predict_dock.h"
 #include "ui/docks/stopwatch_dock.h"
 #include "ui/docks/force_editor_dock.h"
@@ -465,6 +466,8 @@ void MainWindow::setUnits(const DisplayUnits& units)
         if (m_plotsDock->energyBars()->isVisible()) // hidden, it keeps no account; it refreshes when shown
             m_plotsDock->energyBars()->refresh();
         m_plotsDock->quantityGraph()->refresh();
+        if (m_plotsDock->speedHistogram() && m_plotsDock->speedHistogram()->isVisible())
+            m_plotsDock->speedHistogram()->refresh();
     }
     for (StageSliders* sliders : findChildren<StageSliders*>())
         sliders->refresh();
