@@ -287,11 +287,19 @@ void GuiUnitsTest::readoutsTableInspectorSpeakSi()
     QVERIFY2(axes.contains(QStringLiteral("speed (m/s)")), qPrintable(axes.join(QStringLiteral(" | "))));
     QVERIFY2(!axes.join(QString()).contains(QStringLiteral("px")), qPrintable(axes.join(QStringLiteral(" | "))));
 
+    // The stopwatch's line: its 300 px shown as 3 m.
+    auto* line = w.window.findChild<QDoubleSpinBox*>(QStringLiteral("stopwatchLine"));
+    QVERIFY(line);
+    QCOMPARE(line->suffix(), QStringLiteral(" m"));
+    QCOMPARE(line->value(), 3.0);
+
     // Pixels again: the same texts speak px.
     w.window.findChild<QAction*>(QStringLiteral("pixelUnitsAction"))->trigger();
     QVERIFY(WorldPainter::readoutText(world, 0, nullptr).join(QLatin1Char('\n')).contains(QStringLiteral("px/s")));
     QCOMPARE(model->headerData(BallTableModel::X, Qt::Horizontal).toString(), QStringLiteral("x (px)"));
     QVERIFY(inspector->findChild<QLabel*>(QStringLiteral("inspectorVelocity"))->text().contains(QStringLiteral("px/s")));
+    QCOMPARE(line->suffix(), QStringLiteral(" px"));
+    QCOMPARE(line->value(), 300.0);
 }
 
 void GuiUnitsTest::scaleDialogSetsTheScale()

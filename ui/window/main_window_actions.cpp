@@ -469,6 +469,8 @@ void MainWindow::setUnits(const DisplayUnits& units)
         if (m_plotsDock->speedHistogram() && m_plotsDock->speedHistogram()->isVisible())
             m_plotsDock->speedHistogram()->refresh();
     }
+    if (m_stopwatchDock)
+        m_stopwatchDock->unitsChanged();
     for (StageSliders* sliders : findChildren<StageSliders*>())
         sliders->refresh();
     m_canvas->update();
