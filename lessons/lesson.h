@@ -9,6 +9,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 namespace forcelab {
 
 /// What a teacher needs and a class does not see: shown in the Lessons dock's
@@ -64,6 +66,14 @@ struct NotMeasured {
 inline constexpr const char* kNotMeasuredReasons[] = {"question", "instruction", "formula",
                                                       "setting",  "elsewhere",   "unmeasured"};
 
+/// The scale at which a lesson speaks SI (issue #36): sliders, readouts and
+/// tables show m, m/s, kg, N and J while the world keeps working in px.
+struct LessonUnits {
+    double pxPerMetre = 100.0; ///< px per m: how many pixels stand for one metre
+    double kgPerMass = 1.0;    ///< kg per mass unit: what one of the lesson's mass units weighs
+    friend bool operator==(const LessonUnits&, const LessonUnits&) = default;
+};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -85,6 +95,8 @@ struct Lesson {
     /// Runs shown beside the live one (at most kMaxComparePanes).
     std::vector<ComparePane> compare;
     static constexpr int kMaxComparePanes = 3;
+    /// "units": shown in SI at this scale; absent, the lesson speaks pixels.
+    std::optional<LessonUnits> units;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")
     sim::Scene scene;
 };

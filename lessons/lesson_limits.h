@@ -54,6 +54,9 @@ inline constexpr Range kClaimTime{0.0, 3600.0, false, false, "s"};       ///< a 
 inline constexpr Range kClaimNumber{-1e15, 1e15, false, false, ""};     ///< a claim's stated value
 inline constexpr Range kClaimTolerance{0.0, 1e15, false, false, ""};    ///< a claim's `within`
 inline constexpr Range kPercent{0.0, 100.0, false, false, "%"};
+/// "units": the SI scale; beyond these a shown number is nothing a class reads.
+inline constexpr Range kPxPerMetre{1e-9, 1e9, false, false, "px per m"};
+inline constexpr Range kKgPerMass{1e-9, 1e9, false, false, "kg per mass unit"};
 } // namespace range
 
 namespace intrange {

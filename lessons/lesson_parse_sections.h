@@ -9,6 +9,7 @@
 #include "sim/studies/claims.h"
 #include "sim/world/scene.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,10 @@ void parseTime(Reader& r, const QJsonObject& o, sim::WorldSettings& s);
 /// "models": one object per model, the rows of its section (the custom
 /// force's formulas and constants as well).
 void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s);
+
+/// "units": {"px_per_metre": 100, "kg_per_mass": 1}, the scale of the
+/// lesson's SI mode; a key left out keeps its default (100 px = 1 m, 1 kg).
+void parseUnits(Reader& r, const QJsonObject& o, std::optional<LessonUnits>& out);
 
 /// "balls": the listed balls, each {"x": …, "y": …, …}.
 void parseBalls(Reader& r, const QJsonArray& balls, std::vector<sim::Ball>& out);

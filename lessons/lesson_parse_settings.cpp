@@ -112,6 +112,16 @@ void parseTime(Reader& r, const QJsonObject& o, sim::WorldSettings& s)
     r.seed(o, path, "seed", s.time.seed); // a whole number up to 2^64 − 1: not a row of doubles
 }
 
+void parseUnits(Reader& r, const QJsonObject& o, std::optional<LessonUnits>& out)
+{
+    const QString path = QStringLiteral("units");
+    r.checkKeys(o, path, {"px_per_metre", "kg_per_mass"});
+    LessonUnits units;
+    r.number(o, path, "px_per_metre", range::kPxPerMetre, units.pxPerMetre);
+    r.number(o, path, "kg_per_mass", range::kKgPerMass, units.kgPerMass);
+    out = units;
+}
+
 void parseModels(Reader& r, const QJsonObject& models, sim::WorldSettings& s)
 {
     const QString base = QStringLiteral("models");

@@ -144,7 +144,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict"});
+                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict", "units"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -170,6 +170,9 @@ ParseResult parseLesson(const QJsonObject& root)
     nameList(r, root, "controls", controlNames(), lesson.controls);
     nameList(r, root, "overlays", overlayNames(), lesson.overlays);
     nameList(r, root, "tools", toolNames(), lesson.tools);
+
+    if (const auto o = r.object(root, top, "units"))
+        parseUnits(r, *o, lesson.units);
 
     sim::Scene& scene = lesson.scene;
     if (const auto o = r.object(root, top, "world"))

@@ -375,6 +375,9 @@ QByteArray saveLesson(const Lesson& lesson)
     };
     if (!lesson.tools.isEmpty()) // only when listed, so a lesson without tools saves as before
         top.push_back({"tools", strings(lesson.tools, false)});
+    if (lesson.units) // only in SI, so a pixel lesson saves as before
+        top.push_back({"units", inlineObject({{"px_per_metre", num(lesson.units->pxPerMetre)},
+                                              {"kg_per_mass", num(lesson.units->kgPerMass)}})});
     if (!lesson.teacher.empty()) {
         // Only what the notes hold: an empty list or goal is left out.
         const TeacherNotes& t = lesson.teacher;

@@ -481,7 +481,9 @@ void GuiTest::opensShowcaseAndRemembersLastLesson()
         QVERIFY(gravitySource != builtIn.first());
         auto* gy = window.parameterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
         QVERIFY(gy);
-        QCOMPARE(gy->value(), window.lesson().scene.settings.gravity.g.y());
+        // Lesson 07 speaks SI at 100 px = 1 m: its 980 px/s² shows as 9.8 m/s².
+        QCOMPARE(window.lesson().scene.settings.gravity.g.y(), 980.0);
+        QCOMPARE(gy->value(), 9.8);
 
         // A file that does not load: the dialog is shown (closed here) and the lesson goes on.
         const double t = window.controller()->world().time();

@@ -14,6 +14,7 @@
 #include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/docks/trajectory_export.h"
+#include "ui/drawing/display_units.h"
 
 #include "lessons/lesson_loader.h"
 #include "sim/world/names.h"
@@ -617,7 +618,8 @@ void GuiWorkbenchTest::resetRestoresTheLessonsValues()
     QCOMPARE(window.controller()->spawn().count, window.lesson().scene.spawn.count);
     QCOMPARE(window.controller()->world().time(), 0.0);
     auto* gy = panel->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
-    QCOMPARE(gy->value(), lesson.gravity.g.y());
+    // In the units the lesson speaks (07: SI, 980 px/s² shown as 9.8 m/s²).
+    QCOMPARE(gy->value(), toShown(lesson.gravity.g.y(), QStringLiteral("px/s²")));
     QCOMPARE(panel->editor()->undoStack()->count(), 0);
 }
 
@@ -678,7 +680,7 @@ void GuiWorkbenchTest::switchingLessonsUpdatesTheDocks()
                  qPrintable(firstRow));
         // The values are the lesson's.
         auto* gy = panel->findChild<QDoubleSpinBox*>(QStringLiteral("gravityYSpin"));
-        QCOMPARE(gy->value(), lesson.scene.settings.gravity.g.y());
+        QCOMPARE(gy->value(), toShown(lesson.scene.settings.gravity.g.y(), QStringLiteral("px/s²"))); // SI in 07
         QCOMPARE(window.windowTitle(), QStringLiteral("%1 — ForceLab").arg(lesson.title));
     }
 }

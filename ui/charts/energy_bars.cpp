@@ -2,6 +2,7 @@
 
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/readable_numbers.h"
+#include "ui/drawing/display_units.h"
 
 #include "sim/world/world.h"
 
@@ -146,9 +147,11 @@ void EnergyBars::refresh()
 {
     m_redraw.stop();
     m_shown = accountOf(m_controller->world());
+    // In the view's units (ui/drawing/display_units.h): J in SI.
+    const ShownUnit unit = shownUnit(QStringLiteral("mass·px²/s²"), displayUnits());
     double lo = 0.0, hi = 0.0; // bars stand on 0
     for (int k = 0; k < kBars; ++k) {
-        const double v = m_shown.value(static_cast<Bar>(k));
+        const double v = unit.toShown(m_shown.value(static_cast<Bar>(k)));
         if (std::isfinite(v))
             lo = std::min(lo, v), hi = std::max(hi, v);
     }
@@ -156,13 +159,13 @@ void EnergyBars::refresh()
     const NiceAxis nice = niceAxis(lo, hi, ticks);
     applyNiceAxis(m_valueAxis, nice);
     m_factor = nice.factor();
-    m_valueAxis->setTitleText(tr("energy (%1mass·px²/s²)").arg(nice.factorText()));
+    m_valueAxis->setTitleText(tr("energy (%1%2)").arg(nice.factorText(), unit.text));
     // Each category says its value under its name, in the axis's units (the
     // factor is named once, in the axis title) so it fits under its bar.
     QStringList categories;
     for (int k = 0; k < kBars; ++k) {
         const Bar bar = static_cast<Bar>(k);
-        const double v = m_shown.value(bar);
+        const double v = unit.toShown(m_shown.value(bar));
         m_sets[k]->replace(k, v / m_factor);
         const QString value = bar == Bar::Lost && !m_shown.lostKnown ? tr("not counted") : humanNumber(v / m_factor, 3);
         categories << QStringLiteral("%1<br>%2").arg(barName(bar), value);

@@ -1,5 +1,6 @@
 #include "ui/charts/quantity_graph.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/readable_numbers.h"
 
@@ -396,6 +397,12 @@ void QuantityGraph::refresh()
                 theory.append(QPointF(t, *v));
         }
     }
+    // In the view's units (ui/drawing/display_units.h): m, m/s, J in SI.
+    const ShownUnit unit = shownUnit(unitOf(m_quantity), displayUnits());
+    if (unit.px != 0 || unit.mass != 0)
+        for (QList<QPointF>* points : {&measured, &theory})
+            for (QPointF& p : *points)
+                p.setY(unit.toShown(p.y()));
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const QList<QPointF>* points : {&measured, &theory})
         for (const QPointF& p : *points)
@@ -423,7 +430,7 @@ void QuantityGraph::refresh()
     m_timeAxis->setRange(start, start + span);
     const QString of = m_ball == kAllBalls ? tr("all balls") : tr("ball %1").arg(m_ball);
     m_view->chart()->setTitle(
-        tr("%1 of %2 (%3%4)").arg(quantityName(m_quantity), of, nice.factorText(), unitOf(m_quantity)));
+        tr("%1 of %2 (%3%4)").arg(quantityName(m_quantity), of, nice.factorText(), unit.text));
 }
 
 } // namespace forcelab

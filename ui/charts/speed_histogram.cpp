@@ -2,6 +2,7 @@
 
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/readable_numbers.h"
+#include "ui/drawing/display_units.h"
 
 #include "sim/world/ball_state.h"
 
@@ -160,23 +161,30 @@ void SpeedHistogram::refresh()
     m_redraw.stop();
     m_shown = compute(m_controller->world().balls());
     const Histogram& h = m_shown;
+    // Speeds in the view's units (ui/drawing/display_units.h): m/s in SI.
+    const ShownUnit unit = shownUnit(QStringLiteral("px/s"), displayUnits());
+    const double f = unit.factor();
     // The counts as a step outline: up the left edge of each bin, across, down.
     QList<QPointF> steps;
     steps.reserve(2 * h.counts.size() + 2);
     steps.append(QPointF(0.0, 0.0));
     double most = 0.0;
     for (qsizetype k = 0; k < h.counts.size(); ++k) {
-        steps.append(QPointF(k * h.binWidth, h.counts[k]));
-        steps.append(QPointF((k + 1) * h.binWidth, h.counts[k]));
+        steps.append(QPointF(k * h.binWidth * f, h.counts[k]));
+        steps.append(QPointF((k + 1) * h.binWidth * f, h.counts[k]));
         most = std::max(most, h.counts[k]);
     }
     if (!h.counts.isEmpty())
-        steps.append(QPointF(h.counts.size() * h.binWidth, 0.0));
+        steps.append(QPointF(h.counts.size() * h.binWidth * f, 0.0));
     for (const QPointF& p : h.curve)
         most = std::max(most, p.y());
     m_counts->replace(steps);
-    m_curve->replace(h.curve);
-    const double top = h.counts.size() * h.binWidth;
+    QList<QPointF> curve = h.curve;
+    for (QPointF& p : curve)
+        p.setX(p.x() * f);
+    m_curve->replace(curve);
+    m_speedAxis->setTitleText(tr("speed (%1)").arg(unit.text));
+    const double top = h.counts.size() * h.binWidth * f;
     applyNiceAxis(m_speedAxis, niceAxis(0.0, top > 0.0 ? top : 1.0));
     m_speedAxis->setRange(0.0, top > 0.0 ? top : 1.0);
     const int ticks = std::clamp(static_cast<int>(chart()->plotArea().height() / 45.0), 2, 6);
@@ -192,7 +200,8 @@ void SpeedHistogram::refresh()
             s->replace(shown);
         }
     }
-    m_countAxis->setTitleText(tr("%1balls per %2 px/s").arg(counts.factorText(), humanNumber(h.binWidth)));
+    m_countAxis->setTitleText(
+        tr("%1balls per %2 %3").arg(counts.factorText(), humanNumber(unit.toShown(h.binWidth)), unit.text));
     chart()->setTitle(tr("Speeds of %1").arg(countText(h.balls, tr("ball"), tr("balls"))));
 }
 

@@ -4,6 +4,7 @@
 #include "ui/controls/ball_commands.h"
 #include "ui/controls/readable_numbers.h"
 #include "ui/controls/settings_editor.h"
+#include "ui/drawing/display_units.h"
 
 #include "sim/world/number_text.h"
 
@@ -36,6 +37,22 @@ int BallTableModel::columnCount(const QModelIndex& parent) const
 double BallTableModel::massOf(double radius, double density)
 {
     return density * sim::sphereMass(radius);
+}
+
+void BallTableModel::unitsChanged()
+{
+    beginResetModel();
+    endResetModel();
+}
+
+QString BallTableModel::pixelUnit(int column)
+{
+    switch (column) {
+    case X: case Y: case Radius: return QStringLiteral("px");
+    case Vx: case Vy: return QStringLiteral("px/s");
+    case Mass: return QStringLiteral("mass");
+    default: return {}; // density is relative to the default ball's, charge is in its own units
+    }
 }
 
 QVariant BallTableModel::data(const QModelIndex& index, int role) const
@@ -85,6 +102,8 @@ QVariant BallTableModel::data(const QModelIndex& index, int role) const
     }
     default: return {};
     }
+    // In the view's units (SI or px); setData converts a typed value back.
+    value = shownUnit(pixelUnit(index.column()), displayUnits()).toShown(value);
     switch (role) {
     case Qt::DisplayRole: return index.column() == Index ? QString::number(i) : humanNumber(value, 5);
     // Typed over as text with every digit (a spin box would round to its decimals).
@@ -119,12 +138,12 @@ QVariant BallTableModel::headerData(int section, Qt::Orientation orientation, in
         return {};
     switch (section) {
     case Index: return tr("Ball");
-    case X: return tr("x (px)");
-    case Y: return tr("y (px)");
-    case Vx: return tr("vx (px/s)");
-    case Vy: return tr("vy (px/s)");
-    case Radius: return tr("r (px)");
-    case Mass: return tr("mass");
+    case X: return tr("x (%1)").arg(unitText(pixelUnit(X)));
+    case Y: return tr("y (%1)").arg(unitText(pixelUnit(Y)));
+    case Vx: return tr("vx (%1)").arg(unitText(pixelUnit(Vx)));
+    case Vy: return tr("vy (%1)").arg(unitText(pixelUnit(Vy)));
+    case Radius: return tr("r (%1)").arg(unitText(pixelUnit(Radius)));
+    case Mass: return displayUnits().si ? tr("mass (%1)").arg(unitText(pixelUnit(Mass))) : tr("mass");
     case Density: return tr("density");
     case Charge: return tr("charge");
     case Colour: return tr("colour");
@@ -176,12 +195,14 @@ bool BallTableModel::setData(const QModelIndex& index, const QVariant& value, in
         return m_editor->editBall(tr("Colour of ball %1").arg(i), i, ball, kBallColour);
     }
     bool ok = false;
-    const double v = value.toDouble(&ok);
-    if (!ok || !std::isfinite(v)) {
+    const double typed = value.toDouble(&ok);
+    if (!ok || !std::isfinite(typed)) {
         const QString column = headerData(index.column(), Qt::Horizontal).toString();
         emit m_editor->ballEditNote(tr("%1: \"%2\" is not a number").arg(column, value.toString().left(40)), true);
         return false;
     }
+    // Typed in the view's units: the world takes px and mass units.
+    const double v = fromShown(typed, pixelUnit(index.column()));
     const QString what = headerData(index.column(), Qt::Horizontal).toString();
     const QString text = tr("Set %1 of ball %2").arg(what, QString::number(i));
     switch (index.column()) {

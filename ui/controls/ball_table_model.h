@@ -40,9 +40,15 @@ public:
     /// i.e. density × sphereMass(radius).
     static double massOf(double radius, double density);
 
+    /// The unit of a column as the world has it ("px", "px/s", "mass"; empty
+    /// for pure numbers): the table shows it in the view's units.
+    static QString pixelUnit(int column);
+
 public slots:
     /// Reads the world again (rows added or removed: the whole table).
     void refresh();
+    /// The view's units changed (SI or px): every header and number again.
+    void unitsChanged();
 
 private:
     SimulationController* m_controller; // not owned

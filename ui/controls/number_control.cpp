@@ -158,19 +158,7 @@ NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidge
     m_slider->setMinimumWidth(90);
     m_spin = new NumberSpinBox(this);
     m_spin->setObjectName(objectName + QStringLiteral("Spin"));
-    m_spin->setRange(spec.min, spec.max);
-    if (spec.significant > 0)
-        m_spin->setSignificantDigits(spec.significant);
-    else
-        m_spin->setDecimals(spec.decimals);
-    m_spin->setSuffix(spec.suffix);
-    // A single step of about a hundredth of the slider's span.
-    const double span = spec.scale == Scale::Log ? spec.sliderMin : (spec.sliderMax - spec.sliderMin) / 100.0;
-    m_spin->setSingleStep(std::max(span, std::pow(10.0, -spec.decimals)));
-    // Wide enough for a typical value with the whole unit ("1000 px³/(mass·s²)"),
-    // so the unit is never cut; the frame and arrows take about 36 px.
-    const QString typical = QStringLiteral("-0000.000") + spec.suffix;
-    m_spin->setMinimumWidth(std::max(96, m_spin->fontMetrics().horizontalAdvance(typical) + 36));
+    applySpec();
 
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -199,6 +187,36 @@ NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidge
         emit valueEdited(v, false);
     });
     connect(m_spin, &NumberSpinBox::outOfRange, this, &NumberControl::outOfRange);
+}
+
+void NumberControl::applySpec()
+{
+    const Spec& spec = m_spec;
+    // Decimals first: the range and the value are rounded to them.
+    m_spin->setSignificantDigits(spec.significant); // 0 (fixed decimals) too, after a spec with digits
+    if (spec.significant <= 0)
+        m_spin->setDecimals(spec.decimals);
+    m_spin->setRange(spec.min, spec.max);
+    m_spin->setSuffix(spec.suffix);
+    // A single step of about a hundredth of the slider's span.
+    const double span = spec.scale == Scale::Log ? spec.sliderMin : (spec.sliderMax - spec.sliderMin) / 100.0;
+    m_spin->setSingleStep(std::max(span, std::pow(10.0, -spec.decimals)));
+    // Wide enough for a typical value with the whole unit ("1000 px³/(mass·s²)"),
+    // so the unit is never cut; the frame and arrows take about 36 px.
+    const QString typical = QStringLiteral("-0000.000") + spec.suffix;
+    m_spin->setMinimumWidth(std::max(96, m_spin->fontMetrics().horizontalAdvance(typical) + 36));
+}
+
+void NumberControl::setSpec(const Spec& spec, double value)
+{
+    m_updating = true;
+    {
+        const QSignalBlocker block(m_spin);
+        m_spec = spec;
+        applySpec();
+    }
+    m_updating = false;
+    setValue(value);
 }
 
 void NumberControl::setValue(double value)

@@ -80,6 +80,11 @@ public:
 
     NumberControl(const QString& objectName, const Spec& spec, QWidget* parent = nullptr);
 
+    /// A new range, slider span, digits and unit (the units shown changed,
+    /// issue #36); shows `value` in the new unit without emitting anything.
+    void setSpec(const Spec& spec, double value);
+    const Spec& spec() const { return m_spec; }
+
     /// Shows `value` without emitting anything.
     void setValue(double value);
     double value() const;
@@ -101,6 +106,8 @@ signals:
     void dragStarted();
 
 private:
+    /// Applies m_spec to the spin box (range, digits, unit, step, width).
+    void applySpec();
     /// Rounds a slider value to what the spin box shows, so the two agree.
     double rounded(double value) const;
 

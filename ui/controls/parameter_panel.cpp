@@ -3,6 +3,7 @@
 #include "ui/controls/number_control.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
+#include "ui/drawing/display_units.h"
 
 #include "lessons/lesson_controls.h"
 #include "sim/world/names.h"
@@ -24,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace forcelab {
 
@@ -80,13 +82,8 @@ ParameterPanel::ParameterPanel(SimulationController* controller, SettingsEditor*
 
     addModelSection(QStringLiteral("drag"), tr("Drag"));
     addParameter("models.drag.law");
-    NumberControl* k = addParameter<NumberControl>("models.drag.k");
+    addParameter("models.drag.k"); // its unit follows the law (addParameterWidget)
     addParameter("models.drag.scale");
-    // The unit of k follows the law: a = -k v (1/s) or a = -k |v| v (1/px).
-    m_refreshers.push_back([this, k] {
-        const bool linear = m_controller->world().settings().drag.law == sim::DragLaw::Linear;
-        k->spinBox()->setSuffix(linear ? QStringLiteral(" 1/s") : QStringLiteral(" 1/px"));
-    });
 
     addSection(QStringLiteral("wind"), tr("Wind"));
     for (const char* key : {"models.wind.mode", "models.wind.strength", "models.wind.scale", "models.wind.smoothed_step",
@@ -448,22 +445,29 @@ QWidget* ParameterPanel::addParameterWidget(std::string_view key)
     case sim::ParameterType::Integer:
         break;
     }
-    // dt reads better in ms; everything else in the row's own unit.
+    // dt reads better in ms; everything else in the row's own unit, or in
+    // SI (ui/drawing/display_units.h) when the view shows SI.
     const bool ms = key == "time.dt";
-    const double toShown = ms ? 1e3 : 1.0;
     Number spec;
-    spec.min = p.lo * toShown;
-    spec.max = p.hi * toShown;
-    spec.sliderMin = p.sliderLo * toShown;
-    spec.sliderMax = p.sliderHi * toShown;
+    spec.lo = p.lo;
+    spec.hi = p.hi;
+    spec.sliderLo = p.sliderLo;
+    spec.sliderHi = p.sliderHi;
     spec.log = p.scale == sim::SliderScale::Log;
-    // Whole numbers; four significant figures across decades; otherwise
-    // decimals that suit the slider's span.
-    spec.decimals = p.type == sim::ParameterType::Integer ? 0 : spec.log ? 4 : p.sliderHi - p.sliderLo <= 1.0 ? 3 : 1;
-    spec.significant = p.type == sim::ParameterType::Number && spec.log ? 4 : 0;
-    spec.suffix = ms ? QStringLiteral(" ms") : p.unit.empty() ? QString() : QLatin1Char(' ') + qs(p.unit);
-    spec.toShown = toShown;
-    const bool whole = p.type == sim::ParameterType::Integer;
+    spec.whole = p.type == sim::ParameterType::Integer;
+    spec.extraFactor = ms ? 1e3 : 1.0;
+    spec.fixedSuffix = ms ? QStringLiteral(" ms") : QString();
+    if (key == "models.drag.k") {
+        // The unit of k follows the law: a = −k v (1/s) or a = −k |v| v (1/px).
+        spec.pixelUnit = [this] {
+            return m_controller->world().settings().drag.law == sim::DragLaw::Linear ? QStringLiteral("1/s")
+                                                                                      : QStringLiteral("1/px");
+        };
+    } else {
+        const QString unit = qs(p.unit);
+        spec.pixelUnit = [unit] { return unit; };
+    }
+    const bool whole = spec.whole;
     NumberControl* number = addNumber(control, stem, label, spec, get, [&p, whole](Settings& s, double v) {
         p.set(s, whole ? static_cast<double>(std::lround(v)) : v);
     });
@@ -471,34 +475,64 @@ QWidget* ParameterPanel::addParameterWidget(std::string_view key)
     return number;
 }
 
+NumberControl::Spec ParameterPanel::controlSpec(const Number& spec, const ShownUnit& unit)
+{
+    const double k = spec.extraFactor;
+    const bool converted = unit.px != 0 || unit.mass != 0;
+    NumberControl::Spec s;
+    s.min = unit.toShown(spec.lo) * k;
+    s.max = unit.toShown(spec.hi) * k;
+    s.sliderMin = unit.toShown(spec.sliderLo) * k;
+    s.sliderMax = unit.toShown(spec.sliderHi) * k;
+    s.scale = spec.log ? NumberControl::Scale::Log : NumberControl::Scale::Linear;
+    // Whole numbers; four significant figures across decades or in SI (the
+    // scale makes any number of decimals wrong for some lesson); otherwise
+    // decimals that suit the slider's span.
+    s.decimals = spec.whole ? 0 : spec.log ? 4 : spec.sliderHi - spec.sliderLo <= 1.0 ? 3 : 1;
+    s.significant = !spec.whole && (spec.log || converted) ? 4 : 0;
+    s.suffix = !spec.fixedSuffix.isEmpty() ? spec.fixedSuffix
+               : unit.text.isEmpty()       ? QString()
+                                           : QLatin1Char(' ') + unit.text;
+    return s;
+}
+
 NumberControl* ParameterPanel::addNumber(const QString& key, const QString& objectName, const QString& label,
                                          const Number& spec, std::function<double(const Settings&)> get,
                                          std::function<void(Settings&, double)> set)
 {
-    NumberControl::Spec s;
-    s.min = spec.min;
-    s.max = spec.max;
-    s.sliderMin = spec.sliderMin;
-    s.sliderMax = spec.sliderMax;
-    s.scale = spec.log ? NumberControl::Scale::Log : NumberControl::Scale::Linear;
-    s.decimals = spec.decimals;
-    s.significant = spec.significant;
-    s.suffix = spec.suffix;
+    // The unit the control shows now; the refresher changes it (and the
+    // control's range and suffix) when the view's units or drag's law change.
+    auto unit = std::make_shared<ShownUnit>(shownUnit(spec.pixelUnit(), displayUnits()));
+    const NumberControl::Spec s = controlSpec(spec, *unit);
     auto* control = new NumberControl(objectName, s, currentSection().box);
-    const double toShown = spec.toShown;
-    auto apply = [this, key, set, toShown](double shown, bool dragging) {
-        edit(key, [&](Settings& st) { set(st, shown / toShown); }, dragging);
+    const double k = spec.extraFactor;
+    // A shown value goes back to px (and mass units) before it reaches the world.
+    auto apply = [this, key, set, unit, k](double shown, bool dragging) {
+        edit(key, [&](Settings& st) { set(st, unit->fromShown(shown / k)); }, dragging);
     };
     connect(control, &NumberControl::valueEdited, this, apply);
     // Typed outside the range: passed on, so the world refuses it with its message.
     connect(control, &NumberControl::outOfRange, this, [apply](double shown) { apply(shown, false); });
     connect(control, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
-    m_refreshers.push_back([this, control, get, toShown] {
-        control->setValue(get(m_controller->world().settings()) * toShown);
+    auto rangeTip = [](const NumberControl::Spec& shown) {
+        return tr("%1 to %2%3").arg(QLocale().toString(shown.min, 'g', 4), QLocale().toString(shown.max, 'g', 4),
+                                    shown.suffix);
+    };
+    QFormLayout* form = currentSection().form;
+    m_refreshers.push_back([this, control, get, unit, spec, k, form, rangeTip] {
+        const double value = get(m_controller->world().settings());
+        const ShownUnit now = shownUnit(spec.pixelUnit(), displayUnits());
+        if (now.text != unit->text || now.factor() != unit->factor()) {
+            *unit = now;
+            const NumberControl::Spec shown = controlSpec(spec, now);
+            control->setSpec(shown, now.toShown(value) * k);
+            if (auto* text = qobject_cast<QLabel*>(form->labelForField(control)))
+                text->setToolTip(rangeTip(shown));
+            return;
+        }
+        control->setValue(unit->toShown(value) * k);
     });
-    addRow(key, label, control,
-           tr("%1 to %2%3").arg(QLocale().toString(spec.min, 'g', 4), QLocale().toString(spec.max, 'g', 4),
-                                spec.suffix));
+    addRow(key, label, control, rangeTip(s));
     return control;
 }
 

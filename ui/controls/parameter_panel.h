@@ -10,6 +10,9 @@
 // pick the rows shown first; "Show all" adds every other row after them.
 // Every widget has an objectName (e.g. "gravityYSpin", "wallModelCombo").
 
+#include "ui/controls/number_control.h"
+#include "ui/drawing/display_units.h"
+
 #include "sim/world/scene.h"
 #include "sim/world/world_settings.h"
 
@@ -32,7 +35,6 @@ class QVBoxLayout;
 
 namespace forcelab {
 
-class NumberControl;
 class SettingsEditor;
 class SimulationController;
 
@@ -85,18 +87,21 @@ private:
         QGroupBox* box = nullptr;
         QFormLayout* form = nullptr;
     };
-    /// A number in the shown unit; `toShown` converts the stored value (e.g. s → ms).
+    /// A number row, in the world's units (px, mass units, s): the control
+    /// shows it in the units of the view (ui/drawing/display_units.h).
     struct Number {
-        double min = 0.0;
-        double max = 1.0;
-        double sliderMin = 0.0;
-        double sliderMax = 1.0;
+        double lo = 0.0;
+        double hi = 1.0;
+        double sliderLo = 0.0;
+        double sliderHi = 1.0;
         bool log = false;
-        int decimals = 2;
-        int significant = 0;
-        QString suffix;
-        double toShown = 1.0;
+        bool whole = false;
+        std::function<QString()> pixelUnit; ///< the row's unit as the world has it ("px/s²")
+        double extraFactor = 1.0; ///< on top of the units' conversion (dt: s → ms)
+        QString fixedSuffix;      ///< instead of the shown unit (dt: " ms")
     };
+    /// The control's range, digits and suffix for `spec` shown in `unit`.
+    static NumberControl::Spec controlSpec(const Number& spec, const ShownUnit& unit);
 
     QGroupBox* addSection(const QString& key, const QString& title, std::function<bool(const Settings&)> enabled = {},
                           std::function<void(Settings&, bool)> setEnabled = {});

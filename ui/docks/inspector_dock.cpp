@@ -2,6 +2,8 @@
 
 #include "ui/controls/readable_numbers.h"
 #include "ui/canvas/simulation_controller.h"
+#include "ui/drawing/display_units.h"
+#include "ui/drawing/human_number.h"
 
 #include "sim/forces/force_model.h"
 #include "sim/world/world.h"
@@ -19,11 +21,17 @@ namespace forcelab {
 
 namespace {
 
-// "(x, y) unit", and "|v| = size" when `symbol` is given.
-QString vec(const sim::Vec2& v, const QString& unit, const QString& symbol = {})
+// "(x, y) unit", and "|v| = size" when `symbol` is given; `pixelUnit` as
+// the world has it, shown in the view's units (ui/drawing/display_units.h).
+QString vec(const sim::Vec2& v, const QString& pixelUnit, const QString& symbol = {})
 {
-    const QString xy = QStringLiteral("(%1, %2) %3").arg(v.x(), 0, 'f', 1).arg(v.y(), 0, 'f', 1).arg(unit);
-    return symbol.isEmpty() ? xy : xy + QStringLiteral("   |%1| = %2").arg(symbol).arg(v.norm(), 0, 'f', 1);
+    const ShownUnit u = shownUnit(pixelUnit, displayUnits());
+    // In px one decimal; in SI four significant digits (0.25 m is 25 px).
+    auto num = [&u](double x) {
+        return u.px != 0 || u.mass != 0 ? humanNumber(u.toShown(x), 4) : QString::number(x, 'f', 1);
+    };
+    const QString xy = QStringLiteral("(%1, %2) %3").arg(num(v.x()), num(v.y()), u.text);
+    return symbol.isEmpty() ? xy : xy + QStringLiteral("   |%1| = %2").arg(symbol, num(v.norm()));
 }
 
 QLabel* valueLabel(const QString& name, QWidget* parent)
@@ -148,15 +156,24 @@ void InspectorDock::refresh()
     m_positionLabel->setText(vec(r.position, QStringLiteral("px")));
     m_velocityLabel->setText(vec(r.velocity, QStringLiteral("px/s"), QStringLiteral("v")));
     m_accelerationLabel->setText(vec(r.acceleration, QStringLiteral("px/s²"), QStringLiteral("a")));
-    m_massLabel->setText(tr("m = %1, r = %2 px").arg(r.mass, 0, 'g', 5).arg(r.radius, 0, 'f', 2));
+    const ShownUnit massUnit = shownUnit(QStringLiteral("mass"), displayUnits());
+    const ShownUnit length = shownUnit(QStringLiteral("px"), displayUnits());
+    if (massUnit.mass != 0)
+        m_massLabel->setText(tr("m = %1 %2, r = %3 %4")
+                                 .arg(humanNumber(massUnit.toShown(r.mass), 5), massUnit.text,
+                                      humanNumber(length.toShown(r.radius), 4), length.text));
+    else
+        m_massLabel->setText(tr("m = %1, r = %2 px").arg(r.mass, 0, 'g', 5).arg(r.radius, 0, 'f', 2));
+    const ShownUnit forceUnit = shownUnit(QStringLiteral("mass·px/s²"), displayUnits());
 
     QString html = QStringLiteral("<b>%1</b><table cellspacing='0' cellpadding='2'>").arg(tr("Forces F = m a"));
     // Four digits of the largest force in the table: a component far below
     // that is rounding noise (1.4e-09 next to 2000) and shows as 0.
-    double scale = r.totalForce.cwiseAbs().maxCoeff();
+    double scale = forceUnit.toShown(r.totalForce.cwiseAbs().maxCoeff());
     for (const ModelForce& f : r.forces)
-        scale = std::max(scale, f.force.cwiseAbs().maxCoeff());
-    auto row = [&html, scale](const QString& name, const sim::Vec2& f, bool bold) {
+        scale = std::max(scale, forceUnit.toShown(f.force.cwiseAbs().maxCoeff()));
+    auto row = [&html, scale, &forceUnit](const QString& name, const sim::Vec2& pixelForce, bool bold) {
+        const sim::Vec2 f(forceUnit.toShown(pixelForce.x()), forceUnit.toShown(pixelForce.y()));
         const QString b = bold ? QStringLiteral("<b>") : QString(), e = bold ? QStringLiteral("</b>") : QString();
         html += QStringLiteral("<tr><td>%1%2%3</td><td align='right'>&nbsp;%1%4%3</td><td align='right'>&nbsp;%1%5%3</td></tr>")
                     .arg(b, name.toHtmlEscaped(), e)
@@ -168,7 +185,7 @@ void InspectorDock::refresh()
     if (r.forces.empty())
         html += QStringLiteral("<tr><td colspan='3'>%1</td></tr>").arg(tr("no force acts"));
     row(tr("total"), r.totalForce, true);
-    html += QStringLiteral("</table><span style='color:#5a6270'>%1</span>").arg(tr("in mass·px/s²"));
+    html += QStringLiteral("</table><span style='color:#5a6270'>%1</span>").arg(tr("in %1").arg(forceUnit.text));
     m_forcesLabel->setText(html);
     m_pages->setCurrentIndex(1);
 }

@@ -1,5 +1,6 @@
 #include "ui/docks/plots_dock.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/charts/energy_bars.h"
 #include "ui/charts/quantity_graph.h"
 #include "ui/charts/speed_histogram.h"
@@ -265,18 +266,27 @@ void PlotsDock::refreshCharts()
     }
 
     auto points = [this](auto value) { return decimated(m_samples, 0, kMaxPoints, value); };
-    const QList<QPointF> kinetic = points([](const Sample& s) { return s.kinetic; });
-    const QList<QPointF> potential = points([](const Sample& s) { return s.potential; });
-    const QList<QPointF> total = points([](const Sample& s) { return s.total; });
-    m_energyFactor = showOnAxis(m_energyY, tr("Energy"), tr("mass·px²/s²"),
+    // In the view's units (ui/drawing/display_units.h): J and kg·m/s in SI.
+    const ShownUnit energyUnit = shownUnit(QStringLiteral("mass·px²/s²"), displayUnits());
+    const ShownUnit momentumUnit = shownUnit(QStringLiteral("mass·px/s"), displayUnits());
+    auto shown = [](const ShownUnit& unit, QList<QPointF> list) {
+        if (unit.px != 0 || unit.mass != 0)
+            for (QPointF& q : list)
+                q.setY(unit.toShown(q.y()));
+        return list;
+    };
+    const QList<QPointF> kinetic = shown(energyUnit, points([](const Sample& s) { return s.kinetic; }));
+    const QList<QPointF> potential = shown(energyUnit, points([](const Sample& s) { return s.potential; }));
+    const QList<QPointF> total = shown(energyUnit, points([](const Sample& s) { return s.total; }));
+    m_energyFactor = showOnAxis(m_energyY, tr("Energy"), energyUnit.text,
                                             {{m_kinetic, kinetic}, {m_potential, potential}, {m_total, total}}, false,
                                 ticksFor(m_kinetic));
 
-    const QList<QPointF> p = points([](const Sample& s) { return s.p; });
-    const QList<QPointF> px = points([](const Sample& s) { return s.px; });
-    const QList<QPointF> py = points([](const Sample& s) { return s.py; });
-    m_momentumFactor =
-        showOnAxis(m_momentumY, tr("Momentum"), tr("mass·px/s"), {{m_p, p}, {m_px, px}, {m_py, py}}, false, ticksFor(m_p));
+    const QList<QPointF> p = shown(momentumUnit, points([](const Sample& s) { return s.p; }));
+    const QList<QPointF> px = shown(momentumUnit, points([](const Sample& s) { return s.px; }));
+    const QList<QPointF> py = shown(momentumUnit, points([](const Sample& s) { return s.py; }));
+    m_momentumFactor = showOnAxis(m_momentumY, tr("Momentum"), momentumUnit.text, {{m_p, p}, {m_px, px}, {m_py, py}},
+                                  false, ticksFor(m_p));
 
     const QList<QPointF> cost = points([](const Sample& s) { return s.stepMicros; });
     m_costFactor = showOnAxis(m_costY, tr("Computer time per step"), tr("µs"), {{m_cost, cost}}, true, ticksFor(m_cost));

@@ -9,8 +9,12 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
 
 namespace forcelab {
 
@@ -117,7 +121,20 @@ void StopwatchDock::setEvent(sim::EventKind kind, int ball, double line)
 {
     m_event->setCurrentIndex(static_cast<int>(kind));
     m_ball->setValue(ball);
-    m_line->setValue(line);
+    m_line->setValue(m_lineUnit.toShown(line));
+}
+
+void StopwatchDock::unitsChanged()
+{
+    const double px = m_lineUnit.fromShown(m_line->value());
+    m_lineUnit = shownUnit(QStringLiteral("px"), displayUnits());
+    // A tenth of a px either way: 0.001 m at 100 px = 1 m.
+    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(0.1 * m_lineUnit.factor()) - 1e-9)), 1, 6);
+    const QSignalBlocker block(m_line);
+    m_line->setDecimals(decimals);
+    m_line->setRange(m_lineUnit.toShown(-1e6), m_lineUnit.toShown(1e6));
+    m_line->setSuffix(QLatin1Char(' ') + m_lineUnit.text);
+    m_line->setValue(m_lineUnit.toShown(px));
 }
 
 void StopwatchDock::setBall(int ball)
@@ -156,7 +173,7 @@ sim::EventSpec StopwatchDock::spec() const
     sim::EventSpec s;
     s.kind = static_cast<sim::EventKind>(m_event->currentIndex());
     s.ball = m_ball->value();
-    s.value = m_line->value();
+    s.value = m_lineUnit.fromShown(m_line->value()); // the world's px
     // A full turn round what the ball circles: the spring's anchor or the
     // attracting point, or else the middle of the box.
     const sim::WorldSettings& w = m_controller->world().settings();

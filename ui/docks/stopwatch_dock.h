@@ -6,6 +6,8 @@
 // event ("time ten swings"). Event times come from sim::EventWatch, which
 // finds them inside a step, so the watch is not limited to whole frames.
 
+#include "ui/drawing/display_units.h"
+
 #include "sim/world/events.h"
 
 #include <QDockWidget>
@@ -42,6 +44,7 @@ public:
     enum class StopOn { Hand, Events };
     void setStartOn(StartOn on);
     void setStopOn(StopOn on, int events = 1);
+    /// `line` in px, whatever the units shown.
     void setEvent(sim::EventKind kind, int ball, double line = 0.0);
 
 public slots:
@@ -50,6 +53,8 @@ public slots:
     void reset();
     /// The ball the events are about (the canvas's selection).
     void setBall(int ball);
+    /// The view's units changed: the line's position is shown in m or px.
+    void unitsChanged();
 
 private:
     void onStepped();
@@ -70,6 +75,7 @@ private:
     QComboBox* m_event = nullptr;
     QSpinBox* m_ball = nullptr;
     QDoubleSpinBox* m_line = nullptr;
+    ShownUnit m_lineUnit{QStringLiteral("px")}; // what m_line shows: px, or m in SI
     QPushButton* m_startStop = nullptr;
     QPushButton* m_reset = nullptr;
     QLabel* m_laps = nullptr;

@@ -5,6 +5,7 @@
 
 #include "world_painter.h"
 
+#include "display_units.h"
 #include "human_number.h"
 #include "panel_layout.h"
 #include "overlays/overlay_table.h"
@@ -196,34 +197,54 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
                                       ReadoutShape shape)
 {
     // Positions and speeds with one decimal, from 10⁵ on with a power of
-    // ten (a stiff spring's −1.5 × 10⁶ px/s², never −1e+06).
+    // ten (a stiff spring's −1.5 × 10⁶ px/s², never −1e+06); in SI
+    // (ui/drawing/display_units.h) with the decimals of a tenth of a px
+    // (three at 100 px = 1 m), so the columns keep their width.
+    const ShownUnit lu = shownUnit(QStringLiteral("px"), displayUnits());
+    const ShownUnit vu = shownUnit(QStringLiteral("px/s"), displayUnits());
+    const ShownUnit au = shownUnit(QStringLiteral("px/s²"), displayUnits());
+    auto shown = [](const ShownUnit& u, double value) {
+        if (u.px == 0 && u.mass == 0)
+            return oneDecimal(value);
+        const double v = u.toShown(value);
+        if (!std::isfinite(v) || std::abs(v) >= 1e5)
+            return humanNumber(v, 4);
+        const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(0.1 * u.factor()) - 1e-9)), 0, 6);
+        QString text = QString::number(v, 'f', decimals);
+        if (text.toDouble() == 0.0)
+            text = QString::number(0.0, 'f', decimals); // no "−0.000"
+        text.replace(QLatin1Char('-'), QChar(0x2212));
+        return text;
+    };
+    const QString L = lu.text, V = vu.text, A = au.text;
     if (shape == ReadoutShape::Wide) {
         // Two long lines, for a strip above the box: it costs the box less height.
-        auto w = [](double value) { return oneDecimal(value).rightJustified(8); };
+        auto w = [&shown](const ShownUnit& u, double value) { return shown(u, value).rightJustified(8); };
         return {
             QStringLiteral("ball %1").arg(i).leftJustified(12) +
-                QStringLiteral("x %1  y %2 px    vx %3  vy %4 px/s").arg(w(x.x()), w(x.y()), w(v.x()), w(v.y())),
+                QStringLiteral("x %1  y %2 %3    vx %4  vy %5 %6")
+                    .arg(w(lu, x.x()), w(lu, x.y()), L, w(vu, v.x()), w(vu, v.y()), V),
             QStringLiteral("t %1 s").arg(t, 0, 'f', 3).leftJustified(12) +
-                QStringLiteral("ax %1  ay %2 px/s²  speed %3 px/s").arg(w(a.x()), w(a.y()), w(v.norm())),
+                QStringLiteral("ax %1  ay %2 %3  speed %4 %5").arg(w(au, a.x()), w(au, a.y()), A, w(vu, v.norm()), V),
         };
     }
     if (shape == ReadoutShape::Short) {
         // x and y side by side.
         return {
             QStringLiteral("ball %1").arg(i), // the stage's clock line above has the time
-            QStringLiteral("x %1  y %2 px").arg(oneDecimal(x.x()), oneDecimal(x.y())),
-            QStringLiteral("v (%1, %2) px/s").arg(oneDecimal(v.x()), oneDecimal(v.y())),
-            QStringLiteral("a (%1, %2) px/s²").arg(oneDecimal(a.x()), oneDecimal(a.y())),
-            QStringLiteral("speed %1 px/s").arg(oneDecimal(v.norm())),
+            QStringLiteral("x %1  y %2 %3").arg(shown(lu, x.x()), shown(lu, x.y()), L),
+            QStringLiteral("v (%1, %2) %3").arg(shown(vu, v.x()), shown(vu, v.y()), V),
+            QStringLiteral("a (%1, %2) %3").arg(shown(au, a.x()), shown(au, a.y()), A),
+            QStringLiteral("speed %1 %2").arg(shown(vu, v.norm()), V),
         };
     }
-    auto num = [](double value) { return oneDecimal(value).rightJustified(9); };
+    auto num = [&shown](const ShownUnit& u, double value) { return shown(u, value).rightJustified(9); };
     return {
         QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
-        QStringLiteral("position %1%2  px").arg(num(x.x()), num(x.y())),
-        QStringLiteral("velocity %1%2  px/s").arg(num(v.x()), num(v.y())),
-        QStringLiteral("accel.   %1%2  px/s²").arg(num(a.x()), num(a.y())),
-        QStringLiteral("speed    %1 px/s   t = %2 s").arg(num(v.norm())).arg(t, 0, 'f', 3),
+        QStringLiteral("position %1%2  %3").arg(num(lu, x.x()), num(lu, x.y()), L),
+        QStringLiteral("velocity %1%2  %3").arg(num(vu, v.x()), num(vu, v.y()), V),
+        QStringLiteral("accel.   %1%2  %3").arg(num(au, a.x()), num(au, a.y()), A),
+        QStringLiteral("speed    %1 %2   t = %3 s").arg(num(vu, v.norm()), V).arg(t, 0, 'f', 3),
     };
 }
 
@@ -251,8 +272,16 @@ struct TotalsNumbers {
     QString kinetic, potential, total, px, py;
 };
 
-TotalsNumbers totalsNumbers(const sim::Energy& e, const sim::Vec2& p, double momentumScale)
+TotalsNumbers totalsNumbers(const sim::Energy& pixelEnergy, const sim::Vec2& pixelMomentum, double momentumScale)
 {
+    // In the view's units (SI: J and kg·m/s).
+    const ShownUnit eu = shownUnit(WorldPainter::kEnergyUnit, displayUnits());
+    const ShownUnit pu = shownUnit(WorldPainter::kMomentumUnit, displayUnits());
+    sim::Energy e = pixelEnergy;
+    e.kinetic = eu.toShown(e.kinetic);
+    e.potential = eu.toShown(e.potential);
+    const sim::Vec2 p(pu.toShown(pixelMomentum.x()), pu.toShown(pixelMomentum.y()));
+    momentumScale = pu.toShown(momentumScale);
     const double energyScale = std::max(std::abs(e.kinetic), std::abs(e.potential));
     const double pScale = std::max(momentumScale, p.norm());
     return {rounded(e.kinetic, energyScale), rounded(e.potential, energyScale), rounded(e.total(), energyScale),
@@ -267,17 +296,17 @@ QStringList WorldPainter::totalsText(const sim::Energy& e, const sim::Vec2& m, b
     if (wide) {
         // Short lines beside the momenta inset, which is taller than three of them.
         return {
-            QStringLiteral("energy in %1: total %2").arg(kEnergyUnit, n.total),
+            QStringLiteral("energy in %1: total %2").arg(unitText(kEnergyUnit), n.total),
             QStringLiteral("  kinetic %1  potential %2").arg(n.kinetic, n.potential),
-            QStringLiteral("momentum (%1, %2) %3").arg(n.px, n.py, kMomentumUnit),
+            QStringLiteral("momentum (%1, %2) %3").arg(n.px, n.py, unitText(kMomentumUnit)),
         };
     }
     return {
-        QStringLiteral("energy in %1").arg(kEnergyUnit),
+        QStringLiteral("energy in %1").arg(unitText(kEnergyUnit)),
         QStringLiteral("  kinetic   %1").arg(n.kinetic),
         QStringLiteral("  potential %1").arg(n.potential),
         QStringLiteral("  total     %1").arg(n.total),
-        QStringLiteral("momentum in %1").arg(kMomentumUnit),
+        QStringLiteral("momentum in %1").arg(unitText(kMomentumUnit)),
         QStringLiteral("  (%1, %2)").arg(n.px, n.py),
     };
 }
@@ -288,9 +317,9 @@ QStringList WorldPainter::stageTotalsText(const sim::Energy& e, const sim::Vec2&
     // text columns, a group (a head line and the indented lines under it)
     // never split. In a column the momentum's x and y get a line each.
     const TotalsNumbers n = totalsNumbers(e, p, momentumScale);
-    QStringList lines{QStringLiteral("energy (%1)").arg(kEnergyUnit), QStringLiteral("  kinetic %1").arg(n.kinetic),
+    QStringList lines{QStringLiteral("energy (%1)").arg(unitText(kEnergyUnit)), QStringLiteral("  kinetic %1").arg(n.kinetic),
                       QStringLiteral("  potential %1").arg(n.potential), QStringLiteral("  total %1").arg(n.total),
-                      QStringLiteral("momentum (%1)").arg(kMomentumUnit)};
+                      QStringLiteral("momentum (%1)").arg(unitText(kMomentumUnit))};
     if (column)
         lines << QStringLiteral("  x %1").arg(n.px) << QStringLiteral("  y %1").arg(n.py);
     else

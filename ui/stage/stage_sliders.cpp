@@ -1,5 +1,6 @@
 #include "ui/stage/stage_sliders.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/controls/number_control.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/canvas/simulation_controller.h"
@@ -195,8 +196,10 @@ void StageSliders::refresh()
         if (s.slider) {
             if (!s.slider->isSliderDown())
                 s.slider->setValue(value);
-            unit = s.parameter->unit.empty() ? QString() : QStringLiteral(" ") + qs(s.parameter->unit);
-            shown = QString::number(value, 'g', 4);
+            // The slider moves in px; its label speaks the view's units (SI or px).
+            const ShownUnit u = shownUnit(qs(s.parameter->unit), displayUnits());
+            unit = u.text.isEmpty() ? QString() : QStringLiteral(" ") + u.text;
+            shown = QString::number(u.toShown(value), 'g', 4);
         } else if (s.toggle) {
             const QSignalBlocker block(s.toggle);
             s.toggle->setChecked(value != 0.0);

@@ -112,6 +112,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     createBallActions();
     createCameraActions();
     createFileActions();
+    createUnitActions();
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
     // Escape leaves the stage view.
@@ -130,7 +131,13 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_canvas->setFocus();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The units are the application's (the painters read them); the window
+    // that set them takes its choice along, so a panel or a picture made
+    // after it (a test, the next window) starts in pixels.
+    forcelab::setDisplayUnits({});
+}
 
 void MainWindow::createDocks()
 {
@@ -428,6 +435,11 @@ bool MainWindow::setLesson(const Lesson& lesson)
                                           : tr("%1 — ForceLab").arg(lessons::markupToPlainText(lesson.title)));
     m_lessonsDock->setCurrentLesson(lesson);
     m_parameters->setLessonControls(lesson.controls);
+    // The lesson's units; without any, pixels (the programming stages).
+    DisplayUnits units;
+    if (lesson.units)
+        units = {.si = true, .pxPerMetre = lesson.units->pxPerMetre, .kgPerMass = lesson.units->kgPerMass};
+    setUnits(units);
     // Undo steps belong to the lesson they were made in.
     m_editor->undoStack()->clear();
     // The keyboard goes to the stage, not to whatever field had it in the

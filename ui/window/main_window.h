@@ -7,6 +7,7 @@
 
 #include "lessons/lesson.h"
 #include "lessons/lesson_derive.h"
+#include "ui/drawing/display_units.h"
 #include "ui/drawing/world_painter.h"
 
 #include <QElapsedTimer>
@@ -86,6 +87,9 @@ public:
     /// stage a panel floating over it; on the stage again, hides it.
     void showTool(const QString& name);
     double textScale() const { return m_textScale; }
+    /// The units every panel, readout and table shows (View → Units): pixels,
+    /// or SI at a scale; a lesson's `units` set them when it opens.
+    void setUnits(const DisplayUnits& units);
 
     /// Shows the Balls table (the dock, or under the box in the stage view)
     /// with ball `index` selected (−1: none), its keyboard focus in the table.
@@ -142,6 +146,10 @@ private:
     void createTimeActions();
     void createCameraActions();
     void createFileActions();
+    /// View → Units: Pixels, SI and the SI scale.
+    void createUnitActions();
+    /// Asks for the SI scale (px per m, kg per mass unit) and applies it in SI.
+    void askUnitScale();
     void createMenus();
     void createToolBars();
     void createDocks();
@@ -207,6 +215,10 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
     QAction* m_themeAction = nullptr;
+    QAction* m_pixelUnitsAction = nullptr; // View → Units, one of the two checked
+    QAction* m_siUnitsAction = nullptr;
+    QAction* m_unitScaleAction = nullptr;
+    QMenu* m_unitsMenu = nullptr;
     QMenu* m_toolsMenu = nullptr; // the lesson's tools, keys 1, 2, …
     QAction* m_largerTextAction = nullptr;
     QAction* m_smallerTextAction = nullptr;

@@ -18,17 +18,29 @@
 #include "ui/docks/lessons_dock.h"
 #include "ui/controls/parameter_panel.h"
 #include "ui/docks/plots_dock.h"
+#include "ui/charts/energy_bars.h"
+#include "ui/charts/quantity_graph.h"
+#include "ui/charts/speed_histogram.h"
 #include "ui/docks/predict_dock.h"
 #include "ui/docks/stopwatch_dock.h"
 #include "ui/docks/force_editor_dock.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/window/theme.h"
 #include "ui/controls/timeline_bar.h"
+#include "ui/controls/ball_table.h"
+#include "ui/controls/ball_table_model.h"
+#include "ui/drawing/human_number.h"
+#include "ui/stage/stage_sliders.h"
 #include "ui/docks/trajectory_export.h"
 
 #include "lessons/lesson_loader.h"
 
 #include <QAction>
+#include <QActionGroup>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -376,6 +388,94 @@ void MainWindow::createFileActions()
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::about);
 }
 
+void MainWindow::createUnitActions()
+{
+    // Pixels for the programming stages; SI (m, m/s, kg, N, J) for physics,
+    // at a scale a lesson or the teacher sets. Only what is shown changes.
+    auto* group = new QActionGroup(this);
+    m_pixelUnitsAction = new QAction(tr("&Pixels"), group);
+    m_pixelUnitsAction->setObjectName(QStringLiteral("pixelUnitsAction"));
+    m_pixelUnitsAction->setCheckable(true);
+    m_pixelUnitsAction->setChecked(true);
+    m_pixelUnitsAction->setStatusTip(tr("Show px, px/s and mass units, as the program computes them"));
+    m_siUnitsAction = new QAction(tr("&SI (m, kg, N, J)"), group);
+    m_siUnitsAction->setObjectName(QStringLiteral("siUnitsAction"));
+    m_siUnitsAction->setCheckable(true);
+    m_siUnitsAction->setStatusTip(tr("Show metres, kilograms, newtons and joules at the scale set below"));
+    connect(m_pixelUnitsAction, &QAction::triggered, this, [this] {
+        DisplayUnits units = displayUnits();
+        units.si = false;
+        setUnits(units);
+    });
+    connect(m_siUnitsAction, &QAction::triggered, this, [this] {
+        DisplayUnits units = displayUnits();
+        units.si = true;
+        setUnits(units);
+    });
+    m_unitScaleAction = new QAction(this);
+    m_unitScaleAction->setObjectName(QStringLiteral("unitScaleAction"));
+    m_unitScaleAction->setStatusTip(tr("How many pixels make a metre, and how many kilograms a mass unit"));
+    connect(m_unitScaleAction, &QAction::triggered, this, &MainWindow::askUnitScale);
+}
+
+void MainWindow::askUnitScale()
+{
+    QDialog dialog(this);
+    dialog.setObjectName(QStringLiteral("unitScaleDialog"));
+    dialog.setWindowTitle(tr("SI Scale"));
+    auto* form = new QFormLayout(&dialog);
+    auto spin = [&dialog](const QString& name, double value, const QString& suffix) {
+        auto* box = new QDoubleSpinBox(&dialog);
+        box->setObjectName(name);
+        box->setRange(DisplayUnits::kMinScale, DisplayUnits::kMaxScale);
+        box->setDecimals(6);
+        box->setValue(value);
+        box->setSuffix(suffix);
+        return box;
+    };
+    const DisplayUnits now = displayUnits();
+    QDoubleSpinBox* px = spin(QStringLiteral("pxPerMetreSpin"), now.pxPerMetre, tr(" px"));
+    QDoubleSpinBox* kg = spin(QStringLiteral("kgPerMassSpin"), now.kgPerMass, tr(" kg"));
+    form->addRow(tr("1 m is"), px);
+    form->addRow(tr("1 mass unit is"), kg);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    setUnits({.si = true, .pxPerMetre = px->value(), .kgPerMass = kg->value()});
+}
+
+void MainWindow::setUnits(const DisplayUnits& units)
+{
+    forcelab::setDisplayUnits(units);
+    m_pixelUnitsAction->setChecked(!units.si);
+    m_siUnitsAction->setChecked(units.si);
+    m_unitScaleAction->setText(tr("SI &Scale: %1 px = 1 m, 1 mass unit = %2 kg…")
+                                   .arg(humanNumber(units.pxPerMetre), humanNumber(units.kgPerMass)));
+    // Everything that shows a number with a unit reads it again.
+    if (m_parameters)
+        m_parameters->refresh();
+    if (m_ballTable)
+        m_ballTable->model()->unitsChanged();
+    if (m_inspectorDock)
+        m_inspectorDock->refresh();
+    if (m_plotsDock) {
+        m_plotsDock->refreshCharts();
+        if (m_plotsDock->energyBars()->isVisible()) // hidden, it keeps no account; it refreshes when shown
+            m_plotsDock->energyBars()->refresh();
+        m_plotsDock->quantityGraph()->refresh();
+        if (m_plotsDock->speedHistogram() && m_plotsDock->speedHistogram()->isVisible())
+            m_plotsDock->speedHistogram()->refresh();
+    }
+    if (m_stopwatchDock)
+        m_stopwatchDock->unitsChanged();
+    for (StageSliders* sliders : findChildren<StageSliders*>())
+        sliders->refresh();
+    m_canvas->update();
+}
+
 void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -430,6 +530,12 @@ void MainWindow::createMenus()
     for (QAction* action : {m_zoomInAction, m_zoomOutAction, m_fitBoxAction, m_fitBallsAction, m_followAction})
         m_viewMenu->addAction(action);
     m_viewMenu->addSeparator();
+    m_unitsMenu = m_viewMenu->addMenu(tr("&Units"));
+    m_unitsMenu->setObjectName(QStringLiteral("unitsMenu"));
+    m_unitsMenu->addAction(m_pixelUnitsAction);
+    m_unitsMenu->addAction(m_siUnitsAction);
+    m_unitsMenu->addSeparator();
+    m_unitsMenu->addAction(m_unitScaleAction);
     m_viewMenu->addMenu(m_overlayActions->menu());
     // The stage view hides the menu bar: its right-click menu ends with the
     // lesson's tools and what the stage shows.

@@ -10,6 +10,7 @@
 #include "arrow.h"
 #include "panel.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/drawing/round_steps.h"
 
 #include "sim/world/number_text.h"
@@ -80,17 +81,19 @@ void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
     QList<Drawn> drawn;
     double widestArrow = 0.0, widestLabel = 0.0;
     for (const LegendRow& row : rows) {
-        const double perUnit = view.toWidget(row.scale); // widget px per unit of the quantity
+        // In the view's units (SI or px): widget px per shown unit of the quantity.
+        const ShownUnit unit = shownUnit(row.unit, displayUnits());
+        const double perUnit = view.toWidget(row.scale) / unit.factor();
         if (!(perUnit > 0.0) || !std::isfinite(perUnit))
             continue;
         const double value = roundStep(WorldPainter::kArrowLegendPixels / perUnit);
         const double pixels = value * perUnit;
         const QString label = QStringLiteral("%1 %2 (%3)")
-                                  .arg(QString::fromStdString(sim::numberText(value)), row.unit, row.name);
+                                  .arg(QString::fromStdString(sim::numberText(value)), unit.text, row.name);
         drawn.append({pixels, label, row.color});
         c.frame.arrowLegend.append(QStringLiteral("%1: arrow %2 px = %3 %4")
                                        .arg(row.name, QString::number(pixels, 'f', 1),
-                                            QString::fromStdString(sim::numberText(value)), row.unit));
+                                            QString::fromStdString(sim::numberText(value)), unit.text));
         widestArrow = std::max(widestArrow, pixels);
         widestLabel = std::max(widestLabel, fm.horizontalAdvance(label));
     }

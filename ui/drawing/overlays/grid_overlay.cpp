@@ -5,6 +5,8 @@
 
 #include "overlay_table.h"
 
+#include "ui/drawing/display_units.h"
+#include "ui/drawing/human_number.h"
 #include "ui/drawing/round_steps.h"
 
 #include <QList>
@@ -76,11 +78,13 @@ void paintGrid(const PaintContext& c)
     p.setPen(QColor::fromRgb(colors.gridText));
     const int decimals = roundStepDecimals(major);
     bool unit = true;
+    const ShownUnit length = shownUnit(QStringLiteral("px"), displayUnits()); // m in SI
+    const bool converted = length.px != 0;
     for (long long i = (firstX + 1) / 2; 2 * i <= lastX; ++i) {
         const double x = static_cast<double>(i) * major;
-        QString text = QString::number(x, 'f', decimals);
+        QString text = converted ? humanNumber(length.toShown(x), 4) : QString::number(x, 'f', decimals);
         if (unit)
-            text += QStringLiteral(" px");
+            text += QLatin1Char(' ') + length.text;
         unit = false;
         p.drawText(QPointF(view.toWidget(sim::Vec2(x, 0.0)).x() + 3, shown.top() + 13 * k), text);
     }

@@ -5,6 +5,7 @@
 #include "overlay_table.h"
 #include "panel.h"
 
+#include "ui/drawing/display_units.h"
 #include "ui/drawing/round_steps.h"
 
 #include "sim/world/number_text.h"
@@ -45,8 +46,10 @@ void paintScaleBar(const PaintContext& c)
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::lround(14 * k)));
     font.setBold(true);
-    const QString label = QStringLiteral("%1 px    zoom ×%2")
-                              .arg(text(sim::numberText(length)), zoomText(c.options.camera.zoom));
+    const ShownUnit unit = shownUnit(QStringLiteral("px"), displayUnits()); // m in SI
+    const QString label = QStringLiteral("%1 %2    zoom ×%3")
+                              .arg(text(sim::numberText(unit.toShown(length))), unit.text,
+                                   zoomText(c.options.camera.zoom));
     const QFontMetricsF fm(font);
     const double pad = 8.0 * k;
     const double width = std::max(pixels, fm.horizontalAdvance(label)) + 2 * pad;

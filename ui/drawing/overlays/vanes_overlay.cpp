@@ -6,6 +6,9 @@
 
 #include "arrow.h"
 
+#include "ui/drawing/display_units.h"
+#include "ui/drawing/human_number.h"
+
 #include "sim/world/names.h"
 
 #include <QFontMetricsF>
@@ -52,9 +55,13 @@ void paintVanes(const PaintContext& c)
         p.setPen(Qt::NoPen);
         p.drawEllipse(hub, 2.5 * k, 2.5 * k);
         const std::string_view name = sim::toString(vanes[i].mode);
-        const QString label = QStringLiteral("%1  %2 px/s²")
-                                  .arg(QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size())))
-                                  .arg(vanes[i].value, 0, 'f', 0);
+        const ShownUnit unit = shownUnit(QStringLiteral("px/s²"), displayUnits()); // m/s² in SI
+        const QString label =
+            QStringLiteral("%1  %2 %3")
+                .arg(QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size())),
+                     unit.px != 0 ? humanNumber(unit.toShown(vanes[i].value), 3)
+                                  : QString::number(vanes[i].value, 'f', 0),
+                     unit.text);
         p.setPen(QColor(0x1d, 0x22, 0x2c));
         p.drawText(QPointF(hub.x() - r, hub.y() + r + fm.ascent() + 2.0 * k), label);
     }
