@@ -7,10 +7,14 @@
 #include "lessons/lesson_loader.h"
 #include "sim/world/ball_state.h"
 #include "sim/world/scene.h"
+#include "sim/world/world.h"
 #include "ui/drawing/palette.h"
+#include "ui/drawing/world_painter.h"
 
 #include <QColor>
 #include <QDir>
+#include <QImage>
+#include <QPainter>
 #include <QRegularExpression>
 #include <QTest>
 
@@ -69,6 +73,7 @@ private slots:
     void listedColoursAreDistinctAndDrawnAsListed();
     void namesReadAndWordsMatch();
     void shippedLessonsDrawTheColoursTheirTextsName();
+    void paintedBallsHaveTheirDrawnColour();
 };
 
 // Every name has its own colour, each theme draws it exactly, and the colours
@@ -190,5 +195,41 @@ void TestLessonColours::shippedLessonsDrawTheColoursTheirTextsName()
     QVERIFY2(problems.isEmpty(), qPrintable(QStringLiteral("%1 problems, listed above").arg(problems.size())));
 }
 
-QTEST_GUILESS_MAIN(TestLessonColours)
+// The canvas paints each ball's centre in drawnBallColor, in both themes, for
+// the lessons the teacher found wrong and one of "#rrggbb" colours: the
+// check above is the one the picture makes.
+void TestLessonColours::paintedBallsHaveTheirDrawnColour()
+{
+    const QDir dir(QStringLiteral(FORCELAB_LESSON_DIR));
+    // 01's balls are "#rrggbb" colours, which the projector theme changes.
+    for (const QString& name : {QStringLiteral("01-balls-on-a-canvas.json"), QStringLiteral("07-gravity.json"),
+                                QStringLiteral("08-losing-energy.json"), QStringLiteral("27-elastic-collisions-in-1d.json")}) {
+        const LoadResult r = LessonLoader::loadFile(dir.filePath(name));
+        QVERIFY2(r.ok(), qPrintable(r.errors().join('\n')));
+        const sim::World world(r.lesson->scene);
+        for (bool projector : {false, true}) {
+            const CanvasColors colors = canvasColors(projector);
+            PaintOptions options;
+            options.colors = &colors;
+            QImage image(1024, 768, QImage::Format_RGB32);
+            const QRectF area(QPointF(0, 0), QSizeF(image.size()));
+            {
+                QPainter p(&image);
+                WorldPainter painter;
+                painter.paint(p, area, world, options, 1.0);
+            }
+            const ViewTransform view = WorldPainter::view(world, area, options);
+            const sim::BallState& balls = world.balls();
+            for (int i = 0; i < balls.size(); ++i) {
+                const QPoint centre = view.toWidget(sim::Vec2(balls.position.col(i))).toPoint();
+                const sim::Rgb want = drawnBallColor(balls.color[static_cast<std::size_t>(i)], colors);
+                const sim::Rgb got = image.pixel(centre) & 0xffffffu;
+                QVERIFY2(got == want, qPrintable(QStringLiteral("%1 ball %2 in the %3 theme: centre %4, want %5")
+                                                     .arg(name).arg(i).arg(themeName(projector), hex(got), hex(want))));
+            }
+        }
+    }
+}
+
+QTEST_MAIN(TestLessonColours)
 #include "test_lesson_colours.moc"
