@@ -4,6 +4,7 @@
 
 #include "lesson_reader.h"
 
+#include "colour_names.h"
 #include "message_text.h"
 #include "nearest_key.h"
 #include "sim/world/names.h"
@@ -283,13 +284,27 @@ bool Reader::stringList(const QJsonObject& o, const QString& path, const QString
 
 bool Reader::colourValue(const QJsonValue& v, const QString& path, sim::Rgb& out)
 {
-    const auto c = v.isString() ? parseColour(v.toString()) : std::nullopt;
-    if (!c) {
-        fail(path, QStringLiteral("expected a colour written \"#rrggbb\" (e.g. \"#e05050\"), got ") + describe(v));
-        return false;
+    // A listed name ("red") or "#rrggbb"; a string that is neither is taken
+    // for a misspelt name unless it starts with '#'.
+    if (v.isString()) {
+        const QString s = v.toString();
+        if (const auto named = lessons::colourOfName(s)) {
+            out = *named;
+            return true;
+        }
+        if (const auto c = parseColour(s)) {
+            out = *c;
+            return true;
+        }
+        if (!s.trimmed().startsWith(QLatin1Char('#'))) {
+            fail(path, QStringLiteral("%1 is not a colour name; one of %2, or \"#rrggbb\"")
+                           .arg(quoted(s), lessons::colourWords().join(QStringLiteral(", "))));
+            return false;
+        }
     }
-    out = *c;
-    return true;
+    fail(path, QStringLiteral("expected a colour name (e.g. \"red\") or \"#rrggbb\" (e.g. \"#e05050\"), got ") +
+                   describe(v));
+    return false;
 }
 
 bool Reader::choice(const QJsonObject& o, const QString& path, const QString& key, const sim::Parameter& row,

@@ -3,6 +3,7 @@
 // them) and every double is printed with the shortest digits that read back
 // to the same bits (sim::shortestText, which is std::to_chars).
 
+#include "colour_names.h"
 #include "lesson_limits.h"
 #include "lesson_loader.h"
 #include "sim/world/names.h"
@@ -74,8 +75,12 @@ QByteArray str(std::string_view s)
     return str(QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())));
 }
 
+// A listed colour by its name ("red"), as a teacher writes it; any other as "#rrggbb".
 QByteArray colour(sim::Rgb c)
 {
+    const QString name = lessons::nameOfColour(c);
+    if (!name.isEmpty())
+        return str(name);
     char buf[16];
     std::snprintf(buf, sizeof buf, "\"#%06x\"", static_cast<unsigned>(c & 0xffffff));
     return buf;

@@ -13,6 +13,7 @@
 #include "ui/window/theme.h"
 #include "ui/drawing/world_painter.h"
 
+#include "lessons/colour_names.h"
 #include "lessons/lesson_loader.h"
 #include "sim/studies/claims.h"
 #include "sim/world/names.h"
@@ -295,7 +296,7 @@ void GuiOverlaysTest::pathLayerMatchesAWholeRedraw()
 }
 
 // View > Projector Theme: the box turns white, every ball's centre pixel is
-// an Okabe-Ito colour, and each ball has a dark outline at its edge.
+// a listed colour (lessons/colour_names.h), and each ball has a dark outline at its edge.
 void GuiOverlaysTest::projectorThemeDrawsOkabeItoBallsWithOutlines()
 {
     MainWindow window(QStringLiteral("break-shot"));
@@ -318,8 +319,8 @@ void GuiOverlaysTest::projectorThemeDrawsOkabeItoBallsWithOutlines()
         if (std::max({qRed(centre), qGreen(centre), qBlue(centre)}) - std::min({qRed(centre), qGreen(centre), qBlue(centre)}) < 16)
             continue; // the white cue ball stays white
         int nearest = 255;
-        for (sim::Rgb k : kOkabeIto)
-            nearest = std::min(nearest, colorDistance(centre, k | 0xff000000u));
+        for (const lessons::ColourName& k : lessons::colourNames()) // Okabe-Ito, a red and a purple
+            nearest = std::min(nearest, colorDistance(centre, k.color | 0xff000000u));
         QVERIFY2(nearest <= 40, qPrintable(QStringLiteral("ball %1 centre #%2").arg(i).arg(centre, 6, 16)));
         // Just inside the edge: the dark outline.
         const QPointF edge = c + QPointF(view.toWidget(balls.radius[i]) * dpr - 1.0, 0.0);

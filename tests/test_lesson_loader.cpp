@@ -839,8 +839,13 @@ void TestLessonLoader::badInput_data()
         << "t.json:1:59: spawn.radius.0: 1e-200 is outside [1e-06, 10000] px";
     QTest::newRow("missing ball position") << minimal(R"("balls": [{"x": 1}])")
                                            << "t.json:1:36: balls.0.y: missing; give the ball's centre y in px";
-    QTest::newRow("bad colour") << minimal(R"("balls": [{"x": 1, "y": 2, "color": "red"}])")
-                                << R"(t.json:1:53: balls.0.color: expected a colour written "#rrggbb" (e.g. "#e05050"), got the string "red")";
+    QTest::newRow("misspelt colour name")
+        << minimal(R"("balls": [{"x": 1, "y": 2, "color": "purpel"}])")
+        << R"(t.json:1:53: balls.0.color: "purpel" is not a colour name; one of sky blue, light blue, blue, red, orange, yellow, green, purple, violet, pink, black, grey, gray, white, or "#rrggbb")";
+    QTest::newRow("bad colour hex") << minimal(R"("balls": [{"x": 1, "y": 2, "color": "#e0505"}])")
+                                    << R"(t.json:1:53: balls.0.color: expected a colour name (e.g. "red") or "#rrggbb" (e.g. "#e05050"), got the string "#e0505")";
+    QTest::newRow("colour not a string") << minimal(R"("balls": [{"x": 1, "y": 2, "color": 5}])")
+                                         << R"(t.json:1:53: balls.0.color: expected a colour name (e.g. "red") or "#rrggbb" (e.g. "#e05050"), got the number 5)";
     QTest::newRow("bad wall name") << minimal(R"("world": {"walls": ["left", "floor"]})")
                                    << R"(t.json:1:54: world.walls.1: "floor" is not one of left, right, top, bottom)";
     QTest::newRow("unknown overlay") << minimal(R"("overlays": ["velocity", "vectors"])")

@@ -1,6 +1,10 @@
 #include "palette.h"
 
+#include "lessons/colour_names.h"
+
 #include <QColor>
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -8,27 +12,43 @@ namespace forcelab {
 
 sim::Rgb okabeItoColor(sim::Rgb color)
 {
+    color &= 0xffffffu;
+    // A colour of the lessons' list is drawn as it is: the text calls it by
+    // its name, and the list's colours are the projector's colours already.
+    if (lessons::isListedColour(color))
+        return color;
     const QColor c = QColor::fromRgb(color);
-    float h = 0, s = 0, v = 0;
-    c.getHsvF(&h, &s, &v);
-    if (s < 0.2f || h < 0.0f)
+    float h = 0, s = 0, l = 0;
+    c.getHslF(&h, &s, &l);
+    float hv = 0, sv = 0, v = 0;
+    c.getHsvF(&hv, &sv, &v);
+    if (sv < 0.2f || h < 0.0f)
         return color; // white, greys and black tell apart by lightness alone
     if (v < 0.25f)
-        return kOkabeIto[0];
-    // Hue distance on the colour circle to each of the seven colours.
-    sim::Rgb best = kOkabeIto[1];
-    double closest = 2.0;
-    for (std::size_t i = 1; i < kOkabeIto.size(); ++i) {
-        float hi = 0, si = 0, vi = 0;
-        QColor::fromRgb(kOkabeIto[i]).getHsvF(&hi, &si, &vi);
+        return 0x000000;
+    // The listed colour nearest in hue, so "the red ball" of a student's
+    // scene stays the reddest ball; lightness parts colours of one hue
+    // (sky blue and blue), and the achromatic ones are never taken.
+    sim::Rgb best = 0xe69f00;
+    double closest = 1e9;
+    for (const lessons::ColourName& named : lessons::colourNames()) {
+        float hi = 0, si = 0, li = 0;
+        QColor::fromRgb(named.color).getHslF(&hi, &si, &li);
+        if (hi < 0.0f || si < 0.2f)
+            continue;
         double d = std::abs(double(h) - double(hi));
-        d = std::min(d, 1.0 - d);
+        d = std::min(d, 1.0 - d) + 0.1 * std::abs(double(l) - double(li));
         if (d < closest) {
             closest = d;
-            best = kOkabeIto[i];
+            best = named.color;
         }
     }
     return best;
+}
+
+sim::Rgb drawnBallColor(sim::Rgb own, const CanvasColors& colors)
+{
+    return colors.colourBlindSafe ? okabeItoColor(own) : own;
 }
 
 CanvasColors canvasColors(bool projector)

@@ -43,7 +43,7 @@ void paintDiscs(const PaintContext& c, bool mark)
             continue;
         const bool marked = mark && balls.colliding[static_cast<std::size_t>(i)] != 0;
         const sim::Rgb own = balls.color[static_cast<std::size_t>(i)];
-        const sim::Rgb color = colors.colourBlindSafe ? okabeItoColor(own) : own;
+        const sim::Rgb color = drawnBallColor(own, colors);
         const QImage* sprite = c.options.sprites ? c.sprites.sprite(r * dpr, color, marked, dpr) : nullptr;
         if (sprite) {
             // Top-left device pixel of the sprite: the disc's centre is the

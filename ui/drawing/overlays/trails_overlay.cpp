@@ -34,8 +34,8 @@ void paintTrails(const PaintContext& c)
     for (int ball : tracked) {
         sim::Rgb color = ownColours && ball < balls.size() ? balls.color[static_cast<std::size_t>(ball)]
                                                            : canvas_colors::kTrail;
-        if (ownColours && colorsOf(options).colourBlindSafe)
-            color = okabeItoColor(color); // the path in the ball's drawn colour
+        if (ownColours)
+            color = drawnBallColor(color, colorsOf(options)); // the path in the ball's drawn colour
         auto pale = [](int v) { return v + (255 - v) * 35 / 100; };
         colors.push_back(qRgb(pale(qRed(color)), pale(qGreen(color)), pale(qBlue(color))) & 0xffffffu);
     }
