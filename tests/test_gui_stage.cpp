@@ -376,6 +376,25 @@ void GuiStageTest::stageWallSidesOpenAWall()
     QTRY_VERIFY(window.controller()->world().settings().walls.bottom);
     QVERIFY(bottom->isChecked());
     QVERIFY2(label->text().contains(QStringLiteral("<b>left, right, top, bottom</b>")), qPrintable(label->text()));
+
+    // Lesson 04's switch of the Parameters panel's own (not a table row) is
+    // on the stage too: a click places the balls fully inside, undo puts
+    // back the lesson's partly-outside start.
+    QVERIFY(window.openLesson(QStringLiteral("walls-and-radius")));
+    if (more->isVisible())
+        more->setChecked(true);
+    QPushButton* inside = controls->toggle(QStringLiteral("fully_inside"));
+    QVERIFY(inside);
+    scroll->ensureWidgetVisible(inside);
+    QTRY_VERIFY(inside->isVisible());
+    QVERIFY(!window.controller()->spawn().fullyInside);
+    QVERIFY(!inside->isChecked());
+    QTest::mouseClick(inside, Qt::LeftButton);
+    QVERIFY(window.controller()->spawn().fullyInside);
+    QVERIFY(inside->isChecked());
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_VERIFY(!window.controller()->spawn().fullyInside);
+    QVERIFY(!inside->isChecked());
 }
 
 // A lesson's switches and choices are on the stage too. Lesson 35's
