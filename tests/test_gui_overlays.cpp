@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 using namespace forcelab;
 
@@ -79,6 +80,7 @@ private slots:
     void choiceQuestionNamesTheRightAnswer();
     void stopwatchTimesBounceToBounce();
     void rulerMeasuresInWorldPixels();
+    void rulerSecondLegMeasuresTheAngle();
     void apexMarksAreTheTopsOfTheFlights();
     void forceEditorKeepsTheLastGoodLaw();
 };
@@ -603,6 +605,82 @@ void GuiOverlaysTest::rulerMeasuresInWorldPixels()
     QVERIFY(canvas->ruler().shown);
     window.controller()->reset();
     QVERIFY(!canvas->ruler().shown);
+}
+
+// The ruler's second leg (issue #36): closed forms for the lengths and the
+// angle between the legs, then the gesture: Shift + drag from an end of the
+// line draws the second leg from that exact end, and one from elsewhere
+// starts a fresh ruler.
+void GuiOverlaysTest::rulerSecondLegMeasuresTheAngle()
+{
+    const auto ruler = [](sim::Vec2 from, sim::Vec2 to, bool fromStart, sim::Vec2 end) {
+        Canvas::Ruler r;
+        r.shown = r.hasSecond = true;
+        r.from = from;
+        r.to = to;
+        r.secondFromStart = fromStart;
+        r.end = end;
+        return r;
+    };
+    // Right angle: 300 px along x, 400 px up, from the shared start.
+    Canvas::Ruler r = ruler({0, 0}, {300, 0}, true, {0, -400});
+    QVERIFY(std::abs(r.length() - 300.0) < 1e-9);
+    QVERIFY(std::abs(r.secondLength() - 400.0) < 1e-9);
+    QVERIFY(std::abs(r.between() - 90.0) < 1e-9);
+    // 3-4-5 from the far end: the hypotenuse back to the start is 500 px, and
+    // the angle at the shared end is atan(300 / 400).
+    r = ruler({0, 0}, {400, 0}, false, {0, 300});
+    QVERIFY(std::abs(r.secondLength() - 500.0) < 1e-9);
+    QVERIFY(std::abs(r.between() - std::atan(300.0 / 400.0) * 180.0 / std::numbers::pi) < 1e-9);
+    QVERIFY(std::abs(r.between() - 36.86989764584402) < 1e-9);
+    // 60°: two legs of 200 px, an equilateral triangle's corner.
+    r = ruler({0, 0}, {200, 0}, true, {100, -100 * std::sqrt(3.0)});
+    QVERIFY(std::abs(r.secondLength() - 200.0) < 1e-9);
+    QVERIFY(std::abs(r.between() - 60.0) < 1e-9);
+    // Straight on and straight back.
+    QVERIFY(std::abs(ruler({0, 0}, {100, 0}, false, {250, 0}).between() - 180.0) < 1e-9);
+    QVERIFY(std::abs(ruler({0, 0}, {100, 0}, false, {0, 0}).between()) < 1e-9);
+
+    MainWindow window(QStringLiteral("gravity"));
+    window.resize(1280, 720);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    Canvas* canvas = window.canvas();
+    const auto shiftDrag = [&](QPoint from, QPoint to) {
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::ShiftModifier, from);
+        QMouseEvent move(QEvent::MouseMove, QPointF(to), canvas->mapToGlobal(QPointF(to)), Qt::NoButton,
+                         Qt::LeftButton, Qt::ShiftModifier);
+        QCoreApplication::sendEvent(canvas, &move);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ShiftModifier, to);
+    };
+    const QPoint a = canvas->worldToWidget(sim::Vec2(100, 350)).toPoint();
+    const QPoint b = canvas->worldToWidget(sim::Vec2(400, 350)).toPoint();
+    const QPoint c = canvas->worldToWidget(sim::Vec2(100, 50)).toPoint();
+    shiftDrag(a, b);
+    QVERIFY(canvas->ruler().shown && !canvas->ruler().hasSecond);
+    const QImage one = canvas->grab().toImage();
+    // From a few pixels off the first leg's start: the second leg starts at
+    // that start exactly.
+    shiftDrag(a + QPoint(4, -3), c);
+    const Canvas::Ruler& two = canvas->ruler();
+    QVERIFY(two.hasSecond && two.secondFromStart);
+    QCOMPARE(two.pivot(), canvas->widgetToWorld(QPointF(a)));
+    const sim::Vec2 u = canvas->widgetToWorld(QPointF(b)) - two.pivot();
+    const sim::Vec2 v = canvas->widgetToWorld(QPointF(c)) - two.pivot();
+    QVERIFY(std::abs(two.secondLength() - v.norm()) < 1e-9);
+    QVERIFY(std::abs(two.between() - std::acos(u.dot(v) / (u.norm() * v.norm())) * 180.0 / std::numbers::pi) < 1e-9);
+    QVERIFY2(std::abs(two.between() - 90.0) < 1.0, qPrintable(QString::number(two.between()))); // to the pixel
+    QVERIFY(canvas->grab().toImage() != one); // the second leg, its arc and its numbers are drawn
+    if (qEnvironmentVariableIsSet("SHOTS"))
+        canvas->grab().save(QStringLiteral("/tmp/ruler_two_legs.png"));
+    // A Shift + drag elsewhere starts a fresh ruler.
+    shiftDrag(canvas->worldToWidget(sim::Vec2(300, 200)).toPoint(), c);
+    QVERIFY(canvas->ruler().shown && !canvas->ruler().hasSecond);
+    // Reset takes both legs away.
+    shiftDrag(c + QPoint(2, 2), b);
+    QVERIFY(canvas->ruler().hasSecond && !canvas->ruler().secondFromStart);
+    window.controller()->reset();
+    QVERIFY(!canvas->ruler().shown && !canvas->ruler().hasSecond);
 }
 
 // Lesson 08 marks the top of each flight: the red ball's first mark is the

@@ -57,6 +57,7 @@ private slots:
     void stageSlidersEditTheWorld();
     void everyListedRowHasAStageControl();
     void stageSwitchesAndChoicesEditTheWorld();
+    void stageWallSidesOpenAWall();
     void normalLayoutGivesTheBoxHalfTheWindow_data();
     void normalLayoutGivesTheBoxHalfTheWindow();
     void stageTextIsNeverCut_data();
@@ -257,12 +258,34 @@ void GuiStageTest::everyListedRowHasAStageControl()
     SettingsEditor editor(&controller);
     StageSliders sliders(&controller, &editor);
     sliders.setLessonControls(LessonLoader::controlNames());
+    // The Parameters panel's own rows (not rows of the parameter table): each
+    // is on the stage, or left off it for the reason given.
+    const QStringList panelRowsOnTheStage{QStringLiteral("wall_sides"), QStringLiteral("fully_inside")};
+    const QHash<QString, QString> panelRowsNotOnTheStage{
+        // The stage bar's Slower and Faster buttons change it, and its clock line shows it.
+        {QStringLiteral("time_scale"), QStringLiteral("the bar's Slower / Faster buttons")},
+        // A 20-digit number to type means nothing to a class; Reset replays the same run.
+        {QStringLiteral("seed"), QStringLiteral("a number to type, nothing to see")},
+        // A new count places every ball again mid-demonstration, and its range (0 to the
+        // ball limit) has no slider range; the lesson's own count is the one it talks about.
+        {QStringLiteral("ball_count"), QStringLiteral("respawns the lesson; no slider range")},
+        // Typed code: the force editor dock is where it is written and read.
+        {QStringLiteral("custom_acceleration"), QStringLiteral("code, in the force editor")},
+    };
     int checked = 0;
     for (const QString& name : LessonLoader::controlNames())
         for (const QString& row : lessons::controlRows().value(name)) {
             const sim::Parameter* p = sim::findControl(row.toStdString());
-            if (!p)
-                continue; // not a row of the table (the ball count, the seed): the Parameters panel's
+            if (panelRowsOnTheStage.contains(row)) {
+                const QString side = row == QStringLiteral("wall_sides") ? QStringLiteral("wall_bottom") : row;
+                QVERIFY2(sliders.toggle(side), qPrintable(row + QStringLiteral(": no control on the stage")));
+                continue;
+            }
+            if (!p) {
+                QVERIFY2(panelRowsNotOnTheStage.contains(row),
+                         qPrintable(row + QStringLiteral(": a panel row neither on the stage nor listed here")));
+                continue;
+            }
             const bool number = p->type == sim::ParameterType::Number || p->type == sim::ParameterType::Integer;
             QWidget* control = number                                    ? static_cast<QWidget*>(sliders.slider(row))
                                : p->type == sim::ParameterType::Boolean ? static_cast<QWidget*>(sliders.toggle(row))
@@ -309,6 +332,73 @@ void GuiStageTest::stageSlidersEditTheWorld()
     QVERIFY(window.openLesson(QStringLiteral("balls-on-a-canvas")));
     QCOMPARE(sliders->count(), 0);
     QVERIFY(!window.findChild<QWidget*>(QStringLiteral("stageSlidersScroll"))->isVisibleTo(&window));
+}
+
+// Lesson 07's challenge "Turn the bottom wall off" is done on the stage: the
+// lesson lists "walls", so the stage shows a button per side. A click on
+// Bottom opens the floor, the red ball falls through it, and Ctrl+Z closes
+// it again.
+void GuiStageTest::stageWallSidesOpenAWall()
+{
+    MainWindow window(QStringLiteral("gravity"));
+    QVERIFY(presentAt(window, QSize(1024, 768)));
+    auto* controls = window.findChild<StageSliders*>(QStringLiteral("stageSliders"));
+    auto* more = window.findChild<QAction*>(QStringLiteral("stageSlidersAction"));
+    QVERIFY(controls && more);
+    if (more->isVisible())
+        more->setChecked(true); // the controls wait for the Sliders button when they do not fit
+    QPushButton* bottom = controls->toggle(QStringLiteral("wall_bottom"));
+    QVERIFY(bottom);
+    for (const char* side : {"wall_left", "wall_right", "wall_top"})
+        QVERIFY2(controls->toggle(QLatin1String(side)), side);
+    QCOMPARE(bottom->text(), QStringLiteral("Bottom"));
+    auto* scroll = window.findChild<QScrollArea*>(QStringLiteral("stageSlidersScroll"));
+    QVERIFY(scroll);
+    scroll->ensureWidgetVisible(bottom);
+    QTRY_VERIFY(bottom->isVisible());
+    QVERIFY(bottom->isChecked());
+    QVERIFY(window.controller()->world().settings().walls.bottom);
+
+    QTest::mouseClick(bottom, Qt::LeftButton);
+    QVERIFY(!window.controller()->world().settings().walls.bottom);
+    QVERIFY(window.controller()->world().settings().walls.left); // the others stay
+    QVERIFY(!bottom->isChecked());
+    auto* label = window.findChild<QLabel*>(QStringLiteral("stage_wall_sidesLabel"));
+    QVERIFY(label);
+    QVERIFY2(label->text().contains(QStringLiteral("<b>left, right, top</b>")), qPrintable(label->text()));
+
+    // Run: the red ball (ball 0) falls past where the floor was.
+    const double height = window.controller()->world().settings().box.height;
+    window.controller()->play();
+    QTRY_VERIFY_WITH_TIMEOUT(window.controller()->world().balls().position(1, 0) > height + 50.0, 20000);
+    window.controller()->pause();
+
+    // Ctrl+Z, from the stage, closes the floor again.
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_VERIFY(window.controller()->world().settings().walls.bottom);
+    QVERIFY(bottom->isChecked());
+    QVERIFY2(label->text().contains(QStringLiteral("<b>left, right, top, bottom</b>")), qPrintable(label->text()));
+
+    // Lesson 04's switch of the Parameters panel's own (not a table row) is
+    // on the stage too: a click places the balls fully inside, undo puts
+    // back the lesson's partly-outside start.
+    QVERIFY(window.openLesson(QStringLiteral("walls-and-radius")));
+    if (more->isVisible())
+        more->setChecked(true);
+    QPushButton* inside = controls->toggle(QStringLiteral("fully_inside"));
+    QVERIFY(inside);
+    scroll->ensureWidgetVisible(inside);
+    QTRY_VERIFY(inside->isVisible());
+    QVERIFY(!window.controller()->spawn().fullyInside);
+    QVERIFY(!inside->isChecked());
+    QTest::mouseClick(inside, Qt::LeftButton);
+    QVERIFY(window.controller()->spawn().fullyInside);
+    QVERIFY(inside->isChecked());
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_VERIFY(!window.controller()->spawn().fullyInside);
+    QVERIFY(!inside->isChecked());
 }
 
 // A lesson's switches and choices are on the stage too. Lesson 35's

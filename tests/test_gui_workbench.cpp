@@ -271,6 +271,7 @@ private slots:
     void saveThenOpenGivesTheSameScene();
     void lessonsTreeFollowsTheCourse();
     void inspectorShowsTheSelectedBall();
+    void startSelectionFillsTheInspector();
     void screenshotAndTrajectoryFiles();
     void blowUpPausesAndExplains();
 };
@@ -1091,6 +1092,55 @@ void GuiWorkbenchTest::inspectorShowsTheSelectedBall()
 
     // Clicking empty space clears the selection.
     QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->worldToWidget(sim::Vec2(580.0, 20.0)).toPoint());
+    QCOMPARE(inspector->selectedBall(), -1);
+}
+
+// Issue #36: a lesson whose readout talks about ball 0 rings ball 0 at the
+// start; that ring is a real selection, so the Inspector shows ball 0 from
+// the start, and a click on it, or on another ball, fills the Inspector
+// also after a reset.
+void GuiWorkbenchTest::startSelectionFillsTheInspector()
+{
+    MainWindow window(QStringLiteral("gravity")); // overlays: readout, velocity
+    window.resize(1400, 900);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    Canvas* canvas = window.canvas();
+    InspectorDock* inspector = window.inspectorDock();
+    inspector->show();
+    inspector->raise();
+    SimulationController* controller = window.controller();
+    const sim::World& world = controller->world();
+    QCOMPARE(canvas->selectedBall(), 0);
+    QCOMPARE(inspector->selectedBall(), 0);
+    controller->stepOnce();
+    QCOMPARE(inspector->readout().position, sim::Vec2(world.balls().position.col(0)));
+
+    // A click on ball 1, then on ball 0, moves the Inspector with it.
+    const auto clickBall = [&](int i) {
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->worldToWidget(world.balls().position.col(i)).toPoint());
+    };
+    clickBall(1);
+    QCOMPARE(inspector->selectedBall(), 1);
+    clickBall(0);
+    QCOMPARE(inspector->selectedBall(), 0);
+    // A reset keeps the ring's ball and the Inspector's together.
+    controller->reset();
+    QCOMPARE(canvas->selectedBall(), 0);
+    QCOMPARE(inspector->selectedBall(), 0);
+    clickBall(0);
+    QCOMPARE(inspector->selectedBall(), 0);
+    controller->stepOnce();
+    QCOMPARE(inspector->readout().position, sim::Vec2(world.balls().position.col(0)));
+    // Empty space clears both; the ball clicked again is selected again.
+    QTest::mouseClick(canvas, Qt::LeftButton, {}, canvas->worldToWidget(sim::Vec2(580.0, 20.0)).toPoint());
+    QCOMPARE(inspector->selectedBall(), -1);
+    clickBall(0);
+    QCOMPARE(inspector->selectedBall(), 0);
+
+    // A lesson without the readout starts with nothing selected.
+    QVERIFY(window.openLesson(QStringLiteral("newtons-cradle")));
+    QCOMPARE(canvas->selectedBall(), -1);
     QCOMPARE(inspector->selectedBall(), -1);
 }
 

@@ -2,6 +2,7 @@
 
 #include "ui/canvas/history_recorder.h"
 #include "ui/canvas/simulation_controller.h"
+#include "ui/drawing/human_number.h"
 
 #include "sim/world/parameters.h"
 
@@ -77,33 +78,90 @@ double Canvas::Ruler::angle() const
     return std::atan2(-d.y(), d.x()) * 180.0 / std::numbers::pi;
 }
 
-void Canvas::paintRuler(QPainter& p) const
+double Canvas::Ruler::between() const
 {
-    const QPointF a = worldToWidget(m_ruler.from), b = worldToWidget(m_ruler.to);
-    const double k = m_options.lineScale;
-    p.save();
-    p.setRenderHint(QPainter::Antialiasing, true);
+    if (!hasSecond)
+        return 0.0;
+    const sim::Vec2 u = (secondFromStart ? to : from) - pivot(), v = end - pivot();
+    if (u.norm() == 0.0 || v.norm() == 0.0)
+        return 0.0;
+    // atan2 of the cross and dot products: exact at 0° and 180°, where acos
+    // of the normalised dot product loses half its digits.
+    const double cross = u.x() * v.y() - u.y() * v.x();
+    return std::atan2(std::abs(cross), u.dot(v)) * 180.0 / std::numbers::pi;
+}
+
+namespace {
+
+// A white card with dark bold text centred on `centre`: the ruler's numbers.
+void paintRulerCard(QPainter& p, const QPointF& centre, const QString& text, double k)
+{
+    const QFontMetricsF fm(p.font());
+    QRectF box(QPointF(0, 0), QSizeF(fm.horizontalAdvance(text) + 12 * k, fm.height() + 6 * k));
+    box.moveCenter(centre);
+    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 1.0));
+    p.setBrush(QColor(255, 255, 255, 235));
+    p.drawRoundedRect(box, 4, 4);
+    p.drawText(box, Qt::AlignCenter, text);
+}
+
+// One leg: the line and end ticks at right angles to it.
+void paintRulerLeg(QPainter& p, const QPointF& a, const QPointF& b, double k)
+{
     p.setPen(QPen(QColor(0x11, 0x11, 0x11), 2.0 * k, Qt::SolidLine, Qt::FlatCap));
     p.drawLine(a, b);
-    // End ticks at right angles to the ruler.
     const QLineF line(a, b);
     if (line.length() > 0.0) {
         const QPointF n = QPointF(-line.dy(), line.dx()) / line.length() * (7.0 * k);
         p.drawLine(a - n, a + n);
         p.drawLine(b - n, b + n);
     }
+}
+
+} // namespace
+
+void Canvas::paintRuler(QPainter& p) const
+{
+    const QPointF a = worldToWidget(m_ruler.from), b = worldToWidget(m_ruler.to);
+    const double k = m_options.lineScale;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    paintRulerLeg(p, a, b, k);
     QFont font = p.font();
     font.setPixelSize(static_cast<int>(std::lround(14 * k)));
     font.setBold(true);
     p.setFont(font);
-    const QString text = tr("%1 px at %2°").arg(m_ruler.length(), 0, 'f', 1).arg(m_ruler.angle(), 0, 'f', 0);
-    const QFontMetricsF fm(font);
-    QRectF box(QPointF(0, 0), QSizeF(fm.horizontalAdvance(text) + 12 * k, fm.height() + 6 * k));
-    box.moveCenter(line.center() + QPointF(0, -box.height()));
-    p.setPen(QPen(QColor(0x11, 0x11, 0x11), 1.0));
-    p.setBrush(QColor(255, 255, 255, 235));
-    p.drawRoundedRect(box, 4, 4);
-    p.drawText(box, Qt::AlignCenter, text);
+    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
+    const QPointF above(0, -cardHeight);
+    if (!m_ruler.hasSecond) {
+        paintRulerCard(p, QLineF(a, b).center() + above,
+                       tr("%1 px at %2°").arg(humanNumber(m_ruler.length()), humanNumber(m_ruler.angle(), 3)), k);
+        p.restore();
+        return;
+    }
+    const QPointF pivot = worldToWidget(m_ruler.pivot()), c = worldToWidget(m_ruler.end);
+    const QPointF other = m_ruler.secondFromStart ? b : a;
+    paintRulerLeg(p, pivot, c, k);
+    // The arc of the angle at the shared end, small enough to stay on both legs.
+    const QLineF legA(pivot, other), legB(pivot, c);
+    const double radius = std::min(36.0 * k, 0.45 * std::min(legA.length(), legB.length()));
+    double span = legB.angle() - legA.angle(); // Qt's degrees: anticlockwise as seen
+    if (span > 180.0)
+        span -= 360.0;
+    else if (span <= -180.0)
+        span += 360.0;
+    if (radius > 0.0) {
+        p.setPen(QPen(QColor(0x11, 0x11, 0x11), 1.5 * k));
+        p.setBrush(Qt::NoBrush);
+        p.drawArc(QRectF(pivot - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)),
+                  static_cast<int>(std::lround(legA.angle() * 16)), static_cast<int>(std::lround(span * 16)));
+    }
+    // Each leg's length over its middle, the angle on the bisector past the arc.
+    paintRulerCard(p, QLineF(a, b).center() + above, tr("%1 px").arg(humanNumber(m_ruler.length())), k);
+    paintRulerCard(p, QLineF(pivot, c).center() + above, tr("%1 px").arg(humanNumber(m_ruler.secondLength())), k);
+    QLineF bisector = QLineF::fromPolar(radius + cardHeight + 12 * k, legA.angle() + span / 2);
+    bisector.translate(pivot);
+    paintRulerCard(p, bisector.p2(), tr("%1°").arg(humanNumber(m_ruler.between(), 3)), k);
     p.restore();
 }
 
@@ -411,7 +469,7 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
         return;
     }
     if (m_measuring) {
-        m_ruler.to = widgetToWorld(event->position());
+        (m_measuringSecond ? m_ruler.end : m_ruler.to) = widgetToWorld(event->position());
         update();
         return;
     }
@@ -436,9 +494,23 @@ void Canvas::mouseMoveEvent(QMouseEvent* event)
 void Canvas::mousePressEvent(QMouseEvent* event)
 {
     if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
-        // The ruler: measuring never touches the physics.
-        m_ruler.shown = true;
-        m_ruler.from = m_ruler.to = widgetToWorld(event->position());
+        // The ruler: measuring never touches the physics. A drag from an
+        // end of the line there is draws its second leg; elsewhere, a new ruler.
+        const auto near = [&](const sim::Vec2& world) {
+            return QLineF(worldToWidget(world), event->position()).length() <= kTipGrabPixels * m_options.lineScale;
+        };
+        m_measuringSecond = m_ruler.shown && (near(m_ruler.from) || near(m_ruler.to));
+        if (m_measuringSecond) {
+            m_ruler.secondFromStart = near(m_ruler.from) &&
+                                      (!near(m_ruler.to) || QLineF(worldToWidget(m_ruler.from), event->position()).length() <
+                                                                QLineF(worldToWidget(m_ruler.to), event->position()).length());
+            m_ruler.hasSecond = true;
+            m_ruler.end = m_ruler.pivot();
+        } else {
+            m_ruler = Ruler();
+            m_ruler.shown = true;
+            m_ruler.from = m_ruler.to = widgetToWorld(event->position());
+        }
         m_measuring = true;
         update();
         return;
@@ -483,7 +555,7 @@ void Canvas::mouseReleaseEvent(QMouseEvent* event)
         return;
     }
     if (m_measuring && event->button() == Qt::LeftButton) {
-        m_ruler.to = widgetToWorld(event->position());
+        (m_measuringSecond ? m_ruler.end : m_ruler.to) = widgetToWorld(event->position());
         m_measuring = false;
         update();
         return;

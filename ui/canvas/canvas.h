@@ -145,13 +145,25 @@ public:
     static constexpr double kZoomStep = 1.25;
 
     /// The ruler: Shift + drag on the canvas measures a distance in the
-    /// world's px (and its angle); a plain click clears it.
+    /// world's px (and its angle); a plain click clears it. A second Shift +
+    /// drag that starts at an end of the line (within kTipGrabPixels, scaled
+    /// with the lines) draws a second leg from that end, and the ruler shows
+    /// the angle between the legs too (two paths after a collision, lesson 29).
     struct Ruler {
         bool shown = false;
-        sim::Vec2 from{0, 0}, to{0, 0}; ///< world px
+        sim::Vec2 from{0, 0}, to{0, 0}; ///< the first leg, world px
+        bool hasSecond = false;         ///< a second leg from `pivot` to `end`
+        bool secondFromStart = false;   ///< the second leg starts at `from` (else at `to`)
+        sim::Vec2 end{0, 0};            ///< the second leg's far end, world px
         double length() const { return (to - from).norm(); }
         /// Degrees from the +x axis, counted anticlockwise as seen (y grows downwards).
         double angle() const;
+        /// The end of the first leg the second starts from.
+        sim::Vec2 pivot() const { return secondFromStart ? from : to; }
+        double secondLength() const { return (end - pivot()).norm(); }
+        /// Degrees between the two legs at the pivot, 0 to 180 (0 with no
+        /// second leg or a leg of no length).
+        double between() const;
     };
     const Ruler& ruler() const { return m_ruler; }
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
@@ -296,6 +308,7 @@ private:
     ArrowRun m_arrowRun;                   // the arrows' scales of this run (m_options.arrowRun)
     int m_sceneSerial = -1;                // the controller's scene the run scales belong to
     Ruler m_ruler;
+    bool m_measuringSecond = false; // the drag moves the second leg's end
     bool m_measuring = false;
     void paintRuler(QPainter& p) const;
     CanvasColors m_colors;

@@ -106,7 +106,10 @@ InspectorDock::InspectorDock(SimulationController* controller, QWidget* parent)
     setWidget(m_pages);
 
     connect(m_controller, &SimulationController::stepped, this, &InspectorDock::refresh);
-    connect(m_controller, &SimulationController::sceneChanged, this, [this] { setSelectedBall(-1); });
+    // A reset keeps the canvas's selection (while the ball is there): the
+    // Inspector keeps it too, or a click on the still-ringed ball, which
+    // changes no selection, would never fill it again.
+    connect(m_controller, &SimulationController::sceneChanged, this, [this] { setSelectedBall(m_readout.ball); });
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible)
             refresh();

@@ -60,11 +60,24 @@ void StageSliders::setLessonControls(const QStringList& controls)
             if (seen.contains(row))
                 continue;
             seen << row;
+            // Rows of the Parameters panel itself, not of the parameter table.
+            if (row == QStringLiteral("wall_sides")) {
+                m_controls.append(makeWallSides(big));
+                continue;
+            }
+            if (row == QStringLiteral("fully_inside")) {
+                m_controls.append(makeFullyInside(big));
+                continue;
+            }
+            // The others are left to the panel on purpose (the seed, the ball
+            // count, the speed: see tests/test_gui_stage.cpp for why).
             const sim::Parameter* p = sim::findControl(row.toStdString());
             if (!p)
                 continue;
             const int mergeId = kMergeIdBase + static_cast<int>(p - sim::parameters().data());
-            Control s{p, row};
+            Control s;
+            s.parameter = p;
+            s.row = row;
             switch (p->type) {
             case sim::ParameterType::Number:
             case sim::ParameterType::Integer:
@@ -117,8 +130,80 @@ void StageSliders::setLessonControls(const QStringList& controls)
     refresh();
 }
 
+StageSliders::Control StageSliders::makeWallSides(const QFont& big)
+{
+    // Four buttons under one label, rather than four rows of
+    // "Switch off": the class sees at a glance which walls are there. Each
+    // button edits its own row of the parameter table (wall_left, …), so a
+    // click is one undo step like the panel's tick boxes.
+    Control s;
+    s.row = QStringLiteral("wall_sides");
+    s.sidesField = new QWidget(this);
+    s.sidesField->setObjectName(QStringLiteral("stage_wall_sides"));
+    // Two by two, so each word keeps its room in a narrow column beside the box.
+    auto* layout = new QGridLayout(s.sidesField);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(6);
+    int at = 0;
+    const std::pair<const char*, QString> sides[] = {
+        {"wall_left", tr("Left")}, {"wall_right", tr("Right")}, {"wall_top", tr("Top")}, {"wall_bottom", tr("Bottom")}};
+    for (const auto& [row, text] : sides) {
+        const sim::Parameter* p = sim::findControl(row);
+        Q_ASSERT(p);
+        auto* button = new QPushButton(text, s.sidesField);
+        button->setObjectName(QStringLiteral("stage_%1Toggle").arg(QLatin1String(row)));
+        button->setCheckable(true);
+        button->setFont(big);
+        button->setMinimumHeight(36);
+        button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        button->setToolTip(qs(p->help));
+        button->setAccessibleName(qs(p->label));
+        connect(button, &QPushButton::clicked, this, [this, p](bool on) { apply(p, on ? 1.0 : 0.0, -1); });
+        layout->addWidget(button, at / 2, at % 2);
+        ++at;
+        s.sides.append({p, button});
+    }
+    s.sidesField->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    s.sidesField->setToolTip(tr("A wall whose button is not pressed is open: a ball leaves through it"));
+    s.label = new QLabel(this);
+    s.label->setObjectName(QStringLiteral("stage_wall_sidesLabel"));
+    s.label->setFont(big);
+    s.label->setWordWrap(true);
+    return s;
+}
+
+StageSliders::Control StageSliders::makeFullyInside(const QFont& big)
+{
+    // A spawn setting, not a world setting: it places the balls again, as
+    // the panel's tick box does (lesson 04's bug is seen at the start).
+    Control s;
+    s.row = QStringLiteral("fully_inside");
+    s.spawnInside = true;
+    s.toggle = new QPushButton(this);
+    s.toggle->setObjectName(QStringLiteral("stage_fully_insideToggle"));
+    s.toggle->setCheckable(true);
+    s.toggle->setFont(big);
+    s.toggle->setMinimumHeight(36);
+    s.toggle->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    s.toggle->setToolTip(tr("Off: a ball's centre may be anywhere in the box, so it can start partly outside a wall. "
+                            "Changing it places the balls again"));
+    connect(s.toggle, &QPushButton::clicked, this, [this](bool on) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        spawn.fullyInside = on;
+        if (!m_editor->editSpawn(on ? tr("Place balls fully inside") : tr("Let balls start partly outside"), spawn))
+            refresh();
+    });
+    s.label = new QLabel(this);
+    s.label->setObjectName(QStringLiteral("stage_fully_insideLabel"));
+    s.label->setFont(big);
+    s.label->setWordWrap(true);
+    return s;
+}
+
 QWidget* StageSliders::Control::widget() const
 {
+    if (sidesField)
+        return sidesField;
     if (slider)
         return slider;
     if (toggle)
@@ -162,11 +247,12 @@ void StageSliders::arrange()
     int row = 0, column = 0;
     for (const Control& s : m_controls) {
         const bool wide = !s.slider && m_columns <= 2;
-        if (wide && column > 0) {
+        // Four wall buttons need two columns' width to keep their words.
+        const int span = wide ? m_columns : s.sidesField ? std::min(2, m_columns) : 1;
+        if (column > 0 && (wide || column + span > m_columns)) {
             row += 2;
             column = 0;
         }
-        const int span = wide ? m_columns : 1;
         m_grid->addWidget(s.label, row, column, 1, span);
         m_grid->addWidget(s.widget(), row + 1, column, 1, span);
         column += span;
@@ -191,6 +277,26 @@ void StageSliders::refresh()
 {
     const sim::WorldSettings& settings = m_controller->world().settings();
     for (const Control& s : m_controls) {
+        if (s.sidesField) {
+            QStringList on;
+            for (const auto& [p, button] : s.sides) {
+                const bool there = p->get(settings) != 0.0;
+                const QSignalBlocker block(button);
+                button->setChecked(there);
+                if (there)
+                    on << button->text().toLower();
+            }
+            s.label->setText(tr("Walls: <b>%1</b>").arg(on.isEmpty() ? tr("none") : on.join(QStringLiteral(", "))));
+            continue;
+        }
+        if (s.spawnInside) {
+            const bool inside = m_controller->spawn().fullyInside;
+            const QSignalBlocker block(s.toggle);
+            s.toggle->setChecked(inside);
+            s.toggle->setText(inside ? tr("Switch off") : tr("Switch on"));
+            s.label->setText(tr("Start fully inside: <b>%1</b>").arg(inside ? tr("on") : tr("off")));
+            continue;
+        }
         const double value = s.parameter->get(settings);
         QString shown, unit;
         if (s.slider) {
@@ -232,6 +338,10 @@ NumberControl* StageSliders::slider(const QString& row) const
 
 QPushButton* StageSliders::toggle(const QString& row) const
 {
+    for (const Control& c : m_controls)
+        for (const auto& side : c.sides)
+            if (qs(side.first->control) == row)
+                return side.second;
     const Control* s = find(row);
     return s ? s->toggle : nullptr;
 }

@@ -13,7 +13,10 @@
 #include <QStringList>
 #include <QWidget>
 
+#include <utility>
+
 class QComboBox;
+class QFont;
 class QGridLayout;
 class QLabel;
 class QPushButton;
@@ -40,7 +43,8 @@ public:
     int count() const { return static_cast<int>(m_controls.size()); }
     /// The slider of a number row ("gravity_y"), or null.
     NumberControl* slider(const QString& row) const;
-    /// The On/Off button of a switch row ("resting"), or null.
+    /// The On/Off button of a switch row ("resting"), or null. The wall
+    /// sides ("walls") are four buttons: "wall_left" … "wall_bottom".
     QPushButton* toggle(const QString& row) const;
     /// The list of a choice row ("wall_model"), or null.
     QComboBox* choice(const QString& row) const;
@@ -59,8 +63,15 @@ private:
         NumberControl* slider = nullptr;
         QPushButton* toggle = nullptr;
         QComboBox* list = nullptr;
+        // The panel's own rows: the wall sides (one button per side, each
+        // its table row) and the spawn's fully_inside switch (toggle set).
+        QWidget* sidesField = nullptr;
+        QList<std::pair<const sim::Parameter*, QPushButton*>> sides;
+        bool spawnInside = false;
         QWidget* widget() const;
     };
+    Control makeWallSides(const QFont& big);
+    Control makeFullyInside(const QFont& big);
     NumberControl* makeSlider(const sim::Parameter* p, const QString& row);
     const Control* find(const QString& row) const; // the control of a row, or null
 

@@ -416,10 +416,15 @@ bool MainWindow::setLesson(const Lesson& lesson)
     overlays.ghost = m_accuracyDock->isGhostDrawn(); // the student's switch, not the lesson's
     m_stage->setOverlays(overlays);
     m_overlayActions->sync(); // the lesson's choice is the default; the Show menu follows it
+    // A lesson whose readout talks about ball 0 opens with ball 0 selected
+    // for real (the ring it draws round it is the selection's), so the
+    // Inspector, the ball table and a click agree with what the ring says.
+    const int start = overlays.readout && !m_controller->world().balls().empty() ? 0 : -1;
     m_canvas->setSelectedBall(-1);
+    m_canvas->setSelectedBall(start);
     m_canvas->fitBox(); // a lesson opens on its whole box
     m_canvas->setTrailScope(TrailRecorder::Scope::All);
-    m_inspectorDock->setSelectedBall(-1);
+    m_inspectorDock->setSelectedBall(start);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     m_codeDock->setLessonControls(lesson.controls);
     m_predictDock->setLesson(lesson);
