@@ -276,6 +276,10 @@ void GuiStageTest::everyListedRowHasAStageControl()
     for (const QString& name : LessonLoader::controlNames())
         for (const QString& row : lessons::controlRows().value(name)) {
             const sim::Parameter* p = sim::findControl(row.toStdString());
+            if (row.startsWith(QStringLiteral("spawn_")) && row.endsWith(QStringLiteral("_speed"))) {
+                QVERIFY2(sliders.slider(row), qPrintable(row + QStringLiteral(": no slider on the stage")));
+                continue;
+            }
             if (panelRowsOnTheStage.contains(row)) {
                 const QString side = row == QStringLiteral("wall_sides") ? QStringLiteral("wall_bottom") : row;
                 QVERIFY2(sliders.toggle(side), qPrintable(row + QStringLiteral(": no control on the stage")));
@@ -399,6 +403,31 @@ void GuiStageTest::stageWallSidesOpenAWall()
     QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
     QTRY_VERIFY(!window.controller()->spawn().fullyInside);
     QVERIFY(!inside->isChecked());
+
+    // Lesson 02's "change the spawn speed range": the fastest random ball's
+    // slider, let go at its lowest, places every random ball again at most
+    // that fast; undo brings back the lesson's balls.
+    QVERIFY(window.openLesson(QStringLiteral("animation")));
+    if (more->isVisible())
+        more->setChecked(true);
+    NumberControl* fastest = controls->slider(QStringLiteral("spawn_max_speed"));
+    QVERIFY(fastest && controls->slider(QStringLiteral("spawn_min_speed")));
+    scroll->ensureWidgetVisible(fastest);
+    QTRY_VERIFY(fastest->isVisible());
+    const double lessonFastest = window.controller()->spawn().maxSpeed;
+    const double lessonSlowest = window.controller()->spawn().minSpeed;
+    QVERIFY(lessonFastest > lessonSlowest);
+    fastest->slider()->setSliderDown(true);
+    fastest->slider()->setValue(fastest->positionFor(lessonSlowest));
+    fastest->slider()->setSliderDown(false); // released: the balls are placed again
+    QTRY_COMPARE(window.controller()->spawn().maxSpeed, lessonSlowest);
+    const sim::World& world = window.controller()->world();
+    const int random = window.controller()->spawn().count; // placed after the lesson's own balls
+    QVERIFY(random > 0);
+    for (int i = world.balls().size() - random; i < world.balls().size(); ++i)
+        QVERIFY2(world.balls().velocity.col(i).norm() <= lessonSlowest + 1e-9, qPrintable(QString::number(i)));
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+    QTRY_COMPARE(window.controller()->spawn().maxSpeed, lessonFastest);
 }
 
 // A lesson's switches and choices are on the stage too. Lesson 35's

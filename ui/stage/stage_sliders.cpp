@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QSlider>
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +68,10 @@ void StageSliders::setLessonControls(const QStringList& controls)
             }
             if (row == QStringLiteral("fully_inside")) {
                 m_controls.append(makeFullyInside(big));
+                continue;
+            }
+            if (row == QStringLiteral("spawn_min_speed") || row == QStringLiteral("spawn_max_speed")) {
+                m_controls.append(makeSpawnSpeed(big, row));
                 continue;
             }
             // The others are left to the panel on purpose (the seed, the ball
@@ -200,6 +205,48 @@ StageSliders::Control StageSliders::makeFullyInside(const QFont& big)
     return s;
 }
 
+StageSliders::Control StageSliders::makeSpawnSpeed(const QFont& big, const QString& row)
+{
+    // Stage 2 asks the class to change the range random balls' speeds are
+    // drawn from: a slider per end, which places the balls again when let
+    // go (not at every pixel of the drag), as the panel's field does. A
+    // slowest speed above the fastest is refused by the world, not clamped.
+    Control s;
+    s.row = row;
+    s.spawnSpeed = row == QLatin1String("spawn_min_speed") ? 1 : 2;
+    NumberControl::Spec spec;
+    spec.min = 0.0;
+    spec.max = 1e7; // the lesson reader's range for spawn.speed
+    spec.sliderMin = 0.0;
+    spec.sliderMax = 1000.0;
+    spec.decimals = 0;
+    s.slider = new NumberControl(QStringLiteral("stage_%1").arg(row), spec, this);
+    s.slider->spinBox()->hide();
+    s.slider->slider()->setMinimumHeight(36);
+    s.slider->slider()->setAccessibleName(s.spawnSpeed == 1 ? tr("Slowest random ball") : tr("Fastest random ball"));
+    const bool slowest = s.spawnSpeed == 1;
+    auto apply = [this, slowest](double v) {
+        sim::SpawnSettings spawn = m_controller->spawn();
+        (slowest ? spawn.minSpeed : spawn.maxSpeed) = v;
+        const sim::SpawnSettings before = m_controller->spawn();
+        if (spawn.minSpeed == before.minSpeed && spawn.maxSpeed == before.maxSpeed)
+            return;
+        if (!m_editor->editSpawn(tr("Random balls from %1 to %2 px/s").arg(spawn.minSpeed).arg(spawn.maxSpeed), spawn))
+            refresh();
+    };
+    NumberControl* slider = s.slider;
+    connect(slider, &NumberControl::valueEdited, this, [apply](double v, bool dragging) {
+        if (!dragging)
+            apply(v);
+    });
+    connect(slider->slider(), &QSlider::sliderReleased, this, [apply, slider] { apply(slider->value()); });
+    s.label = new QLabel(this);
+    s.label->setObjectName(QStringLiteral("stage_%1Label").arg(row));
+    s.label->setFont(big);
+    s.label->setWordWrap(true);
+    return s;
+}
+
 QWidget* StageSliders::Control::widget() const
 {
     if (sidesField)
@@ -287,6 +334,16 @@ void StageSliders::refresh()
                     on << button->text().toLower();
             }
             s.label->setText(tr("Walls: <b>%1</b>").arg(on.isEmpty() ? tr("none") : on.join(QStringLiteral(", "))));
+            continue;
+        }
+        if (s.spawnSpeed != 0) {
+            const double speed = s.spawnSpeed == 1 ? m_controller->spawn().minSpeed : m_controller->spawn().maxSpeed;
+            if (!s.slider->isSliderDown())
+                s.slider->setValue(speed);
+            const ShownUnit u = shownUnit(QStringLiteral("px/s"), displayUnits());
+            s.label->setText((s.spawnSpeed == 1 ? tr("Slowest random ball: <b>%1</b> %2")
+                                                : tr("Fastest random ball: <b>%1</b> %2"))
+                                 .arg(QString::number(u.toShown(speed), 'g', 4), u.text.toHtmlEscaped()));
             continue;
         }
         if (s.spawnInside) {

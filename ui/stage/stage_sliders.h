@@ -68,10 +68,12 @@ private:
         QWidget* sidesField = nullptr;
         QList<std::pair<const sim::Parameter*, QPushButton*>> sides;
         bool spawnInside = false;
+        int spawnSpeed = 0; // 1: the slowest random ball's speed, 2: the fastest's (slider set)
         QWidget* widget() const;
     };
     Control makeWallSides(const QFont& big);
     Control makeFullyInside(const QFont& big);
+    Control makeSpawnSpeed(const QFont& big, const QString& row);
     NumberControl* makeSlider(const sim::Parameter* p, const QString& row);
     const Control* find(const QString& row) const; // the control of a row, or null
 
