@@ -145,6 +145,15 @@ void NumberSlider::keyPressEvent(QKeyEvent* e)
     QSlider::keyPressEvent(e);
 }
 
+NumberControl::Spec NumberControl::spawnSpeedSpec()
+{
+    Spec s;
+    s.max = 1e7; // the lesson reader's range for spawn.speed
+    s.sliderMax = 1000.0;
+    s.decimals = 0;
+    return s;
+}
+
 NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidget* parent)
     : QWidget(parent)
     , m_spec(spec)

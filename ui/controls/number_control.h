@@ -78,6 +78,11 @@ public:
         QString suffix;
     };
 
+    /// A random ball's starting speed, px/s (the panel's and the stage's
+    /// spawn speed rows): typed up to the lesson reader's limit, a slider to
+    /// 1000 px/s, whole numbers.
+    static Spec spawnSpeedSpec();
+
     NumberControl(const QString& objectName, const Spec& spec, QWidget* parent = nullptr);
 
     /// A new range, slider span, digits and unit (the units shown changed,

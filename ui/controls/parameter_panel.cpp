@@ -666,25 +666,17 @@ void ParameterPanel::addBallCount()
 void ParameterPanel::addSpawnSpeed(const QString& row)
 {
     // The range random balls' speeds are drawn from (stage 2: "change the
-    // spawn speed range"). Like the count, a final value places the balls again.
+    // spawn speed range"). Like the count, a final value places the balls
+    // again; a slowest speed above the fastest is refused by the world with
+    // its message, and the panel shows the range that stands.
     const bool slowest = row == QLatin1String("spawn_min_speed");
-    NumberControl::Spec s;
-    s.min = 0.0;
-    s.max = 1e7; // the lesson reader's range for spawn.speed
-    s.sliderMin = 0.0;
-    s.sliderMax = 1000.0;
-    s.decimals = 0;
+    NumberControl::Spec s = NumberControl::spawnSpeedSpec();
     s.suffix = QStringLiteral(" px/s");
     auto* control = new NumberControl(slowest ? QStringLiteral("spawnMinSpeed") : QStringLiteral("spawnMaxSpeed"), s,
                                       currentSection().box);
     auto apply = [this, slowest](double v) {
-        sim::SpawnSettings spawn = m_controller->spawn();
-        (slowest ? spawn.minSpeed : spawn.maxSpeed) = v;
-        // A slowest speed above the fastest is refused by the world with its
-        // message, and the panel shows the old range again (editSpawn).
-        const sim::SpawnSettings before = m_controller->spawn();
-        if (spawn.minSpeed != before.minSpeed || spawn.maxSpeed != before.maxSpeed)
-            editSpawn(tr("Random balls from %1 to %2 px/s").arg(spawn.minSpeed).arg(spawn.maxSpeed), spawn);
+        if (!m_refreshing && !m_editor->editSpawnSpeed(slowest, v))
+            refresh();
     };
     connect(control, &NumberControl::valueEdited, this, [apply](double v, bool dragging) {
         if (!dragging)

@@ -43,6 +43,16 @@ bool SettingsEditor::editSpawn(const QString& text, const sim::SpawnSettings& sp
     return accepted;
 }
 
+bool SettingsEditor::editSpawnSpeed(bool slowest, double speed)
+{
+    sim::SpawnSettings spawn = m_controller->spawn();
+    (slowest ? spawn.minSpeed : spawn.maxSpeed) = speed;
+    const sim::SpawnSettings& before = m_controller->spawn();
+    if (spawn.minSpeed == before.minSpeed && spawn.maxSpeed == before.maxSpeed)
+        return false;
+    return editSpawn(tr("Random balls from %1 to %2 px/s").arg(spawn.minSpeed).arg(spawn.maxSpeed), spawn);
+}
+
 bool SettingsEditor::editTimeScale(double scale, int session)
 {
     const double before = m_controller->timeScale();

@@ -42,6 +42,11 @@ public:
     bool editSettings(const QString& text, const std::function<void(sim::WorldSettings&)>& change, EditMerge merge = {});
     /// New random balls: the world restarts. False when refused.
     bool editSpawn(const QString& text, const sim::SpawnSettings& spawn);
+    /// One end of the random balls' speed range, px/s (`slowest`, or the
+    /// fastest): places the balls again, one undo step. False when nothing
+    /// changed or the world refused it (a slowest speed above the fastest,
+    /// with its message; nothing is clamped).
+    bool editSpawnSpeed(bool slowest, double speed);
     /// A new time scale; `session` ≥ 0 merges one drag into one step. False
     /// when the speed did not change (already at that speed, or out of range).
     bool editTimeScale(double scale, int session = -1);

@@ -214,24 +214,13 @@ StageSliders::Control StageSliders::makeSpawnSpeed(const QFont& big, const QStri
     Control s;
     s.row = row;
     s.spawnSpeed = row == QLatin1String("spawn_min_speed") ? 1 : 2;
-    NumberControl::Spec spec;
-    spec.min = 0.0;
-    spec.max = 1e7; // the lesson reader's range for spawn.speed
-    spec.sliderMin = 0.0;
-    spec.sliderMax = 1000.0;
-    spec.decimals = 0;
-    s.slider = new NumberControl(QStringLiteral("stage_%1").arg(row), spec, this);
+    s.slider = new NumberControl(QStringLiteral("stage_%1").arg(row), NumberControl::spawnSpeedSpec(), this);
     s.slider->spinBox()->hide();
     s.slider->slider()->setMinimumHeight(36);
     s.slider->slider()->setAccessibleName(s.spawnSpeed == 1 ? tr("Slowest random ball") : tr("Fastest random ball"));
     const bool slowest = s.spawnSpeed == 1;
     auto apply = [this, slowest](double v) {
-        sim::SpawnSettings spawn = m_controller->spawn();
-        (slowest ? spawn.minSpeed : spawn.maxSpeed) = v;
-        const sim::SpawnSettings before = m_controller->spawn();
-        if (spawn.minSpeed == before.minSpeed && spawn.maxSpeed == before.maxSpeed)
-            return;
-        if (!m_editor->editSpawn(tr("Random balls from %1 to %2 px/s").arg(spawn.minSpeed).arg(spawn.maxSpeed), spawn))
+        if (!m_editor->editSpawnSpeed(slowest, v))
             refresh();
     };
     NumberControl* slider = s.slider;
