@@ -52,9 +52,9 @@ struct ShownUnit {
     double kgPerMass = 1.0;
 
     /// A value in px and mass units as shown: × (1 / pxPerMetre)^px × kgPerMass^mass,
-    /// to 15 significant digits, so 980 px/s² is 9.8 m/s² exactly as typed, and back.
-    /// Divisions and multiplications by whole powers of the scales, not by
-    /// a rounded reciprocal, so 980 px/s² is 9.8 m/s² exactly as typed, and back.
+    /// by divisions and multiplications by whole powers of the scales (not
+    /// by a rounded reciprocal) and to 15 significant digits, so 980 px/s²
+    /// is 9.8 m/s² exactly as typed, and back.
     double toShown(double pixelValue) const;
     /// A shown value back in px and mass units.
     double fromShown(double shownValue) const;

@@ -271,6 +271,9 @@ void StageView::layoutStage()
         const int most = std::max(least, area.height() / 4);
         const bool sliders = m_sliders->count() > 0;
         m_bar->unfitChallenge(); // its size hint at its own font, whatever room it had before
+        // Measured with the Sliders button in the row whenever there are
+        // sliders: when they fit after all it goes, and the caption has more room.
+        m_slidersAction->setVisible(sliders);
         const int oneRow = m_bar->rowHeightAtFloor(area.width(), 1);
         const int twoRows = m_bar->rowHeightAtFloor(area.width(), 2);
         m_bar->setButtonRows(oneRow <= least || oneRow <= twoRows ? 1 : 2);
