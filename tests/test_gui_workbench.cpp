@@ -64,6 +64,17 @@ sim::Scene plainScene()
     return scene;
 }
 
+// The plain scene in a controller, with an editor and the Parameters panel
+// showing every row, and a spy on the controller's errors.
+struct PanelBench {
+    SimulationController controller;
+    bool sceneSet = !controller.setScene(plainScene());
+    SettingsEditor editor{&controller};
+    ParameterPanel panel{&controller, &editor};
+    QSignalSpy errors{&controller, &SimulationController::errorOccurred};
+    PanelBench() { panel.setShowAll(true); }
+};
+
 // One control of the table: the widget to set, the value to give it, and how
 // to read back the field it edits (enums as their index, switches as 0 / 1).
 struct ControlCase {
@@ -360,12 +371,12 @@ void GuiWorkbenchTest::hostileLessonsAreRefusedAndTheLessonStays()
 // the balls stay as they were (nothing clamped).
 void GuiWorkbenchTest::slowestSpawnAboveFastestIsRefused()
 {
-    SimulationController controller;
-    QVERIFY(!controller.setScene(plainScene()));
-    SettingsEditor editor(&controller);
-    ParameterPanel panel(&controller, &editor);
-    panel.setShowAll(true);
-    QSignalSpy errors(&controller, &SimulationController::errorOccurred);
+    PanelBench bench;
+    QVERIFY(bench.sceneSet);
+    SimulationController& controller = bench.controller;
+    SettingsEditor& editor = bench.editor;
+    ParameterPanel& panel = bench.panel;
+    QSignalSpy& errors = bench.errors;
     auto* slowest = panel.findChild<QDoubleSpinBox*>(QStringLiteral("spawnMinSpeedSpin"));
     QVERIFY(slowest);
     const sim::SpawnSettings before = controller.spawn();
@@ -427,12 +438,12 @@ void GuiWorkbenchTest::eachControlEditsItsFieldAndUndoes()
 {
     QFETCH(int, index);
     const ControlCase& c = controlCases()[std::size_t(index)];
-    SimulationController controller;
-    QVERIFY(!controller.setScene(plainScene()));
-    SettingsEditor editor(&controller);
-    ParameterPanel panel(&controller, &editor);
-    panel.setShowAll(true);
-    QSignalSpy errors(&controller, &SimulationController::errorOccurred);
+    PanelBench bench;
+    QVERIFY(bench.sceneSet);
+    SimulationController& controller = bench.controller;
+    SettingsEditor& editor = bench.editor;
+    ParameterPanel& panel = bench.panel;
+    QSignalSpy& errors = bench.errors;
 
     QWidget* w = panel.findChild<QWidget*>(QString::fromLatin1(c.widget));
     QVERIFY2(w, c.widget);
