@@ -373,22 +373,18 @@ void GuiWorkbenchTest::slowestSpawnAboveFastestIsRefused()
 {
     PanelBench bench;
     QVERIFY(bench.sceneSet);
-    SimulationController& controller = bench.controller;
-    SettingsEditor& editor = bench.editor;
-    ParameterPanel& panel = bench.panel;
-    QSignalSpy& errors = bench.errors;
-    auto* slowest = panel.findChild<QDoubleSpinBox*>(QStringLiteral("spawnMinSpeedSpin"));
+    auto* slowest = bench.panel.findChild<QDoubleSpinBox*>(QStringLiteral("spawnMinSpeedSpin"));
     QVERIFY(slowest);
-    const sim::SpawnSettings before = controller.spawn();
-    const int steps = editor.undoStack()->count();
+    const sim::SpawnSettings before = bench.controller.spawn();
+    const int steps = bench.editor.undoStack()->count();
     QVERIFY(setWidget(slowest, before.maxSpeed + 100.0));
-    QCOMPARE(errors.count(), 1);
-    QVERIFY2(errors.first().first().toString().contains(QStringLiteral("spawn.speed")),
-             qPrintable(errors.first().first().toString()));
-    QCOMPARE(controller.spawn().minSpeed, before.minSpeed);
-    QCOMPARE(controller.spawn().maxSpeed, before.maxSpeed);
+    QCOMPARE(bench.errors.count(), 1);
+    QVERIFY2(bench.errors.first().first().toString().contains(QStringLiteral("spawn.speed")),
+             qPrintable(bench.errors.first().first().toString()));
+    QCOMPARE(bench.controller.spawn().minSpeed, before.minSpeed);
+    QCOMPARE(bench.controller.spawn().maxSpeed, before.maxSpeed);
     QCOMPARE(slowest->value(), before.minSpeed); // the field shows the range that stands
-    QCOMPARE(editor.undoStack()->count(), steps);
+    QCOMPARE(bench.editor.undoStack()->count(), steps);
 }
 
 void GuiWorkbenchTest::tableCoversEveryControl()
