@@ -288,12 +288,11 @@ void StageView::layoutStage()
         m_slidersAction->setVisible(sliders && !fit);
         const bool asked = sliders && !fit && m_slidersAction->isChecked();
         m_bar->setSlidersShown(sliders && (fit || asked));
-        minimum = std::clamp(m_bar->sizeHint().height(), 96, cap);
-        if (sliders && fit)
-            minimum = std::clamp(std::max(m_bar->sizeHint().height(), cap + slidersHeight), 96, room);
         if (asked) // the bar as without them, plus the rows of sliders
             minimum = std::min(cap + slidersHeight, area.height() * 2 / 5);
-        else if (!sliders || !fit)
+        else if (sliders && fit)
+            minimum = std::clamp(std::max(m_bar->sizeHint().height(), cap + slidersHeight), 96, room);
+        else
             minimum = cap;
     } else {
         m_slidersAction->setVisible(false);
