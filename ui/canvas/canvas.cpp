@@ -214,6 +214,12 @@ void Canvas::setAutoArrows(bool on)
     update();
 }
 
+void Canvas::setArrowLegendCard(bool on)
+{
+    m_options.arrowLegendCard = on;
+    update();
+}
+
 void Canvas::setColors(const CanvasColors& colors)
 {
     m_colors = colors;
@@ -459,6 +465,10 @@ void Canvas::paintEvent(QPaintEvent*)
         paintStartHint(painter);
     ++m_frames;
     m_lastPaintMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+    if (const QList<ArrowLegendRow>& rows = m_painter.lastFrame().arrowLegendRows; rows != m_arrowLegend) {
+        m_arrowLegend = rows;
+        emit arrowLegendChanged(rows);
+    }
 }
 
 void Canvas::mouseMoveEvent(QMouseEvent* event)

@@ -70,6 +70,9 @@ public:
     void setBoxMargin(double pixels);
     /// Arrows scaled so a typical one is readable (WorldPainter::kArrowPixels).
     void setAutoArrows(bool on);
+    /// false: the arrow legend is not drawn on the canvas but sent with
+    /// arrowLegendChanged (the stage bar shows it, off the box).
+    void setArrowLegendCard(bool on);
     /// Without auto arrows: the lesson's arrow scales times `factor`.
     void setArrowFactor(double factor);
     /// Auto arrows keep one scale through a run (and a Reset): these make it
@@ -229,6 +232,9 @@ public slots:
     void setFollowing(bool on);
 
 signals:
+    /// The arrow legend's rows changed (empty: no arrows drawn); sent after
+    /// the frame that drew them.
+    void arrowLegendChanged(const QList<ArrowLegendRow>& rows);
     /// The camera moved or zoomed, or following started or stopped.
     void cameraChanged();
     /// "Edit" of the right-click menu: show ball `index` in the ball table.
@@ -324,6 +330,7 @@ private:
     bool m_panning = false;     // a pan drag is under way
     QPointF m_panFrom;          // widget px, the pointer at the last pan move
     qint64 m_frames = 0;
+    QList<ArrowLegendRow> m_arrowLegend; // as last sent with arrowLegendChanged
     double m_lastPaintMs = 0.0;
 };
 

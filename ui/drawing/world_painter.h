@@ -99,6 +99,7 @@ struct PaintOptions {
     double arrowFactor = 1.0;       ///< without autoArrows: the fixed scales are multiplied by this
     double forceScale = 0.05;       ///< s² per unit of mass: a force arrow is F × this
     bool incrementalPaths = true;   ///< false: every path is redrawn whole each frame (the reference for tests)
+    bool arrowLegendCard = true;    ///< false: the arrow legend is only reported (PaintedFrame::arrowLegendRows), for the stage bar to show
     const TrailRecorder* trails = nullptr;    ///< drawn when overlays.trails; not owned
     const CollisionView* collision = nullptr; ///< drawn when overlays.impact; not owned
     const sim::World* ghost = nullptr;        ///< drawn as outlines when overlays.ghost; not owned
@@ -144,12 +145,21 @@ struct CanvasColors {
     bool ringMarked = false;      ///< balls touching another also get a thick ring (not colour alone)
 };
 
+/// One row of the arrow legend: a sample arrow and what it stands for.
+struct ArrowLegendRow {
+    double pixels = 0.0; ///< widget px, the sample arrow's length at the frame's scale
+    QString label;       ///< "100 px/s (velocity)", in the shown units
+    QRgb color = 0;      ///< the arrows' colour
+    bool operator==(const ArrowLegendRow&) const = default;
+};
+
 /// What the last paint() drew, for tests: the momenta inset's numbers and
 /// whether the path layer was drawn afresh.
 struct PaintedFrame {
     std::vector<double> forceLengths; ///< widget px, one per net force arrow drawn
     std::vector<double> velocityLengths; ///< widget px, one per ball whose velocity arrow is drawn (0: too short to draw)
     QStringList arrowLegend;          ///< the arrow legend's lines as drawn (empty: none)
+    QList<ArrowLegendRow> arrowLegendRows; ///< the legend's rows, drawn on a card or not (PaintOptions::arrowLegendCard)
     double forceScale = 0.0;          ///< s² per unit of mass, the scale the force arrows used
     std::vector<sim::Vec2> momenta;   ///< mass·px/s, each ball's momentum (the inset's arrows)
     sim::Vec2 momentumSum{0, 0};      ///< mass·px/s, their sum

@@ -1,9 +1,12 @@
 #include "ui/stage/stage_bar.h"
 
+#include "ui/stage/arrow_legend_view.h"
+
 #include <QAction>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QScrollArea>
 #include <QToolButton>
@@ -41,6 +44,7 @@ StageBar::StageBar(const QList<QAction*>& transport, QWidget* parent)
     m_readout->installEventFilter(this);
     m_challenge->installEventFilter(this);
     m_readout->hide();
+    m_legend = new ArrowLegendView(this);
     for (QAction* action : transport) {
         auto* b = new QToolButton(this);
         b->setDefaultAction(action);
@@ -85,6 +89,9 @@ void StageBar::applyFonts()
     mono.setPointSizeF(std::max(text.pointSizeF(), pointsOfPixels(m_textFloor)));
     m_readout->setFont(mono);
     m_readoutFont = mono;
+    QFont legend = mono; // read as the readout is
+    legend.setFamily(font().family());
+    m_legend->setFont(legend);
     m_fitFont = mono;
     m_fitKey = {}; // the readout's size is searched for again
     for (QToolButton* b : m_buttons)
@@ -135,6 +142,14 @@ void StageBar::setReadout(const QString& text)
     if (!m_vertical && m_readout->isHidden() != wasHidden)
         setVertical(false); // in a row the caption takes the readout's room when there is none
     fitReadout();
+}
+
+void StageBar::setArrowLegend(const QList<ArrowLegendRow>& rows)
+{
+    m_legend->setRows(rows);
+    m_legend->setVisible(m_legend->hasRows());
+    if (!m_vertical && legendUnderReadout(width(), m_buttonRows) != m_legendUnderReadout)
+        setVertical(false);
 }
 
 namespace {
@@ -296,8 +311,9 @@ double StageBar::readoutPointSize(const QString& text) const
         .font.pointSizeF();
 }
 
-// The width of a row bar's widest row of shown buttons, spacing included.
-int StageBar::rowButtonsWidth(int rows) const
+// The width of a row bar's widest row of shown buttons, spacing included,
+// and of the arrow legend under them when it goes there.
+int StageBar::rowButtonsWidth(int rows, bool withLegend) const
 {
     QList<const QToolButton*> shown;
     for (const QToolButton* b : m_buttons)
@@ -311,7 +327,53 @@ int StageBar::rowButtonsWidth(int rows) const
             w += std::max(shown[i]->minimumWidth(), shown[i]->sizeHint().width()) + m_grid->horizontalSpacing();
         widest = std::max(widest, w);
     }
+    if (withLegend && !m_legend->isHidden())
+        widest = std::max(widest, m_legend->sizeHint().width() + m_grid->horizontalSpacing());
     return widest;
+}
+
+// The height of a row bar's buttons in `rows` rows, without the legend.
+int StageBar::rowButtonsHeight(int rows) const
+{
+    int buttonHeight = 0;
+    for (const QToolButton* b : m_buttons)
+        if (!b->isHidden())
+            buttonHeight = std::max({buttonHeight, b->minimumHeight(), b->sizeHint().height()});
+    return rows * buttonHeight + (rows - 1) * m_grid->verticalSpacing();
+}
+
+// The readout at its starting size in the text columns that make it
+// lowest within 60% of `free` (sizeReadoutColumn's most); empty when the
+// bar shows none.
+QSize StageBar::rowReadoutAtFloor(int free) const
+{
+    if (m_readout->isHidden() || m_readoutText.isEmpty())
+        return {};
+    const QStringList lines = m_readoutText.split(QLatin1Char('\n'));
+    QSize best = textSize(m_readoutFont, lines);
+    for (int columns = 2; columns <= kMostReadoutColumns; ++columns) {
+        const QStringList flowed = flowLines(lines, columns);
+        if (flowed.isEmpty())
+            continue;
+        const QSize s = textSize(m_readoutFont, flowed);
+        if (best.width() > free * 6 / 10 || (s.width() <= free * 6 / 10 && s.height() < best.height()))
+            best = s;
+    }
+    return best;
+}
+
+// In a row the arrow legend goes under the readout when the two together
+// are no taller than the buttons and the legend fits the readout's widest
+// column; else under the buttons (which may make the bar taller).
+bool StageBar::legendUnderReadout(int width, int rows) const
+{
+    if (m_legend->isHidden() || m_readout->isHidden() || m_readoutText.isEmpty())
+        return false;
+    const QMargins margins = m_grid->contentsMargins();
+    const int free = width - margins.left() - margins.right() - rowButtonsWidth(rows, false) - m_grid->horizontalSpacing();
+    const QSize legend = m_legend->sizeHint();
+    return rowReadoutAtFloor(free).height() + m_grid->verticalSpacing() + legend.height() <= rowButtonsHeight(rows) &&
+           legend.width() <= free * 6 / 10;
 }
 
 int StageBar::rowHeightAtFloor(int width, int rows) const
@@ -319,28 +381,21 @@ int StageBar::rowHeightAtFloor(int width, int rows) const
     const QMargins margins = m_grid->contentsMargins();
     const int hs = m_grid->horizontalSpacing();
     const int vs = m_grid->verticalSpacing();
-    int buttonHeight = 0;
-    for (const QToolButton* b : m_buttons)
-        if (!b->isHidden())
-            buttonHeight = std::max({buttonHeight, b->minimumHeight(), b->sizeHint().height()});
-    const int buttons = rows * buttonHeight + (rows - 1) * vs;
-    int free = width - margins.left() - margins.right() - rowButtonsWidth(rows) - hs;
-    // The readout in the text columns that make it lowest within 60% of
-    // what the buttons leave (sizeReadoutColumn's most).
-    int readout = 0;
-    if (!m_readout->isHidden() && !m_readoutText.isEmpty()) {
-        const QStringList lines = m_readoutText.split(QLatin1Char('\n'));
-        QSize best = textSize(m_readoutFont, lines);
-        for (int columns = 2; columns <= kMostReadoutColumns; ++columns) {
-            const QStringList flowed = flowLines(lines, columns);
-            if (flowed.isEmpty())
-                continue;
-            const QSize s = textSize(m_readoutFont, flowed);
-            if (best.width() > free * 6 / 10 || (s.width() <= free * 6 / 10 && s.height() < best.height()))
-                best = s;
+    const bool under = legendUnderReadout(width, rows);
+    const QSize legend = m_legend->isHidden() ? QSize() : m_legend->sizeHint();
+    int buttons = rowButtonsHeight(rows);
+    if (!m_legend->isHidden() && !under)
+        buttons += vs + legend.height();
+    int free = width - margins.left() - margins.right() - rowButtonsWidth(rows, !under) - hs;
+    const QSize shown = rowReadoutAtFloor(free);
+    int readout = shown.height();
+    if (!shown.isEmpty()) {
+        int readoutWidth = std::min(shown.width(), free * 6 / 10);
+        if (under) {
+            readout += vs + legend.height();
+            readoutWidth = std::max(readoutWidth, legend.width());
         }
-        readout = best.height();
-        free -= std::min(best.width(), free * 6 / 10) + hs;
+        free -= readoutWidth + hs;
     }
     if (free <= 0)
         return QWIDGETSIZE_MAX;
@@ -357,7 +412,8 @@ int StageBar::columnWidthAtFloor(const QString& readout) const
     for (qsizetype i = 0; i < std::min<qsizetype>(2, m_buttons.size()); ++i)
         buttons += std::max(m_buttons[i]->minimumWidth(), m_buttons[i]->sizeHint().width());
     const int lines = readout.isEmpty() ? 0 : textSize(m_readoutFont, readout.split(QLatin1Char('\n'))).width() + 2;
-    return std::max(buttons, lines) + margins.left() + margins.right();
+    const int legend = m_legend->isHidden() ? 0 : m_legend->sizeHint().width();
+    return std::max({buttons, lines, legend}) + margins.left() + margins.right();
 }
 
 void StageBar::setButtonRows(int rows)
@@ -428,7 +484,8 @@ void StageBar::sizeReadoutColumn(const QStringList& lines)
 {
     const QMargins margins = m_grid->contentsMargins();
     const int spacing = m_grid->horizontalSpacing();
-    const int free = width() - margins.left() - margins.right() - rowButtonsWidth(m_buttonRows) - spacing;
+    const int free =
+        width() - margins.left() - margins.right() - rowButtonsWidth(m_buttonRows, !m_legendUnderReadout) - spacing;
     if (free <= 0)
         return;
     const int tall = m_readout->contentsRect().height() > 0 ? m_readout->contentsRect().height()
@@ -453,6 +510,8 @@ void StageBar::sizeReadoutColumn(const QStringList& lines)
         while (want - 8 >= least && !challengeFits(want))
             want -= 8;
     }
+    if (m_legendUnderReadout) // the legend shares the readout's column
+        want = std::max(want, m_legend->sizeHint().width());
     if (std::abs(want - m_readoutColumn) <= 12)
         return;
     m_readoutColumn = want;
@@ -525,6 +584,8 @@ bool StageBar::eventFilter(QObject* watched, QEvent* event)
 void StageBar::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
+    if (!m_vertical && legendUnderReadout(width(), m_buttonRows) != m_legendUnderReadout)
+        setVertical(false);
     fitReadout();
     // In a row the readout's and the challenge's cells are known once the
     // grid has laid out.
@@ -596,8 +657,8 @@ void StageBar::stretchColumnRows()
 {
     const int after = 2 + static_cast<int>((m_buttons.size() + 1) / 2);
     const bool sliders = m_sliders && !m_sliders->isHidden();
-    m_grid->setRowStretch(after + 1, sliders ? 1 : 0);
-    m_grid->setRowStretch(after + 2, sliders ? 0 : 1);
+    m_grid->setRowStretch(after + 2, sliders ? 1 : 0);
+    m_grid->setRowStretch(after + 3, sliders ? 0 : 1);
 }
 
 void StageBar::setVertical(bool vertical)
@@ -612,6 +673,7 @@ void StageBar::setVertical(bool vertical)
         m_grid->setColumnMinimumWidth(k, 0);
     }
     m_readoutColumn = 0;
+    m_fitKey = {}; // the readout's column and size are found again in the new grid
     // A row has six buttons across when the lesson's sliders wait for the
     // Sliders button: a little narrower there, so the caption keeps room.
     // In a column the buttons share its width (a layout of fixed-size
@@ -621,6 +683,7 @@ void StageBar::setVertical(bool vertical)
         b->setMinimumWidth(vertical ? 80 : 72);
         b->setSizePolicy(vertical ? QSizePolicy::Preferred : QSizePolicy::Fixed, QSizePolicy::Fixed);
     }
+    m_legendUnderReadout = false;
     if (vertical) {
         // Title, challenge, then the buttons two by two, at the top of the column.
         m_grid->addWidget(m_title, 0, 0, 1, 2);
@@ -629,8 +692,9 @@ void StageBar::setVertical(bool vertical)
             m_grid->addWidget(m_buttons[i], 2 + static_cast<int>(i / 2), static_cast<int>(i % 2));
         const int after = 2 + static_cast<int>((m_buttons.size() + 1) / 2);
         m_grid->addWidget(m_readout, after, 0, 1, 2);
+        m_grid->addWidget(m_legend, after + 1, 0, 1, 2, Qt::AlignLeft);
         if (m_sliders)
-            m_grid->addWidget(m_sliders, after + 1, 0, 1, 2);
+            m_grid->addWidget(m_sliders, after + 2, 0, 1, 2);
         // The column's width goes to its two columns, not to gaps between
         // the fixed-size buttons: the readout and the challenge span both.
         m_grid->setColumnStretch(0, 1);
@@ -642,14 +706,24 @@ void StageBar::setVertical(bool vertical)
         const int captionColumns = m_readout->isHidden() ? 2 : 1;
         m_grid->addWidget(m_title, 0, 0, 1, captionColumns);
         m_grid->addWidget(m_challenge, 1, 0, 1, captionColumns);
-        if (!m_readout->isHidden())
+        m_legendUnderReadout = legendUnderReadout(width(), m_buttonRows);
+        if (m_legendUnderReadout) {
+            auto* column = new QVBoxLayout;
+            column->setSpacing(m_grid->verticalSpacing());
+            column->addWidget(m_readout, 1);
+            column->addWidget(m_legend, 0, Qt::AlignLeft);
+            m_grid->addLayout(column, 0, 1, 2, 1);
+        } else if (!m_readout->isHidden()) {
             m_grid->addWidget(m_readout, 0, 1, 2, 1);
+        }
         // The buttons in one row, or in two when the caption needs their width.
         auto* buttons = new QGridLayout;
         buttons->setSpacing(m_grid->horizontalSpacing());
         const int perRow = static_cast<int>((m_buttons.size() + m_buttonRows - 1) / m_buttonRows);
         for (qsizetype i = 0; i < m_buttons.size(); ++i)
             buttons->addWidget(m_buttons[i], static_cast<int>(i) / perRow, static_cast<int>(i) % perRow);
+        if (!m_legendUnderReadout)
+            buttons->addWidget(m_legend, m_buttonRows, 0, 1, perRow, Qt::AlignLeft);
         m_grid->addLayout(buttons, 0, 2, 2, 1, Qt::AlignTop);
         if (m_sliders) // a row of its own under the caption and the buttons
             m_grid->addWidget(m_sliders, 2, 0, 1, 3);

@@ -19,6 +19,9 @@ class QToolButton;
 
 namespace forcelab {
 
+class ArrowLegendView;
+struct ArrowLegendRow;
+
 class StageBar : public QWidget {
     Q_OBJECT
 public:
@@ -39,6 +42,10 @@ public:
     /// The size `text` would be set at in the readout's room (its own size
     /// while the room is not known yet).
     double readoutPointSize(const QString& text) const;
+    /// The arrow legend (what a sample arrow on the box stands for): under
+    /// the readout in a column, under the buttons in a row; none hides it.
+    void setArrowLegend(const QList<ArrowLegendRow>& rows);
+    const ArrowLegendView* arrowLegend() const { return m_legend; }
     /// The lesson's sliders (StageSliders), under the buttons; not owned before, owned after.
     void setSliders(QWidget* sliders);
     /// Shows or hides the sliders' area (a row bar without room for them).
@@ -82,11 +89,15 @@ private:
     void sizeReadoutColumn(const QStringList& lines);
     void fitChallenge();
     void stretchColumnRows();
-    int rowButtonsWidth(int rows) const;
+    int rowButtonsWidth(int rows, bool withLegend = true) const;
+    int rowButtonsHeight(int rows) const;
+    QSize rowReadoutAtFloor(int free) const;
+    bool legendUnderReadout(int width, int rows) const;
 
     QLabel* m_title = nullptr;
     QLabel* m_challenge = nullptr;
     QLabel* m_readout = nullptr;
+    ArrowLegendView* m_legend = nullptr;
     QWidget* m_sliders = nullptr;
     QString m_readoutText;   // the readout's lines (the label may show them in text columns)
     QFont m_readoutFont;     // the readout's own size, before fitting
@@ -111,6 +122,7 @@ private:
     QGridLayout* m_grid = nullptr;
     bool m_vertical = true;
     int m_buttonRows = 1; // a row bar's rows of buttons
+    bool m_legendUnderReadout = false; // a row's arrow legend is under its readout, not its buttons
     double m_textFloor = 0.0; // px, setTextFloor
     bool m_fitQueued = false; // scheduleFit's call waits in the event queue
 };

@@ -8,6 +8,7 @@
 #include "ui/controls/settings_editor.h"
 #include "ui/canvas/history_recorder.h"
 #include "ui/canvas/simulation_controller.h"
+#include "ui/stage/arrow_legend_view.h"
 #include "ui/stage/stage_bar.h"
 #include "ui/stage/stage_sliders.h"
 
@@ -102,6 +103,14 @@ void StageView::createBar(const QList<QAction*>& actions)
     connect(m_controller, &SimulationController::sceneChanged, this, &StageView::updateReadout);
     connect(m_controller, &SimulationController::seeked, this, &StageView::updateReadout);
     connect(m_bar, &StageBar::readoutRoomChanged, this, &StageView::updateReadout, Qt::QueuedConnection);
+    // The arrow legend goes to the bar; the bar is laid out again when it
+    // gains or loses a row (its height), not for every new arrow length.
+    connect(m_canvas, &Canvas::arrowLegendChanged, this, [this](const QList<ArrowLegendRow>& rows) {
+        const qsizetype before = m_bar->arrowLegend()->isHidden() ? 0 : m_bar->arrowLegend()->rows().size();
+        m_bar->setArrowLegend(rows);
+        if (isStaged() && rows.size() != before) // not inside the canvas's paint event
+            QMetaObject::invokeMethod(this, &StageView::layoutStage, Qt::QueuedConnection);
+    });
 }
 
 void StageView::showBallTable(int index)
@@ -122,6 +131,7 @@ void StageView::setStaged(bool on)
 {
     if (on) {
         m_canvas->setBoxMargin(4.0);
+        m_canvas->setArrowLegendCard(false); // the bar shows it, off the box
         m_canvas->setOverlays(withoutReadouts(m_canvas->overlays()));
         m_bar->setCaption(m_title, m_challenge);
         m_bar->show();
@@ -131,6 +141,7 @@ void StageView::setStaged(bool on)
         m_bar->hide();
         m_ballTable->hide(); // the window's Balls dock shows them
         m_canvas->setBoxMargin(10.0);
+        m_canvas->setArrowLegendCard(true);
         Overlays back = m_canvas->overlays();
         back.readout = m_ownOverlays.readout;
         back.totals = m_ownOverlays.totals;

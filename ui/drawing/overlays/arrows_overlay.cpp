@@ -2,8 +2,9 @@
 // force F = m a [forces] and one force per model that acts [sources], from each
 // ball's centre. They share one set of scales (WorldPainter::arrowScales) and
 // stay on the stage, out of the panels. With autoArrows the scales are kept
-// through a run (PaintOptions::arrowRun), and a legend in the stage's
-// bottom-right corner says what a sample arrow stands for.
+// through a run (PaintOptions::arrowRun). A legend says what a sample arrow
+// stands for: on a card in a free corner, or in the stage bar
+// (PaintOptions::arrowLegendCard), which the box never shares.
 
 #include "overlay_table.h"
 
@@ -51,7 +52,7 @@ void paintSourceArrows(const PaintContext& c, const QList<int>& which, double fo
     }
 }
 
-// One row of the legend: a sample arrow of a round quantity, its colour, its words.
+// One kind of arrow drawn: its name, unit, scale and colour.
 struct LegendRow {
     QString name;
     QString unit;
@@ -91,13 +92,14 @@ void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
         const QString label = QStringLiteral("%1 %2 (%3)")
                                   .arg(QString::fromStdString(sim::numberText(value)), unit.text, row.name);
         drawn.append({pixels, label, row.color});
+        c.frame.arrowLegendRows.append({pixels, label, row.color});
         c.frame.arrowLegend.append(QStringLiteral("%1: arrow %2 px = %3 %4")
                                        .arg(row.name, QString::number(pixels, 'f', 1),
                                             QString::fromStdString(sim::numberText(value)), unit.text));
         widestArrow = std::max(widestArrow, pixels);
         widestLabel = std::max(widestLabel, fm.horizontalAdvance(label));
     }
-    if (drawn.isEmpty())
+    if (drawn.isEmpty() || !c.options.arrowLegendCard)
         return;
     const double pad = 8.0 * k, gap = 10.0 * k, rowHeight = fm.height() + 4.0 * k;
     const double width = widestArrow + gap + widestLabel + 2 * pad;
