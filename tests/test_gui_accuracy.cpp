@@ -8,6 +8,7 @@
 #include "tests/sim_test_util.h"
 #include "ui/docks/accuracy_dock.h"
 #include "ui/canvas/canvas.h"
+#include "ui/drawing/human_number.h"
 #include "ui/window/main_window.h"
 #include "ui/canvas/simulation_controller.h"
 
@@ -64,9 +65,8 @@ double numberIn(const QWidget* root, const char* name)
     auto* label = root->findChild<QLabel*>(QString::fromLatin1(name));
     if (!label)
         return std::nan("");
-    bool ok = false;
-    const double v = label->text().toDouble(&ok);
-    return ok ? v : std::nan("");
+    // As a student reads it: "1.23 × 10⁻⁵", maybe with a unit after it.
+    return humanNumberValue(label->text()).value_or(std::nan(""));
 }
 
 // Runs the paused controller for `seconds` of simulated time in one frame.
@@ -181,7 +181,9 @@ void GuiAccuracyTest::ghostFollowsTheScene()
     const double apart = c->ghostSeparation();
     QVERIFY(apart > 0.0);      // semi-implicit Euler is not ias15
     QVERIFY(apart < 50.0);     // but it is the same orbit
-    QCOMPARE(numberIn(dock, "separation"), std::stod(QString::number(apart, 'e', 2).toStdString()));
+    QCOMPARE(numberIn(dock, "separation"), humanNumberValue(humanNumber(apart, 3)).value());
+    QVERIFY2(dock->findChild<QLabel*>(QStringLiteral("separation"))->text().endsWith(QStringLiteral(" px")),
+             qPrintable(dock->findChild<QLabel*>(QStringLiteral("separation"))->text()));
     QVERIFY(dock->separationChart()->series().size() == 1);
     // Drawn: the outlines change the picture of the same state.
     const QImage with = window.canvas()->renderImage();

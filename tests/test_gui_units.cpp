@@ -16,6 +16,8 @@
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/plots_dock.h"
 #include "ui/drawing/display_units.h"
+#include "ui/drawing/human_number.h"
+#include "ui/canvas/canvas.h"
 #include "ui/drawing/world_painter.h"
 #include "ui/window/main_window.h"
 
@@ -31,6 +33,9 @@
 #include <QChartView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -65,6 +70,7 @@ private slots:
     void typedSiReachesTheWorld();
     void readoutsTableInspectorSpeakSi();
     void scaleDialogSetsTheScale();
+    void toolsSpeakSiToo();
 };
 
 void GuiUnitsTest::conversionClosedForms()
@@ -100,6 +106,16 @@ void GuiUnitsTest::conversionClosedForms()
         QCOMPARE(u.toShown(7.5), 7.5);
     }
     QCOMPARE(shownUnit(QStringLiteral("px/s²"), DisplayUnits{}).text, QStringLiteral("px/s²"));
+
+    // A shown number reads back (the tests and the tools read what a student reads).
+    for (double v : {-1.5e-5, 4.2e9, 12.35, 0.0042, -3.0, 0.0, 123456.0}) {
+        const QString text = humanNumber(v, 4);
+        const std::optional<double> back = humanNumberValue(text + QStringLiteral(" m/s"));
+        QVERIFY2(back && std::abs(*back - v) <= 1e-12 * std::abs(v), qPrintable(text));
+    }
+    QVERIFY(!humanNumberValue(QStringLiteral("m/s")));
+    QVERIFY(!humanNumberValue(QStringLiteral("4.2 × 10")));
+    QCOMPARE(humanNumberValue(QStringLiteral("3.2 m")).value_or(0), 3.2);
     QCOMPARE(shownUnit(QStringLiteral("px/s²"), DisplayUnits{}).toShown(980.0), 980.0);
     QVERIFY(!parseUnit(QStringLiteral("mass units")));
     QCOMPARE(shownUnit(QStringLiteral("mass units"), si).text, QStringLiteral("mass units"));
@@ -333,6 +349,67 @@ void GuiUnitsTest::scaleDialogSetsTheScale()
     BallTableModel* model = w.window.findChild<BallTable*>()->model();
     QCOMPARE(model->data(model->index(0, BallTableModel::Mass), BallTableModel::kSortRole).toDouble(),
              2.0 * w.balls().mass[0]);
+}
+
+
+// The ruler, the Predict panel and the spawn-speed rows speak SI too: what
+// a student reads and types is in m and m/s, and reaches the world in px.
+void GuiUnitsTest::toolsSpeakSiToo()
+{
+    {
+        // Lesson 02 lists the spawn speeds; the teacher switches to SI at 100 px = 1 m.
+        test::Workbench w(QStringLiteral("animation"));
+        QVERIFY(w.ready());
+        w.window.setUnits({.si = true, .pxPerMetre = 100, .kgPerMass = 1});
+        auto* spin = w.window.parameterPanel()->findChild<NumberSpinBox*>(QStringLiteral("spawnMaxSpeedSpin"));
+        QVERIFY(spin);
+        QCOMPARE(spin->suffix(), QStringLiteral(" m/s"));
+        QCOMPARE(spin->value(), w.controller()->spawn().maxSpeed / 100.0);
+        spin->setFocus();
+        spin->selectAll();
+        QTest::keyClicks(spin, QStringLiteral("3.5"));
+        QTest::keyClick(spin, Qt::Key_Return);
+        QTRY_COMPARE(w.controller()->spawn().maxSpeed, 350.0);
+
+        // The ruler: 300 by 400 px is 5 m, at 53.13° (y down, measured as seen).
+        Canvas* canvas = w.window.canvas();
+        const QPoint a = canvas->worldToWidget(sim::Vec2(100, 450)).toPoint();
+        const QPoint b = canvas->worldToWidget(sim::Vec2(400, 50)).toPoint();
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::ShiftModifier, a);
+        QMouseEvent move(QEvent::MouseMove, QPointF(b), canvas->mapToGlobal(QPointF(b)), Qt::NoButton, Qt::LeftButton,
+                         Qt::ShiftModifier);
+        QCoreApplication::sendEvent(canvas, &move);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ShiftModifier, b);
+        QVERIFY(canvas->ruler().shown);
+        const QString text = canvas->rulerTexts().value(0);
+        QVERIFY2(text.contains(QStringLiteral(" m at ")), qPrintable(text));
+        const double metres = humanNumberValue(text).value_or(0.0);
+        QVERIFY2(std::abs(metres - canvas->ruler().length() / 100.0) <= 5e-4 * metres, qPrintable(text));
+        w.window.setUnits({});
+        QVERIFY2(canvas->rulerTexts().value(0).contains(QStringLiteral(" px at ")), qPrintable(canvas->rulerTexts().value(0)));
+    }
+    {
+        // Lesson 08 asks how high the red ball rises (its claim is in px).
+        test::Workbench w(QStringLiteral("losing-energy"));
+        QVERIFY(w.ready());
+        w.window.setUnits({.si = true, .pxPerMetre = 100, .kgPerMass = 1});
+        auto* dock = w.window.findChild<QWidget*>(QStringLiteral("predictDock"));
+        QVERIFY(dock);
+        QCOMPARE(dock->findChild<QLabel*>(QStringLiteral("predictUnit"))->text(), QStringLiteral("m"));
+        auto* number = dock->findChild<QLineEdit*>(QStringLiteral("predictNumber"));
+        number->setText(QStringLiteral("2"));
+        dock->findChild<QPushButton*>(QStringLiteral("predictRun"))->click();
+        auto* show = dock->findChild<QPushButton*>(QStringLiteral("predictShow"));
+        QTRY_VERIFY_WITH_TIMEOUT(show->isEnabled(), 30000);
+        show->click();
+        const QString result = dock->findChild<QLabel*>(QStringLiteral("predictResult"))->text();
+        QVERIFY2(result.contains(QStringLiteral("You said <b>2 m</b>")), qPrintable(result));
+        // The measured rise, 211.2 px ± 5% in the lesson's claim, read in m.
+        const QRegularExpression measured(QStringLiteral("Measured: <b>([0-9.]+) m</b>"));
+        const QRegularExpressionMatch m = measured.match(result);
+        QVERIFY2(m.hasMatch(), qPrintable(result));
+        QVERIFY2(std::abs(m.captured(1).toDouble() - 2.112) <= 0.05 * 2.112, qPrintable(result));
+    }
 }
 
 QTEST_MAIN(GuiUnitsTest)

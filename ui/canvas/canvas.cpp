@@ -1,5 +1,7 @@
 #include "ui/canvas/canvas.h"
 
+#include "ui/drawing/display_units.h"
+
 #include "ui/canvas/history_recorder.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/drawing/human_number.h"
@@ -120,6 +122,17 @@ void paintRulerLeg(QPainter& p, const QPointF& a, const QPointF& b, double k)
 
 } // namespace
 
+QStringList Canvas::rulerTexts() const
+{
+    if (!m_ruler.shown)
+        return {};
+    const QString first = quantityText(m_ruler.length(), QStringLiteral("px"));
+    if (!m_ruler.hasSecond)
+        return {tr("%1 at %2°").arg(first, humanNumber(m_ruler.angle(), 3))};
+    return {first, quantityText(m_ruler.secondLength(), QStringLiteral("px")),
+            tr("%1°").arg(humanNumber(m_ruler.between(), 3))};
+}
+
 void Canvas::paintRuler(QPainter& p) const
 {
     const QPointF a = worldToWidget(m_ruler.from), b = worldToWidget(m_ruler.to);
@@ -134,8 +147,7 @@ void Canvas::paintRuler(QPainter& p) const
     const double cardHeight = QFontMetricsF(font).height() + 6 * k;
     const QPointF above(0, -cardHeight);
     if (!m_ruler.hasSecond) {
-        paintRulerCard(p, QLineF(a, b).center() + above,
-                       tr("%1 px at %2°").arg(humanNumber(m_ruler.length()), humanNumber(m_ruler.angle(), 3)), k);
+        paintRulerCard(p, QLineF(a, b).center() + above, rulerTexts().value(0), k);
         p.restore();
         return;
     }
@@ -157,11 +169,12 @@ void Canvas::paintRuler(QPainter& p) const
                   static_cast<int>(std::lround(legA.angle() * 16)), static_cast<int>(std::lround(span * 16)));
     }
     // Each leg's length over its middle, the angle on the bisector past the arc.
-    paintRulerCard(p, QLineF(a, b).center() + above, tr("%1 px").arg(humanNumber(m_ruler.length())), k);
-    paintRulerCard(p, QLineF(pivot, c).center() + above, tr("%1 px").arg(humanNumber(m_ruler.secondLength())), k);
+    const QStringList texts = rulerTexts();
+    paintRulerCard(p, QLineF(a, b).center() + above, texts.value(0), k);
+    paintRulerCard(p, QLineF(pivot, c).center() + above, texts.value(1), k);
     QLineF bisector = QLineF::fromPolar(radius + cardHeight + 12 * k, legA.angle() + span / 2);
     bisector.translate(pivot);
-    paintRulerCard(p, bisector.p2(), tr("%1°").arg(humanNumber(m_ruler.between(), 3)), k);
+    paintRulerCard(p, bisector.p2(), texts.value(2), k);
     p.restore();
 }
 

@@ -169,6 +169,10 @@ public:
         double between() const;
     };
     const Ruler& ruler() const { return m_ruler; }
+    /// The ruler's cards as drawn, in the shown units: one leg's length and
+    /// direction ("3.2 m at 45°"), or both legs' lengths and the angle
+    /// between them; empty when no ruler is shown.
+    QStringList rulerTexts() const;
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
     const std::vector<ApexMark>& apexes() const { return m_history->apexes(); }
 

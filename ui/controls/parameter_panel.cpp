@@ -670,12 +670,24 @@ void ParameterPanel::addSpawnSpeed(const QString& row)
     // again; a slowest speed above the fastest is refused by the world with
     // its message, and the panel shows the range that stands.
     const bool slowest = row == QLatin1String("spawn_min_speed");
-    NumberControl::Spec s = NumberControl::spawnSpeedSpec();
-    s.suffix = QStringLiteral(" px/s");
-    auto* control = new NumberControl(slowest ? QStringLiteral("spawnMinSpeed") : QStringLiteral("spawnMaxSpeed"), s,
-                                      currentSection().box);
-    auto apply = [this, slowest](double v) {
-        if (!m_refreshing && !m_editor->editSpawnSpeed(slowest, v))
+    // In the shown units (m/s in SI), converted back to px/s for the world,
+    // as every row of the parameter table is.
+    auto specIn = [](const ShownUnit& unit) {
+        NumberControl::Spec s = NumberControl::spawnSpeedSpec();
+        s.max = unit.toShown(s.max);
+        s.sliderMax = unit.toShown(s.sliderMax);
+        if (unit.px != 0 && unit.factor() != 1.0) {
+            s.decimals = 3;
+            s.significant = 4;
+        }
+        s.suffix = QLatin1Char(' ') + unit.text;
+        return s;
+    };
+    auto unit = std::make_shared<ShownUnit>(shownUnit(QStringLiteral("px/s"), displayUnits()));
+    auto* control = new NumberControl(slowest ? QStringLiteral("spawnMinSpeed") : QStringLiteral("spawnMaxSpeed"),
+                                      specIn(*unit), currentSection().box);
+    auto apply = [this, slowest, unit](double shown) {
+        if (!m_refreshing && !m_editor->editSpawnSpeed(slowest, unit->fromShown(shown)))
             refresh();
     };
     connect(control, &NumberControl::valueEdited, this, [apply](double v, bool dragging) {
@@ -683,8 +695,15 @@ void ParameterPanel::addSpawnSpeed(const QString& row)
             apply(v);
     });
     connect(control->slider(), &QSlider::sliderReleased, this, [apply, control] { apply(control->value()); });
-    m_refreshers.push_back([this, control, slowest] {
-        control->setValue(slowest ? m_controller->spawn().minSpeed : m_controller->spawn().maxSpeed);
+    m_refreshers.push_back([this, control, slowest, unit, specIn] {
+        const double speed = slowest ? m_controller->spawn().minSpeed : m_controller->spawn().maxSpeed;
+        const ShownUnit now = shownUnit(QStringLiteral("px/s"), displayUnits());
+        if (now.text != unit->text || now.factor() != unit->factor()) {
+            *unit = now;
+            control->setSpec(specIn(now), now.toShown(speed));
+            return;
+        }
+        control->setValue(unit->toShown(speed));
     });
     addRow(row, slowest ? tr("Slowest random ball") : tr("Fastest random ball"), control,
            slowest ? tr("Random balls start with a speed of at least this; changing it starts again")

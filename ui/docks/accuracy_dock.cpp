@@ -2,6 +2,8 @@
 
 #include "ui/canvas/canvas.h"
 #include "ui/controls/readable_numbers.h"
+#include "ui/drawing/display_units.h"
+#include "ui/drawing/human_number.h"
 #include "ui/canvas/simulation_controller.h"
 
 #include "sim/integrators/integrator_info.h"
@@ -38,13 +40,11 @@ constexpr int kMaxSeparationPoints = 2000;
 // The separation axis before the first point, px.
 constexpr double kSeparationFloor = 1e-12;
 
-QString sci(double v)
+// Three significant digits as a student writes them ("1.23 × 10⁻⁵"), and
+// the unit in the current units when there is one.
+QString sci(double v, const QString& pixelUnit = {})
 {
-    if (std::isnan(v))
-        return QStringLiteral("—");
-    if (std::isinf(v))
-        return QStringLiteral("∞");
-    return QString::number(v, 'e', 2);
+    return pixelUnit.isEmpty() || !std::isfinite(v) ? humanNumber(v, 3) : quantityText(v, pixelUnit, 3);
 }
 
 QString nameOf(sim::IntegratorKind k)
@@ -181,7 +181,7 @@ QWidget* AccuracyDock::createGhostTab()
     ghostForm->addRow(tr("Its integrator:"), m_ghostIntegrator);
     ghostForm->addRow(tr("Its step:"), m_ghostDivider);
     ghostForm->addRow(QString(), m_ghostShown);
-    ghostForm->addRow(tr("Separation, px:"), m_separation);
+    ghostForm->addRow(tr("Separation:"), m_separation);
     ghostLayout->addLayout(ghostForm);
     m_separationChart = new QChart;
     m_separationChart->legend()->hide();
@@ -316,7 +316,7 @@ void AccuracyDock::updateNumbers()
         const double scale = std::abs(w.startEnergy()) > 0.0 ? std::abs(w.startEnergy()) : 1.0;
         m_energyDrift->setText(sci(w.energyDrift() / scale));
         m_booked->setText(sci(w.bookedEnergy() / scale));
-        m_momentumDrift->setText(sci(w.momentumDrift().norm()));
+        m_momentumDrift->setText(sci(w.momentumDrift().norm(), QStringLiteral("mass·px/s")));
     } else {
         m_energyDrift->setText(QStringLiteral("—"));
         m_booked->setText(QStringLiteral("—"));
@@ -352,7 +352,7 @@ void AccuracyDock::onGhostChanged()
         m_ghostIntegrator->setEnabled(!twin);
         m_ghostDivider->setEnabled(!twin);
     }
-    m_separation->setText(on ? sci(m_controller->ghostSeparation()) : QStringLiteral("—"));
+    m_separation->setText(on ? sci(m_controller->ghostSeparation(), QStringLiteral("px")) : QStringLiteral("—"));
     m_separationTime->setRange(m_controller->world().time(), m_controller->world().time() + 1.0);
     recordSeparation();
 }
@@ -362,7 +362,7 @@ void AccuracyDock::recordSeparation()
     if (!m_controller->ghost())
         return;
     const double d = m_controller->ghostSeparation();
-    m_separation->setText(sci(d));
+    m_separation->setText(sci(d, QStringLiteral("px")));
     if (!(std::isfinite(d) && d > 0.0))
         return; // nothing to draw on a log axis (a ghost starts where the balls are)
     const double t = m_controller->world().time();
@@ -494,7 +494,7 @@ void AccuracyDock::studyFinished()
         }
         dts.push_back(run.dt);
         errors.push_back(run.blewUp ? std::nan("") : run.positionError);
-        lines << tr("dt = %1 s: error %2 px").arg(run.dt, 0, 'g', 4).arg(sci(run.positionError));
+        lines << tr("dt = %1 s: error %2").arg(humanNumber(run.dt, 4), sci(run.positionError, QStringLiteral("px")));
     }
     m_lastOrder = sim::fittedOrder(dts, errors);
     const double theory = sim::theoreticalOrder(m_convergenceIntegrator);

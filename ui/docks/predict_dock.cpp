@@ -3,6 +3,7 @@
 #include "lessons/lesson_markup.h"
 
 #include "ui/canvas/simulation_controller.h"
+#include "ui/drawing/display_units.h"
 
 #include "sim/studies/claims.h"
 
@@ -63,6 +64,7 @@ PredictDock::PredictDock(SimulationController* controller, QWidget* parent)
     validator->setLocale(QLocale::c());
     m_number->setValidator(validator);
     m_unit = new QLabel(body);
+    m_unit->setObjectName(QStringLiteral("predictUnit"));
     row->addWidget(m_number, 1);
     row->addWidget(m_unit);
     layout->addLayout(row);
@@ -132,12 +134,15 @@ void PredictDock::setLesson(const Lesson& lesson)
     showQuestion();
 }
 
-QString PredictDock::unitOf(const sim::Claim& claim) const
+// The claim's unit as the student reads it (m/s in SI mode, px/s in
+// pixels); the answers are kept in the claim's own units and converted
+// only to be shown or read.
+ShownUnit PredictDock::unitOf(const sim::Claim& claim) const
 {
     const sim::ClaimMeasure* m = sim::findClaimMeasure(claim.measure);
     if (!m || m->unit == "1")
         return {};
-    return qs(m->unit);
+    return shownUnit(qs(m->unit), displayUnits());
 }
 
 void PredictDock::showQuestion()
@@ -172,7 +177,7 @@ void PredictDock::showQuestion()
     m_unit->setVisible(!choices);
     m_number->clear();
     m_number->setEnabled(true);
-    m_unit->setText(unitOf(claim));
+    m_unit->setText(unitOf(claim).text);
     for (QAbstractButton* b : m_choices->buttons()) {
         m_choices->removeButton(b);
         delete b;
@@ -204,7 +209,7 @@ void PredictDock::lockIn()
             m_result->setText(tr("Type a number first (for example 200)."));
             return;
         }
-        m_predicted = value;
+        m_predicted = unitOf(m_lesson.claims[static_cast<std::size_t>(q.claim)]).fromShown(value);
     } else {
         const int id = m_choices->checkedId();
         if (id < 0) {
@@ -299,7 +304,8 @@ void PredictDock::reveal()
     m_show->setEnabled(false);
     const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
     const sim::Claim& claim = m_lesson.claims[static_cast<std::size_t>(q.claim)];
-    const QString unit = unitOf(claim);
+    const ShownUnit shown = unitOf(claim);
+    const QString unit = shown.text;
     // The student reads the lesson's own sentence the answer checks, not
     // the measurement table's rule (written for lesson authors).
     const QString sentence = QString::fromStdString(claim.text).toHtmlEscaped();
@@ -319,16 +325,25 @@ void PredictDock::reveal()
         const int chosen = m_choices->checkedId();
         const bool right = chosen == static_cast<int>(best);
         text = tr("You chose <b>%1</b>. Measured: <b>%2 %3</b>, so the answer is <b>%4</b>. %5")
-                   .arg(q.choices.value(chosen).toHtmlEscaped(), number(measured), unit,
+                   .arg(q.choices.value(chosen).toHtmlEscaped(), number(shown.toShown(measured)), unit,
                         q.choices.value(static_cast<qsizetype>(best)).toHtmlEscaped(),
                         right ? tr("Well predicted!") : tr("Why was it different?"));
     } else {
         const double off = *m_predicted - measured;
         const QString share = measured != 0.0 ? tr(" (%1%)").arg(std::abs(100.0 * off / measured), 0, 'f', 0) : QString();
         text = tr("You said <b>%1 %2</b>. Measured: <b>%3 %2</b>. You were %4 %2 off%5.")
-                   .arg(number(*m_predicted), unit, number(measured), number(std::abs(off)), share);
+                   .arg(number(shown.toShown(*m_predicted)), unit, number(shown.toShown(measured)),
+                        number(std::abs(shown.toShown(off))), share);
     }
     m_result->setText(text + tr("<br><small>The run measured what the lesson says: “%1”.</small>").arg(sentence));
+}
+
+void PredictDock::unitsChanged()
+{
+    if (m_lesson.predict.empty())
+        return;
+    const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
+    m_unit->setText(unitOf(m_lesson.claims[static_cast<std::size_t>(q.claim)]).text);
 }
 
 void PredictDock::nextQuestion()

@@ -10,6 +10,7 @@
 // button, so a lesson whose claim takes long never freezes the window.
 
 #include "lessons/lesson.h"
+#include "ui/drawing/display_units.h"
 
 #include "sim/studies/claims.h"
 
@@ -61,13 +62,16 @@ public slots:
     /// Shows the result now, without waiting for the run.
     void reveal();
     void nextQuestion();
+    /// The units changed (View → Units, or a lesson's own): the answer's
+    /// unit is shown again, and a typed answer is read in the new one.
+    void unitsChanged();
 
 private:
     void showQuestion();
     void onStepped();
     void measurementFinished();
     void setAnswerEnabled(bool enabled);
-    QString unitOf(const sim::Claim& claim) const;
+    ShownUnit unitOf(const sim::Claim& claim) const;
 
     SimulationController* m_controller; // not owned
     Lesson m_lesson;

@@ -1,5 +1,7 @@
 #include "ui/drawing/display_units.h"
 
+#include "ui/drawing/human_number.h"
+
 #include <QStringList>
 
 #include <cmath>
@@ -244,6 +246,13 @@ void setDisplayUnits(const DisplayUnits& units)
 QString unitText(const QString& pixelUnit)
 {
     return shownUnit(pixelUnit, g_units).text;
+}
+
+QString quantityText(double pixelValue, const QString& pixelUnit, int digits)
+{
+    const ShownUnit unit = shownUnit(pixelUnit, g_units);
+    const QString number = humanNumber(unit.toShown(pixelValue), digits);
+    return unit.text.isEmpty() ? number : number + QLatin1Char(' ') + unit.text;
 }
 
 double toShown(double pixelValue, const QString& pixelUnit)

@@ -76,6 +76,9 @@ void setDisplayUnits(const DisplayUnits& units);
 /// Shorthands with the current choice: the shown unit's text, a pixel value
 /// as shown, a shown value back in px.
 QString unitText(const QString& pixelUnit);
+/// A pixel value as a student reads it in the current units: "3.2 m",
+/// "320 px" (humanNumber with `digits` significant digits, and the unit).
+QString quantityText(double pixelValue, const QString& pixelUnit, int digits = 4);
 double toShown(double pixelValue, const QString& pixelUnit);
 double fromShown(double shownValue, const QString& pixelUnit);
 

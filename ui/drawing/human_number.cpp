@@ -31,6 +31,35 @@ QString trimmedFixed(double v, int decimals)
 
 } // namespace
 
+std::optional<double> humanNumberValue(const QString& text)
+{
+    static const QString superDigits = QStringLiteral("⁰¹²³⁴⁵⁶⁷⁸⁹");
+    QString t = text.trimmed();
+    t.replace(QChar(0x2212), QLatin1Char('-'));
+    // The mantissa: sign, digits and a point.
+    qsizetype end = 0;
+    while (end < t.size() && (t[end].isDigit() || t[end] == QLatin1Char('-') || t[end] == QLatin1Char('.')))
+        ++end;
+    bool ok = false;
+    double value = t.left(end).toDouble(&ok);
+    if (!ok)
+        return std::nullopt;
+    static const QString times = QStringLiteral(" × 10");
+    if (t.mid(end, times.size()) == times) {
+        qsizetype at = end + times.size();
+        const bool negative = at < t.size() && t[at] == QChar(0x207B); // ⁻
+        if (negative)
+            ++at;
+        int exponent = 0, digits = 0;
+        for (; at < t.size() && superDigits.contains(t[at]); ++at, ++digits)
+            exponent = 10 * exponent + static_cast<int>(superDigits.indexOf(t[at]));
+        if (digits == 0)
+            return std::nullopt;
+        value *= std::pow(10.0, negative ? -exponent : exponent);
+    }
+    return value;
+}
+
 QString humanNumber(double value, int digits)
 {
     if (std::isnan(value))

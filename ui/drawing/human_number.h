@@ -5,12 +5,19 @@
 
 #include <QString>
 
+#include <optional>
+
 namespace forcelab {
 
 /// `value` with `digits` significant digits as a student writes it: "12.35",
 /// "0.0042", "−3" (a true minus sign), and from 10⁶ up or below 10⁻³ with a
 /// power of ten: "4.2 × 10⁹", "1.5 × 10⁻⁵". "—" for not-a-number, "∞" for infinity.
 QString humanNumber(double value, int digits = 4);
+
+/// The value of a number as humanNumber writes it ("−1.5 × 10⁻⁵", "12.35"),
+/// also when a unit follows it ("3.2 m"): nullopt when `text` does not start
+/// with such a number. For tests and for reading a shown value back.
+std::optional<double> humanNumberValue(const QString& text);
 
 /// `value` with `digits` significant digits counted from `scale` (the size
 /// of the largest value it is shown with), so rounding noise far below that

@@ -471,6 +471,8 @@ void MainWindow::setUnits(const DisplayUnits& units)
     }
     if (m_stopwatchDock)
         m_stopwatchDock->unitsChanged();
+    if (m_predictDock)
+        m_predictDock->unitsChanged();
     for (StageSliders* sliders : findChildren<StageSliders*>())
         sliders->refresh();
     m_canvas->update();
