@@ -419,6 +419,9 @@ void GuiOverlaysTest::comparePanesRunTheirOwnWallModels()
         for (qsizetype b = a + 1; b < areas.size(); ++b)
             QVERIFY(!areas[a].intersects(areas[b]));
     QVERIFY(areas[0].contains(window.canvas()->viewTransform().boxRect()));
+    // In two rows, the third pane is centred under the first two.
+    if (areas[2].top() > areas[0].top())
+        QVERIFY(std::abs(areas[2].center().x() - window.canvas()->rect().width() / 2.0) < 1e-9);
     // A ball added by hand is added to every pane: they start again from the edited balls.
     const int before = window.controller()->world().balls().size();
     window.canvas()->addBall();

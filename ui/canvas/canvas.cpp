@@ -345,10 +345,17 @@ QList<QRectF> Canvas::paneAreas(const QRectF& area) const
             best = {columns, rows};
         }
     }
+    // A last row with fewer panes (three in two by two) sits in the middle,
+    // so the comparison reads as one picture, not a grid with a hole.
     QList<QRectF> areas;
     const double w = area.width() / best.first, h = area.height() / best.second;
-    for (int k = 0; k < n; ++k)
-        areas.append(QRectF(area.left() + (k % best.first) * w, area.top() + (k / best.first) * h, w, h));
+    const int lastRow = (n - 1) / best.first;
+    const int inLastRow = n - lastRow * best.first;
+    for (int k = 0; k < n; ++k) {
+        const int row = k / best.first;
+        const double indent = row == lastRow ? (best.first - inLastRow) * w / 2 : 0.0;
+        areas.append(QRectF(area.left() + indent + (k % best.first) * w, area.top() + row * h, w, h));
+    }
     return areas;
 }
 
