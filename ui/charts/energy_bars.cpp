@@ -1,4 +1,5 @@
 #include "ui/charts/energy_bars.h"
+#include "ui/charts/chart_setup.h"
 
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/readable_numbers.h"
@@ -67,8 +68,8 @@ EnergyBars::EnergyBars(SimulationController* controller, QWidget* parent)
 
     auto* chart = new QChart();
     chart->setTitle(tr("Energy now"));
+    applyChartStyle(chart);
     chart->legend()->hide(); // the categories name the bars
-    chart->setMargins(QMargins(4, 4, 4, 4));
     // One set per bar, each with a value only in its own category, stacked:
     // every bar its own colour, full width.
     auto* series = new QStackedBarSeries(chart);
@@ -94,10 +95,7 @@ EnergyBars::EnergyBars(SimulationController* controller, QWidget* parent)
     chart->addAxis(m_valueAxis, Qt::AlignLeft);
     series->attachAxis(m_categoryAxis);
     series->attachAxis(m_valueAxis);
-    // setChart releases the chart QChartView made for itself without deleting it.
-    QChart* made = this->chart();
-    setChart(chart);
-    delete made;
+    setOwnChart(this, chart);
     setMinimumSize(240, 180);
     setToolTip(tr("Lost: energy taken out by drag, bumpy collisions and walls since the bars were shown or the "
                   "lesson restarted. Energy put in (wind, your hand, an edit) counts as negative lost energy, "

@@ -1,4 +1,5 @@
 #include "ui/charts/quantity_graph.h"
+#include "ui/charts/chart_setup.h"
 
 #include "ui/drawing/display_units.h"
 #include "ui/canvas/simulation_controller.h"
@@ -156,20 +157,10 @@ QuantityGraph::QuantityGraph(SimulationController* controller, QWidget* parent)
     QPen dashed(QColor(0xd9, 0x48, 0x0f), 2.0, Qt::DashLine);
     m_theory->setPen(dashed);
     m_measured->setPen(QPen(QColor(0x2a, 0x6f, 0xdb), 2.0));
-    auto* chart = new QChart();
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    chart->setMargins(QMargins(4, 4, 4, 4));
-    m_timeAxis = new QValueAxis(chart);
-    m_timeAxis->setTitleText(tr("time (s)"));
-    m_valueAxis = new QValueAxis(chart);
-    chart->addAxis(m_timeAxis, Qt::AlignBottom);
-    chart->addAxis(m_valueAxis, Qt::AlignLeft);
-    for (QLineSeries* s : {m_measured, m_theory}) {
-        chart->addSeries(s);
-        s->attachAxis(m_timeAxis);
-        s->attachAxis(m_valueAxis);
-    }
-    m_view = new QChartView(chart);
+    const LineChart chart = makeLineChart({m_measured, m_theory}, tr("time (s)"));
+    m_timeAxis = chart.x;
+    m_valueAxis = chart.y;
+    m_view = new QChartView(chart.chart);
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->setMinimumSize(260, 180);
 

@@ -1,4 +1,5 @@
 #include "ui/charts/speed_histogram.h"
+#include "ui/charts/chart_setup.h"
 
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/readable_numbers.h"
@@ -112,29 +113,16 @@ SpeedHistogram::SpeedHistogram(SimulationController* controller, QWidget* parent
     setObjectName(QStringLiteral("speedHistogram"));
     setAccessibleName(tr("Histogram of the balls' speeds with the Maxwell–Boltzmann curve"));
     setRenderHint(QPainter::Antialiasing);
-    auto* chart = new QChart();
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    chart->setMargins(QMargins(4, 4, 4, 4));
     m_counts = new QLineSeries(this);
     m_counts->setName(tr("balls"));
     m_counts->setPen(QPen(QColor(0x2a, 0x6f, 0xdb), 2.0));
     m_curve = new QLineSeries(this);
     m_curve->setName(tr("Maxwell–Boltzmann (2D), same energy"));
     m_curve->setPen(QPen(QColor(0xd9, 0x48, 0x0f), 2.0));
-    m_speedAxis = new QValueAxis(chart);
-    m_speedAxis->setTitleText(tr("speed (px/s)"));
-    m_countAxis = new QValueAxis(chart);
-    chart->addAxis(m_speedAxis, Qt::AlignBottom);
-    chart->addAxis(m_countAxis, Qt::AlignLeft);
-    for (QLineSeries* s : {m_counts, m_curve}) {
-        chart->addSeries(s);
-        s->attachAxis(m_speedAxis);
-        s->attachAxis(m_countAxis);
-    }
-    // setChart releases the chart QChartView made for itself without deleting it.
-    QChart* made = this->chart();
-    setChart(chart);
-    delete made;
+    const LineChart chart = makeLineChart({m_counts, m_curve}, tr("speed (px/s)"));
+    m_speedAxis = chart.x;
+    m_countAxis = chart.y;
+    setOwnChart(this, chart.chart);
     setMinimumSize(260, 180);
 
     m_redraw.setSingleShot(true);

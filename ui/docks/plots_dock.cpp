@@ -1,4 +1,5 @@
 #include "ui/docks/plots_dock.h"
+#include "ui/charts/chart_setup.h"
 
 #include "ui/drawing/display_units.h"
 #include "ui/charts/energy_bars.h"
@@ -147,21 +148,13 @@ PlotsDock::~PlotsDock() = default;
 QChartView* PlotsDock::makeChart(const QString& title, const QList<QLineSeries*>& series, QValueAxis** xAxis,
                                  QValueAxis** yAxis)
 {
-    auto* chart = new QChart();
-    chart->setTitle(title);
-    chart->legend()->setAlignment(Qt::AlignBottom);
-    chart->setMargins(QMargins(4, 4, 4, 4));
-    *xAxis = new QValueAxis(chart);
-    (*xAxis)->setTitleText(tr("time (s)"));
-    *yAxis = new QValueAxis(chart);
-    chart->addAxis(*xAxis, Qt::AlignBottom);
-    chart->addAxis(*yAxis, Qt::AlignLeft);
-    for (QLineSeries* s : series) {
+    for (QLineSeries* s : series)
         s->setUseOpenGL(false);
-        chart->addSeries(s);
-        s->attachAxis(*xAxis);
-        s->attachAxis(*yAxis);
-    }
+    const LineChart made = makeLineChart(series, tr("time (s)"));
+    QChart* chart = made.chart;
+    chart->setTitle(title);
+    *xAxis = made.x;
+    *yAxis = made.y;
     auto* view = new QChartView(chart);
     view->setRenderHint(QPainter::Antialiasing);
     // Wide enough for the longest chart title ("Momentum (×10¹² mass·px/s)").
