@@ -8,6 +8,7 @@
 #include "ui/canvas/canvas.h"
 #include "ui/controls/ball_table.h"
 #include "ui/window/overlay_actions.h"
+#include "ui/stage/stage_tool_title.h"
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
@@ -615,6 +616,7 @@ void MainWindow::showTool(const QString& name)
         m_canvas->setFocus(Qt::OtherFocusReason);
         return;
     }
+    StageToolTitle::attach(dock); // a bar to move and close it by, with or without a window manager
     dock->setFloating(true);
     const QSize size = dock->sizeHint()
                            .expandedTo(QSize(width() * 3 / 10, height() * 2 / 5))
@@ -701,6 +703,8 @@ void MainWindow::setPresentationMode(bool on)
         showFullScreen();
     } else {
         m_stage->setStaged(false);
+        for (QDockWidget* dock : findChildren<QDockWidget*>())
+            StageToolTitle::detach(dock);
         applyCanvasLook();
         menuBar()->show();
         m_simulationToolBar->show();
