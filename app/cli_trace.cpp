@@ -16,11 +16,11 @@
 #include "sim/world/world.h"
 
 #include <QFile>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -138,18 +138,27 @@ int traceCommand(const QCommandLineParser& p, std::ostream& out, std::ostream& e
 
     std::optional<std::string> halted;
     if (json) {
-        QJsonArray rows;
+        // Streamed, not built as a QJsonDocument: two million rows would
+        // hold gigabytes. 17 digits read back to the same double.
+        out << "{\n  \"settings\": " << QJsonDocument(QJsonArray{QString::fromStdString(settings)})
+                                               .toJson(QJsonDocument::Compact)
+                                               .mid(1)
+                                               .chopped(1)
+                                               .toStdString()
+            << ",\n  \"rows\": [" << std::setprecision(17);
+        bool first = true;
         halted = sim::traceRun(world, *steps, every, [&](const std::vector<sim::TraceRow>& step) {
-            for (const sim::TraceRow& r : step)
-                rows.append(QJsonObject{{"step", static_cast<double>(r.step)}, {"t", r.t}, {"ball", r.ball},
-                                        {"x", r.x}, {"y", r.y}, {"vx", r.vx}, {"vy", r.vy}, {"ax", r.ax},
-                                        {"ay", r.ay}, {"pair_tests", static_cast<double>(r.pairTests)},
-                                        {"contacts", static_cast<double>(r.contacts)}, {"wind", r.wind},
-                                        {"random_x", r.randomX}, {"random_y", r.randomY}});
+            for (const sim::TraceRow& r : step) {
+                out << (first ? "\n    " : ",\n    ") << "{\"step\": " << r.step << ", \"t\": " << r.t
+                    << ", \"ball\": " << r.ball << ", \"x\": " << r.x << ", \"y\": " << r.y << ", \"vx\": " << r.vx
+                    << ", \"vy\": " << r.vy << ", \"ax\": " << r.ax << ", \"ay\": " << r.ay
+                    << ", \"pair_tests\": " << r.pairTests << ", \"contacts\": " << r.contacts
+                    << ", \"wind\": " << r.wind << ", \"random_x\": " << r.randomX << ", \"random_y\": " << r.randomY
+                    << "}";
+                first = false;
+            }
         });
-        out << QJsonDocument(QJsonObject{{"settings", QString::fromStdString(settings)}, {"rows", rows}})
-                   .toJson(QJsonDocument::Indented)
-                   .toStdString();
+        out << "\n  ]\n}\n";
     } else {
         out << "# forcelab-cli trace: " << settings << "\n";
         const auto& names = sim::traceColumns();

@@ -4,7 +4,7 @@
 // checked against the reference (trace_compare.h). Pure C++: the workbench
 // may use it too.
 
-#include "sim/world/scene.h"
+#include "sim/world/world.h"
 
 #include <cstdint>
 #include <optional>
@@ -12,8 +12,6 @@
 #include <vector>
 
 namespace forcelab::sim {
-
-class World;
 
 /// One ball at the end of one step (step 0: the start, before any step).
 struct TraceRow {
@@ -44,12 +42,6 @@ std::optional<std::string> traceRun(World& world, std::int64_t steps, std::int64
 /// The largest number of steps and rows a trace or a compared file may have.
 inline constexpr std::int64_t kMaxTraceSteps = 1'000'000;
 inline constexpr std::int64_t kMaxTraceRows = 2'000'000;
-
-} // namespace forcelab::sim
-
-#include "sim/world/world.h"
-
-namespace forcelab::sim {
 
 template <typename Sink>
 std::optional<std::string> traceRun(World& world, std::int64_t steps, std::int64_t every, Sink&& sink)
