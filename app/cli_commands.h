@@ -53,4 +53,10 @@ int pileCommand(const QCommandLineParser& parser, std::ostream& out, std::ostrea
 void declareSoak(QCommandLineParser& parser);
 int soakCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
 
+void declareTrace(QCommandLineParser& parser);
+int traceCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
+void declareCompare(QCommandLineParser& parser);
+int compareCommand(const QCommandLineParser& parser, std::ostream& out, std::ostream& err);
+
 } // namespace forcelab::cli

@@ -54,6 +54,12 @@ const Command kCommands[] = {
      &declarePile, &pileCommand},
     {"soak", "A long run of a box with collisions: energy, NaN and memory over 10^6 steps.", &declareSoak,
      &soakCommand},
+    {"trace", "Write every step of a lesson (t, ball, x, y, vx, vy, ax, ay, the step's pair tests, contacts, wind "
+              "and random draws) as CSV or JSON, with its settings.",
+     &declareTrace, &traceCommand},
+    {"compare", "Check a student's trace of a lesson against the reference: the first step and ball where it "
+                "departs, by how much, and the likely cause; exit 0 when they agree, 1 when not, 2 for a bad file.",
+     &declareCompare, &compareCommand},
     {"params", "Print the parameter reference (docs/parameters.md): every setting, its unit, default and range.",
      &declareNothing, &paramsCommand},
 };

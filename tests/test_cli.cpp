@@ -179,6 +179,8 @@ void TestCli::everyCommandHasHelp_data()
     QTest::newRow("render") << "render" << QStringList{"--time", "--out", "--size"};
     QTest::newRow("soak") << "soak" << QStringList{"--steps", "--balls"};
     QTest::newRow("pile") << "pile" << QStringList{"--balls", "--substeps", "--position-passes", "--correction"};
+    QTest::newRow("trace") << "trace" << QStringList{"--steps", "--every", "--set", "--csv", "--json", "LESSON"};
+    QTest::newRow("compare") << "compare" << QStringList{"--set", "--tolerance", "LESSON", "STUDENT.csv|json"};
     QTest::newRow("params") << "params" << QStringList{};
 }
 

@@ -478,6 +478,86 @@ TEST_CASE("TestForces::randomAcceleration")
     VERIFY(walkSpeed < 250.0);
 }
 
+// The course's Math.random() bug (models.random_accel.uncentred): each
+// component uniform in [0, S) has mean S/2 and variance S²/12; centred, in
+// [−S, S), mean 0 and variance S²/3. Over n = 4 balls × 2 components × 20000
+// steps = 160000 draws the mean's standard error is S/√(12n) = 0.072 (S =
+// 100) un-centred and S/√(3n) = 0.144 centred: both are checked to 5 of
+// them. The same seed gives the same u, so every un-centred value is
+// (centred + S) / 2 to rounding.
+TEST_CASE("TestForces::randomAccelerationUncentred")
+{
+    Scene s = openScene({ballAt(0, 0), ballAt(0, 0), ballAt(0, 0), ballAt(0, 0)});
+    s.settings.randomAccel.enabled = true;
+    s.settings.randomAccel.strength = 100.0;
+    World centred, uncentred;
+    VERIFY(!centred.reset(s));
+    s.settings.randomAccel.uncentred = true;
+    VERIFY(!uncentred.reset(s));
+    const int steps = 20000;
+    double sumC = 0.0, sumU = 0.0, lowest = 1e300, highest = -1e300;
+    for (int k = 0; k < steps; ++k) {
+        centred.step();
+        uncentred.step();
+        const Matrix2X& c = centred.randomDraws();
+        const Matrix2X& u = uncentred.randomDraws();
+        REQUIRE(u.cols() == 4);
+        sumC += c.sum();
+        sumU += u.sum();
+        lowest = std::min(lowest, u.minCoeff());
+        highest = std::max(highest, u.maxCoeff());
+        if (k < 10)
+            VERIFY(((u.array() - (c.array() + 100.0) / 2.0).abs() <= 1e-12).all());
+    }
+    const double n = 8.0 * steps;
+    const double meanC = sumC / n, meanU = sumU / n;
+    forcelab::test::report("mean random acceleration over %.0f draws: centred %.3f, un-centred %.3f px/s²", n, meanC,
+                           meanU);
+    VERIFY(std::abs(meanU - 50.0) < 5.0 * 100.0 / std::sqrt(12.0 * n));
+    VERIFY(std::abs(meanC) < 5.0 * 100.0 / std::sqrt(3.0 * n));
+    VERIFY(lowest >= 0.0);
+    VERIFY(highest < 100.0);
+}
+
+// The course's repulsion bug (models.point.unnormalised): d times S / d², not
+// the unit vector, so |a| = S / d. Ball at d = (30, 40) from the point, d =
+// 50: |a| = 1e6 / 50 = 20000 along (0.6, 0.8), where the lesson's law gives
+// 1e6 / 2500 = 400; the clamp still bounds it; its potential is ∓ m S ln d.
+TEST_CASE("TestForces::pointForceUnnormalised")
+{
+    Scene s = openScene({ballAt(130, 240)});
+    s.settings.point.enabled = true;
+    s.settings.point.position = Vec2(100, 200);
+    s.settings.point.strength = 1e6;
+    s.settings.point.kind = PointKind::Repel;
+    s.settings.point.unnormalised = true;
+    REQUIRE_SAME_VEC(accelerationOf(s), Vec2(12000, 16000));
+    s.settings.point.kind = PointKind::Attract;
+    REQUIRE_SAME_VEC(accelerationOf(s), Vec2(-12000, -16000));
+    s.settings.point.maxAccel = 100;
+    REQUIRE_SAME_VEC(accelerationOf(s), Vec2(-60, -80));
+    // |a| = S / d at several distances, to rounding.
+    s.settings.point.maxAccel = 0.0;
+    s.settings.point.kind = PointKind::Repel;
+    for (const double d : {1.0, 7.0, 50.0, 1234.5}) {
+        Scene at = s;
+        at.balls = {ballAt(100 + d, 200)};
+        REQUIRE_SAME_VEC(accelerationOf(at), Vec2(1e6 / d, 0));
+    }
+    // Energy: U = −m S ln d for the repulsion, so moving from d = 50 to 100
+    // lowers U by m S ln 2.
+    World w;
+    Scene near = s, far = s;
+    near.balls = {ballAt(150, 200)};
+    far.balls = {ballAt(200, 200)};
+    VERIFY(!w.reset(near));
+    const double u50 = w.energy().potential;
+    const double m = w.balls().mass[0];
+    VERIFY(!w.reset(far));
+    const double u100 = w.energy().potential;
+    VERIFY(std::abs((u50 - u100) - m * 1e6 * std::log(2.0)) < 1e-9 * m * 1e6);
+}
+
 TEST_CASE("TestForces::compareWindActsOnNothing")
 {
     Scene s = openScene({ballAt(0, 0)});

@@ -136,6 +136,7 @@ const std::vector<ControlCase>& controlCases()
         {"random_accel", "randomAccelGroup", true, 1.0, FIELD(s.randomAccel.enabled)},
         {"random_fixed", "randomFixedCheck", true, 1.0, FIELD(s.randomAccel.fixed)},
         {"random_strength", "randomStrengthSpin", 250.0, 250.0, FIELD(s.randomAccel.strength)},
+        {"random_uncentred", "randomUncentredCheck", true, 1.0, FIELD(s.randomAccel.uncentred)},
         {"point", "pointGroup", true, 1.0, FIELD(s.point.enabled)},
         {"point_kind", "pointKindCombo", "repel", indexOf<sim::PointKind>(sim::pointKindNames(), "repel"),
          FIELD(s.point.kind)},
@@ -145,6 +146,7 @@ const std::vector<ControlCase>& controlCases()
         {"point_clamp", "pointClampSpin", 4000.0, 4000.0, FIELD(s.point.maxAccel)},
         {"point_scale", "pointScaleCombo", "radius", indexOf<sim::ForceScale>(sim::forceScaleNames(), "radius"),
          FIELD(s.point.scale)},
+        {"point_unnormalised", "pointUnnormalisedCheck", true, 1.0, FIELD(s.point.unnormalised)},
         {"spring", "springGroup", true, 1.0, FIELD(s.spring.enabled)},
         {"spring_k", "springKSpin", 9.0, 9.0, FIELD(s.spring.k)},
         {"spring_x", "springXSpin", 250.0, 250.0, FIELD(s.spring.anchor.x())},
@@ -232,9 +234,9 @@ QString settingsDifference(const sim::WorldSettings& a, const sim::WorldSettings
     SAME(drag.enabled) SAME(drag.law) SAME(drag.k)
     SAME(wind.mode) SAME(wind.strength) SAME(wind.scale) SAME(wind.smoothedStep) SAME(wind.noiseFrequency)
     SAME(wind.compare)
-    SAME(randomAccel.enabled) SAME(randomAccel.fixed) SAME(randomAccel.strength)
+    SAME(randomAccel.enabled) SAME(randomAccel.fixed) SAME(randomAccel.strength) SAME(randomAccel.uncentred)
     SAME(point.enabled) SAME(point.kind) SAME(point.position.x()) SAME(point.position.y()) SAME(point.strength)
-    SAME(point.maxAccel) SAME(point.scale)
+    SAME(point.maxAccel) SAME(point.scale) SAME(point.unnormalised)
     SAME(spring.enabled) SAME(spring.anchor.x()) SAME(spring.anchor.y()) SAME(spring.k)
     SAME(mutualGravity.enabled) SAME(mutualGravity.G) SAME(mutualGravity.softening) SAME(magnetic.enabled) SAME(magnetic.B)
     SAME(homing.enabled) SAME(homing.strength)

@@ -51,9 +51,11 @@ void addWind(double w, const VectorX& scale, Matrix2X& a)
 
 // Inverse-square attraction or repulsion from point p: |a| = S / d² along the
 // line from p to the ball, optionally clamped to maxAccel. At d = 0 the
-// direction is undefined and the model adds nothing.
+// direction is undefined and the model adds nothing. `unnormalised` is the
+// course's bug: the difference vector d itself times S / d², not its unit
+// vector, so |a| = S / d (point.unnormalised in world_settings.h).
 void addInverseSquare(const Vec2& p, double strength, bool attract, double maxAccel, const VectorX* scale,
-                      const Matrix2X& x, Matrix2X& a)
+                      const Matrix2X& x, Matrix2X& a, bool unnormalised = false)
 {
     const double sign = attract ? -1.0 : 1.0;
     for (Eigen::Index i = 0; i < x.cols(); ++i) {
@@ -62,7 +64,7 @@ void addInverseSquare(const Vec2& p, double strength, bool attract, double maxAc
         if (d2 == 0.0)
             continue;
         const double dist = std::sqrt(d2);
-        double mag = strength / d2;
+        double mag = unnormalised ? strength / dist : strength / d2;
         if (scale)
             mag *= (*scale)[i];
         if (maxAccel > 0.0 && mag > maxAccel)
@@ -154,7 +156,8 @@ double homingPotential(const ForceContext& c, const Matrix2X& x)
     return 0.5 * c.settings.homing.strength * c.balls.mass.dot((x - c.balls.home).colwise().squaredNorm().transpose());
 }
 
-// U = ∓ m c S / d, the unclamped inverse-square potential.
+// U = ∓ m c S / d, the unclamped inverse-square potential; with the
+// un-normalised bug (|a| = S / d) U = ± m c S ln(d / 1 px) instead.
 double pointPotential(const ForceContext& c, const Matrix2X& x)
 {
     const PointForceSettings& s = c.settings.point;
@@ -164,7 +167,8 @@ double pointPotential(const ForceContext& c, const Matrix2X& x)
         const double d = (x.col(i) - s.position).norm();
         const double f = s.scale == ForceScale::None ? 1.0 : c.pointScale[i];
         if (d > 0.0)
-            u += sign * c.balls.mass[i] * f * s.strength / d;
+            u += s.unnormalised ? -sign * c.balls.mass[i] * f * s.strength * std::log(d)
+                                : sign * c.balls.mass[i] * f * s.strength / d;
     }
     return u;
 }
@@ -234,7 +238,7 @@ const ForceModelInfo kModels[] = {
      .add = [](const ForceContext& c, const Matrix2X& x, const Matrix2X&, double, Matrix2X& a) {
          const PointForceSettings& s = c.settings.point;
          addInverseSquare(s.position, s.strength, s.kind == PointKind::Attract, s.maxAccel,
-                          s.scale == ForceScale::None ? nullptr : &c.pointScale, x, a);
+                          s.scale == ForceScale::None ? nullptr : &c.pointScale, x, a, s.unnormalised);
      },
      .potential = &pointPotential,
      .conservativePart = [](WorldSettings& s) { s.point.maxAccel = 0.0; },

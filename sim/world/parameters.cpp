@@ -127,6 +127,10 @@ const Parameter kParameters[] = {
     {.key = "models.random_accel.strength", .label = "Random strength", .unit = "px/s²", .lo = 0, .hi = kBig,
      .sliderLo = 1, .sliderHi = 1e4, .scale = Log, .help = "Largest value of each component.",
      FIELD(randomAccel.strength), .control = "random_strength"},
+    {.key = "models.random_accel.uncentred", .label = "Un-centred (0 to strength)", .type = T::Boolean, .hi = 1,
+     .help = "The course's Math.random() bug: each component is drawn in [0, strength) instead of [−strength, "
+             "strength), so every ball drifts right and down at strength/2 on average.",
+     SWITCH(randomAccel.uncentred), .control = "random_uncentred"},
     {.key = "models.point.enabled", .label = "Point force", .type = T::Boolean, .hi = 1,
      .help = "An inverse-square pull or push from a fixed point.", SWITCH(point.enabled), .control = "point", .whenListed = 1},
     {.key = "models.point.kind", .label = "Point kind", .type = T::Choice, .help = "attract or repel.",
@@ -144,6 +148,10 @@ const Parameter kParameters[] = {
     {.key = "models.point.scale", .label = "Point scaling", .type = T::Choice,
      .help = "none, radius or mass, as for the wind.", CHOICE(point.scale, ForceScale, forceScaleNames),
      .control = "point_scale"},
+    {.key = "models.point.unnormalised", .label = "Un-normalised (S d / d²)", .type = T::Boolean, .hi = 1,
+     .help = "The course's repulsion bug: the difference vector d times S / d² instead of its unit vector, so "
+             "|a| = S / d, a 1/d law, not S / d².",
+     SWITCH(point.unnormalised), .control = "point_unnormalised"},
     {.key = "models.spring.enabled", .label = "Spring", .type = T::Boolean, .hi = 1,
      .help = "Every ball tied to one anchor by a spring (Hooke's law).", SWITCH(spring.enabled),
      .control = "spring", .whenListed = 1},

@@ -206,12 +206,17 @@ void World::drawStepRandomness()
     if (s.randomAccel.enabled) {
         // Each component uniform in [−strength, strength): centred on zero, so
         // on average it pushes nowhere. The fixed kind draws once per ball.
+        // The un-centred bug takes the same u in [0, 1) as strength·u instead
+        // of strength·(2u − 1) (both exact in binary), so one seed gives the
+        // same draws with and without the bug.
         Matrix2X& a = m_inputs.randomAccel;
         const Eigen::Index from = s.randomAccel.fixed ? std::min(a.cols(), Eigen::Index(m_balls.size())) : 0;
         a.conservativeResize(2, m_balls.size());
         for (Eigen::Index i = from; i < a.cols(); ++i)
-            for (int d = 0; d < 2; ++d)
-                a(d, i) = s.randomAccel.strength * (static_cast<double>(m_rng() >> 11) * 0x1.0p-52 - 1.0);
+            for (int d = 0; d < 2; ++d) {
+                const double u = static_cast<double>(m_rng() >> 11) * 0x1.0p-53;
+                a(d, i) = s.randomAccel.strength * (s.randomAccel.uncentred ? u : 2.0 * u - 1.0);
+            }
     }
     // The step's inputs changed: Verlet's kept acceleration is stale.
     if (s.wind.mode != WindMode::Off || s.randomAccel.enabled)

@@ -118,6 +118,9 @@ public:
     std::vector<SourceAcceleration> accelerationBySource(int i) const;
     /// The wind acting now on a reference ball, px/s² (+ blows right).
     double wind() const;
+    /// The random acceleration drawn for the last step, px/s², 2×N (empty
+    /// until a step with models.random_accel on has drawn it).
+    const Matrix2X& randomDraws() const { return m_inputs.randomAccel; }
     /// The comparison wind (settings().wind.compare), px/s²; it acts on nothing.
     double compareWind() const;
     const std::vector<Contact>& contacts() const { return m_collisions.contacts(); }

@@ -89,6 +89,12 @@ struct RandomAccelSettings {
     bool enabled = false;
     bool fixed = false;      ///< false: a new value every step; true: one value per ball, kept for ever
     double strength = 100.0; ///< px/s², largest value of each component
+    /// The course's Math.random() bug: each component is drawn in
+    /// [0, strength) px/s² instead of [−strength, strength), so on average
+    /// every ball is pushed by (strength/2, strength/2) px/s², right and down.
+    /// The same draws as the centred kind: u in [0, 1) gives strength·u
+    /// here and strength·(2u − 1) there.
+    bool uncentred = false;
 };
 
 enum class PointKind { Attract, Repel };
@@ -100,6 +106,13 @@ struct PointForceSettings {
     double strength = 1e6;       ///< px³/s², a = strength / d² for a reference ball
     double maxAccel = 0.0;       ///< px/s², clamp on the acceleration; 0 = no clamp
     ForceScale scale = ForceScale::None;
+    /// The course's un-normalised repulsion bug: the difference vector
+    /// d = x − p itself is multiplied by strength / |d|² instead of the unit
+    /// vector d / |d|, so a = ±strength d / |d|², of size strength / |d|
+    /// (px/s² with strength in px³/s²: one power of d short), a 1/d law
+    /// where the lesson's is 1/d². Attract and repel alike; the clamp
+    /// still bounds the size.
+    bool unnormalised = false;
 };
 
 struct SpringSettings {
