@@ -33,7 +33,6 @@ constexpr double kTolerance = 1e-12;
 // this list and what scriptPiecesFor() reports disagree, so it cannot drift.
 const QMap<QString, QString> kNotCovered = {
     {QStringLiteral("00-showcase"), QStringLiteral("the pointer's force, homing")},
-    {QStringLiteral("03-a-wall"), QStringLiteral("spawning over time")},
     {QStringLiteral("05-frame-rate"), QStringLiteral("the exact wall model")},
     {QStringLiteral("35-stacks-that-stand"), QStringLiteral("the resting-contact solver (2d-impulse under gravity)")},
     {QStringLiteral("37-tunnelling"), QStringLiteral("the exact wall model")},
@@ -44,9 +43,7 @@ const QMap<QString, QString> kNotCovered = {
 /// Why the JavaScript cannot run this lesson yet; empty when it can.
 QString uncovered(const Lesson& lesson, const sim::World& world)
 {
-    QStringList why = scriptPiecesFor(world.settings()).missing;
-    if (lesson.scene.spawn.perStep > 0.0)
-        why << QStringLiteral("spawning over time");
+    QStringList why = scriptPiecesFor(world.settings(), lesson.scene.spawn).missing;
     if (world.balls().anyPinned())
         why << QStringLiteral("pinned balls");
     if (world.balls().ownRestitutions())
@@ -57,6 +54,7 @@ QString uncovered(const Lesson& lesson, const sim::World& world)
 struct Run {
     double worst = 0.0;   // largest |js − engine| / max(1, |engine|)
     int firstBad = -1;    // first step past the tolerance, -1 for none
+    QString where;        // the first ball past it, both states
     QString error;
 };
 
@@ -70,8 +68,8 @@ Run runSideBySide(const sim::Scene& scene, const QString& extra = {})
     Run run;
     sim::World world(scene);
     ScriptWorld script;
-    const ScriptPieces pieces = scriptPiecesFor(world.settings());
-    if (auto error = script.load(pieces.files, world.settings(), world.balls(), extra)) {
+    const ScriptPieces pieces = scriptPiecesFor(world.settings(), scene.spawn);
+    if (auto error = script.load(pieces.files, world.settings(), world.balls(), scene.spawn, extra)) {
         run.error = error->text();
         return run;
     }
@@ -99,8 +97,14 @@ Run runSideBySide(const sim::Scene& scene, const QString& extra = {})
             const ScriptBall s = script.ball(i);
             const double d = std::max({relative(s.x, b.position(0, i)), relative(s.y, b.position(1, i)),
                                        relative(s.vx, b.velocity(0, i)), relative(s.vy, b.velocity(1, i))});
-            if (!(d <= kTolerance) && run.firstBad < 0)
+            if (!(d <= kTolerance) && run.firstBad < 0) {
                 run.firstBad = step;
+                run.where = QStringLiteral("ball %1: JavaScript (%2, %3, %4, %5), engine (%6, %7, %8, %9)")
+                                .arg(i)
+                                .arg(s.x, 0, 'g', 17).arg(s.y, 0, 'g', 17).arg(s.vx, 0, 'g', 17).arg(s.vy, 0, 'g', 17)
+                                .arg(b.position(0, i), 0, 'g', 17).arg(b.position(1, i), 0, 'g', 17)
+                                .arg(b.velocity(0, i), 0, 'g', 17).arg(b.velocity(1, i), 0, 'g', 17);
+            }
             run.worst = std::max(run.worst, std::isnan(d) ? INFINITY : d);
         }
     }
@@ -153,7 +157,7 @@ void TestScriptReference::everyCoveredLessonMatchesTheEngine()
         const Run run = runSideBySide(lesson.scene);
         ++covered;
         qInfo("%s: %s, %lld balls, worst relative difference %.3g (%s), %lld ms", qPrintable(stem),
-              qPrintable(scriptPiecesFor(world.settings()).files.join(QLatin1Char(' '))),
+              qPrintable(scriptPiecesFor(world.settings(), lesson.scene.spawn).files.join(QLatin1Char(' '))),
               static_cast<long long>(world.balls().size()), run.worst,
               !run.error.isEmpty() ? "failed"
               : run.firstBad >= 0  ? "past 1e-12"
@@ -163,7 +167,7 @@ void TestScriptReference::everyCoveredLessonMatchesTheEngine()
         if (!run.error.isEmpty())
             failures << stem + QStringLiteral(": ") + run.error;
         else if (run.firstBad >= 0)
-            failures << stem + QStringLiteral(": past 1e-12 from step %1, worst %2").arg(run.firstBad).arg(run.worst);
+            failures << stem + QStringLiteral(": past 1e-12 from step %1, worst %2; %3").arg(run.firstBad).arg(run.worst).arg(run.where);
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
     QCOMPARE(covered + kNotCovered.size(), LessonLoader::builtInFiles().size());
@@ -259,7 +263,7 @@ void TestScriptReference::aRuntimeErrorGivesItsLine()
                                           "  const speed = 2;\n"
                                           "  balls[0].x = balls[0].x + sped;\n"
                                           "}\n");
-    QVERIFY(!script.load(scriptPiecesFor(world.settings()).files, world.settings(), world.balls(), broken));
+    QVERIFY(!script.load(scriptPiecesFor(world.settings()).files, world.settings(), world.balls(), {}, broken));
     const auto error = script.step();
     QVERIFY(error);
     QCOMPARE(error->line, 3);

@@ -1,12 +1,13 @@
 // The world's step, the part every stage shares.
 // A ball is an object {x, y, vx, vy, r, m}: position (px), velocity (px/s),
 // radius (px) and mass. `world` holds the settings and the time.
-// The other files add their rules to the three lists below (var, not const:
+// The other files add their rules to the four lists below (var, not const:
 // each file is a script of its own, and only var is seen by the others).
 
 var forces = [];     // each adds its acceleration: force(world, balls, acc, t)
 var stepStarts = []; // each draws this step's random values: draw(world, balls)
 var afterMove = [];  // speed limit, walls, collisions: rule(world, balls, h)
+var stepEnds = [];   // after the last sub-step (new balls): rule(world, balls)
 
 // The mass of a ball of density 1: a sphere, 4/3 π r³.
 function sphereMass(r) {
@@ -48,6 +49,9 @@ function step(world, balls) {
     for (const rule of afterMove) {
       rule(world, balls, h);
     }
+  }
+  for (const rule of stepEnds) {
+    rule(world, balls);
   }
   addTime(world, world.dt);
 }

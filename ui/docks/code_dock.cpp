@@ -184,7 +184,7 @@ QString CodeDock::cppHtml(const sim::WorldSettings& s)
 QString CodeDock::javaScriptHtml(const sim::WorldSettings& s)
 {
     // Every piece the settings run, whole, in the order the program loads them.
-    const ScriptPieces pieces = scriptPiecesFor(s);
+    const ScriptPieces pieces = scriptPiecesFor(s, m_controller->spawn());
     m_pieces = pieces.files;
     QString html = QStringLiteral("<style>pre{margin:0 0 10px 0;} .n{color:#8a8f98;} h4{margin:6px 0 2px 0;} "
                                   ".missing{color:#a33;}</style>");

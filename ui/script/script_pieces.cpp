@@ -14,12 +14,12 @@ bool anyWall(const sim::WallSettings& w)
 
 } // namespace
 
-ScriptPieces scriptPiecesFor(const sim::WorldSettings& s)
+ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettings& spawn)
 {
     ScriptPieces p;
     QStringList& f = p.files;
     const bool windOn = s.wind.mode != sim::WindMode::Off;
-    if (windOn || s.randomAccel.enabled)
+    if (windOn || s.randomAccel.enabled || spawn.perStep > 0.0)
         f << QStringLiteral("random.js");
     f << QStringLiteral("world.js");
     if (windOn || (s.drag.enabled && s.drag.scale != sim::ForceScale::None) ||
@@ -120,6 +120,8 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s)
             break;
         }
     }
+    if (spawn.perStep > 0.0) // at the end of the step
+        f << QStringLiteral("spawn.js");
     return p;
 }
 

@@ -100,7 +100,7 @@ std::optional<ScriptError> ScriptWorld::evaluate(const QString& code, const QStr
     return errorOf(result, file, interrupted);
 }
 
-QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s)
+QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::SpawnSettings& spawn)
 {
     QJSEngine& js = m_engine;
     QJSValue w = js.newObject();
@@ -171,6 +171,19 @@ QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s)
     collisions.setProperty(QStringLiteral("restitution"), s.collisions.restitution);
     w.setProperty(QStringLiteral("collisions"), collisions);
     w.setProperty(QStringLiteral("pointer"), QJSValue(QJSValue::NullValue)); // no pointer over the box
+    QJSValue sp = js.newObject();
+    sp.setProperty(QStringLiteral("perStep"), spawn.perStep);
+    sp.setProperty(QStringLiteral("maxCount"), spawn.maxCount);
+    sp.setProperty(QStringLiteral("minRadius"), spawn.minRadius);
+    sp.setProperty(QStringLiteral("maxRadius"), spawn.maxRadius);
+    sp.setProperty(QStringLiteral("minSpeed"), spawn.minSpeed);
+    sp.setProperty(QStringLiteral("maxSpeed"), spawn.maxSpeed);
+    sp.setProperty(QStringLiteral("horizontal"), spawn.horizontal);
+    sp.setProperty(QStringLiteral("fullyInside"), spawn.fullyInside);
+    sp.setProperty(QStringLiteral("seed"), QString::number(spawn.seed));
+    sp.setProperty(QStringLiteral("colours"),
+                   static_cast<int>(spawn.palette.empty() ? sim::defaultPalette().size() : spawn.palette.size()));
+    w.setProperty(QStringLiteral("spawn"), sp);
     return w;
 }
 
@@ -191,17 +204,19 @@ QJSValue ScriptWorld::ballsArray(const sim::BallState& balls)
     return array;
 }
 
-std::optional<ScriptError> ScriptWorld::load(const sim::WorldSettings& settings, const sim::BallState& balls)
+std::optional<ScriptError> ScriptWorld::load(const sim::WorldSettings& settings, const sim::BallState& balls,
+                                             const sim::SpawnSettings& spawn)
 {
-    const ScriptPieces pieces = scriptPiecesFor(settings);
+    const ScriptPieces pieces = scriptPiecesFor(settings, spawn);
     if (!pieces.missing.isEmpty())
         return ScriptError{QStringLiteral("no JavaScript yet for %1").arg(pieces.missing.join(QStringLiteral(", "))),
                            {}, 0, 0};
-    return load(pieces.files, settings, balls);
+    return load(pieces.files, settings, balls, spawn);
 }
 
 std::optional<ScriptError> ScriptWorld::load(const QStringList& pieces, const sim::WorldSettings& settings,
-                                             const sim::BallState& balls, const QString& extra)
+                                             const sim::BallState& balls, const sim::SpawnSettings& spawn,
+                                             const QString& extra)
 {
     for (const QString& name : pieces) {
         const QString source = scriptPieceSource(name);
@@ -213,7 +228,7 @@ std::optional<ScriptError> ScriptWorld::load(const QStringList& pieces, const si
     if (!extra.isEmpty())
         if (auto error = evaluate(extra, QStringLiteral("extra.js")))
             return error;
-    m_world = settingsObject(settings);
+    m_world = settingsObject(settings, spawn);
     m_balls = ballsArray(balls);
     m_step = m_engine.globalObject().property(QStringLiteral("step"));
     if (!m_step.isCallable())

@@ -45,11 +45,13 @@ public:
     /// Loads the pieces of `settings` (scriptPiecesFor) and hands the script the
     /// balls. Fails on a piece's error, or when the settings need a rule no piece
     /// covers yet (ScriptPieces::missing).
-    std::optional<ScriptError> load(const sim::WorldSettings& settings, const sim::BallState& balls);
+    std::optional<ScriptError> load(const sim::WorldSettings& settings, const sim::BallState& balls,
+                                    const sim::SpawnSettings& spawn = {});
     /// Loads these pieces and, after them, `extra` (a student's change, a test's):
     /// what extra defines replaces what the pieces did.
     std::optional<ScriptError> load(const QStringList& pieces, const sim::WorldSettings& settings,
-                                    const sim::BallState& balls, const QString& extra = {});
+                                    const sim::BallState& balls, const sim::SpawnSettings& spawn = {},
+                                    const QString& extra = {});
     /// One step: the script's step(world, balls).
     std::optional<ScriptError> step();
     /// Runs `code` under the watchdog, as file `file`.
@@ -61,7 +63,7 @@ public:
 
 private:
     std::optional<ScriptError> errorOf(const QJSValue& result, const QString& file, bool interrupted) const;
-    QJSValue settingsObject(const sim::WorldSettings& s);
+    QJSValue settingsObject(const sim::WorldSettings& s, const sim::SpawnSettings& spawn);
     QJSValue ballsArray(const sim::BallState& balls);
 
     QJSEngine m_engine;
