@@ -33,10 +33,7 @@ constexpr double kTolerance = 1e-12;
 // this list and what scriptPiecesFor() reports disagree, so it cannot drift.
 const QMap<QString, QString> kNotCovered = {
     {QStringLiteral("00-showcase"), QStringLiteral("the pointer's force, homing")},
-    {QStringLiteral("05-frame-rate"), QStringLiteral("the exact wall model")},
     {QStringLiteral("35-stacks-that-stand"), QStringLiteral("the resting-contact solver (2d-impulse under gravity)")},
-    {QStringLiteral("37-tunnelling"), QStringLiteral("the exact wall model")},
-    {QStringLiteral("38-drag-blows-up"), QStringLiteral("the exact wall model")},
     {QStringLiteral("41-write-your-own-force"), QStringLiteral("a custom force law")},
 };
 

@@ -2,7 +2,8 @@
 // lo = r and hi = size - r (with centreOnly, stage 3's bug, r is taken as 0).
 // Models: "clamp" puts the ball back on the wall and turns its velocity
 // round (times the restitution e); "reverse" only turns the velocity round;
-// "mirror" reflects the overshoot back into the box.
+// "mirror" reflects the overshoot back into the box; "exact" is in
+// walls_exact.js.
 // A ball that lay still on a wall at the start of the sub-step and was only
 // pressed into it (by gravity, say) is put back and stays at rest.
 
@@ -53,7 +54,7 @@ function outside(ax, p) {
   return (ax.loOn && p < ax.lo) || (ax.hiOn && p > ax.hi);
 }
 
-function bounceOnWalls(world, balls) {
+function bounceOnWalls(world, balls, h) {
   const w = world.walls;
   const middle = 0.5 * world.width;
   const axes = [
@@ -92,7 +93,9 @@ function bounceOnWalls(world, balls) {
       if (!outside(ax, p)) {
         continue;
       }
-      if (w.model === "reverse") {
+      if (w.model === "exact") {
+        [p, u] = exactWall(ax, e, stepPath(world, p0, u0, p, u, h), p0, h, p, u);
+      } else if (w.model === "reverse") {
         u = -e * u;
       } else if (w.model === "mirror") {
         if (ax.loOn && p < ax.lo) {

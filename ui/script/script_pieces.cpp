@@ -76,10 +76,9 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettin
     if (s.speedLimit.enabled)
         f << QStringLiteral("speed_limit.js");
     if (anyWall(s.walls)) {
+        f << QStringLiteral("walls.js");
         if (s.walls.model == sim::WallModel::Exact)
-            p.missing << QStringLiteral("the exact wall model");
-        else
-            f << QStringLiteral("walls.js");
+            f << QStringLiteral("walls_exact.js");
     }
     const sim::CollisionSettings& c = s.collisions;
     if (c.response != sim::Response::None) {

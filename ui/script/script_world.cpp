@@ -2,6 +2,8 @@
 
 #include "ui/script/script_watchdog.h"
 
+#include "sim/integrators/integrator_info.h"
+
 namespace forcelab {
 
 namespace {
@@ -109,6 +111,8 @@ QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::Spa
     w.setProperty(QStringLiteral("dt"), s.time.dt);
     w.setProperty(QStringLiteral("substeps"), s.time.substeps);
     w.setProperty(QStringLiteral("perFrame"), s.time.perFrame);
+    w.setProperty(QStringLiteral("integrator"), QString::fromUtf8(sim::integratorInfo(s.time.integrator).name.data(),
+                                                                  static_cast<qsizetype>(sim::integratorInfo(s.time.integrator).name.size())));
     w.setProperty(QStringLiteral("seed"), QString::number(s.time.seed)); // a string: BigInt takes all 64 bits
     w.setProperty(QStringLiteral("time"), 0.0);
     w.setProperty(QStringLiteral("timeCarry"), 0.0);
