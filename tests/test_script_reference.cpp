@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 
 using namespace forcelab;
@@ -122,6 +123,7 @@ class TestScriptReference : public QObject {
     Q_OBJECT
 private slots:
     void everyCoveredLessonMatchesTheEngine();
+    void theSwitchesStudentsFlipMatchToo();
     void aWrongUpdateOrderDeparts();
     void theGeneratorIsMt19937_64();
     void anEndlessLoopIsStopped();
@@ -168,6 +170,86 @@ void TestScriptReference::everyCoveredLessonMatchesTheEngine()
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
     QCOMPARE(covered + kNotCovered.size(), LessonLoader::builtInFiles().size());
+}
+
+// The lessons run with their own settings; students flip the switches, and
+// some branches of the JavaScript (the exact wall under gravity with e < 1,
+// the parabola path, mirror walls, quadratic drag, …) run only then.
+void TestScriptReference::theSwitchesStudentsFlipMatchToo()
+{
+    using Edit = std::function<void(sim::Scene&)>;
+    const struct {
+        const char* lesson;
+        const char* change;
+        Edit edit;
+    } variants[] = {
+        {"08-losing-energy", "exact walls", [](sim::Scene& s) { s.settings.walls.model = sim::WallModel::Exact; }},
+        {"08-losing-energy", "exact walls, euler",
+         [](sim::Scene& s) {
+             s.settings.walls.model = sim::WallModel::Exact;
+             s.settings.time.integrator = sim::IntegratorKind::Euler;
+         }},
+        {"34-bouncing-exact", "exact walls, e = 0.7",
+         [](sim::Scene& s) {
+             s.settings.walls.model = sim::WallModel::Exact;
+             s.settings.walls.restitution = 0.7;
+         }},
+        {"07-gravity", "mirror walls", [](sim::Scene& s) { s.settings.walls.model = sim::WallModel::Mirror; }},
+        {"07-gravity", "reverse walls", [](sim::Scene& s) { s.settings.walls.model = sim::WallModel::Reverse; }},
+        {"07-gravity", "euler, 3 sub-steps",
+         [](sim::Scene& s) {
+             s.settings.time.integrator = sim::IntegratorKind::Euler;
+             s.settings.time.substeps = 3;
+         }},
+        {"02-animation", "per frame, dt = 1/30 s",
+         [](sim::Scene& s) {
+             s.settings.time.perFrame = true;
+             s.settings.time.dt = 1.0 / 30.0;
+         }},
+        {"15-drag", "quadratic drag by radius",
+         [](sim::Scene& s) {
+             s.settings.drag.law = sim::DragLaw::Quadratic;
+             s.settings.drag.k = 0.002;
+             s.settings.drag.scale = sim::ForceScale::Radius;
+         }},
+        {"15-drag", "quadratic drag, the same for all",
+         [](sim::Scene& s) {
+             s.settings.drag.law = sim::DragLaw::Quadratic;
+             s.settings.drag.k = 0.002;
+             s.settings.drag.scale = sim::ForceScale::None;
+         }},
+        {"13-mass-matters", "wind by radius", [](sim::Scene& s) { s.settings.wind.scale = sim::ForceScale::Radius; }},
+        {"12-smoother-wind", "noise wind", [](sim::Scene& s) { s.settings.wind.mode = sim::WindMode::Noise; }},
+        {"10-random-acceleration", "fixed", [](sim::Scene& s) { s.settings.randomAccel.fixed = true; }},
+        {"16-repulsion", "clamped at 2000 px/s²", [](sim::Scene& s) { s.settings.point.maxAccel = 2000.0; }},
+        {"36-magnetic-field", "rk4 inside clamp walls",
+         [](sim::Scene& s) { s.settings.walls = sim::WallSettings{}; }},
+        {"30-newtons-cradle", "1d-elastic, e = 0.8",
+         [](sim::Scene& s) {
+             s.settings.collisions.response = sim::Response::Elastic1D;
+             s.settings.collisions.restitution = 0.8;
+         }},
+        {"31-break-shot", "2d-axis, brute force",
+         [](sim::Scene& s) {
+             s.settings.collisions.response = sim::Response::Axis2D;
+             s.settings.collisions.detection = sim::Detection::Brute;
+         }},
+    };
+    QStringList failures;
+    for (const auto& v : variants) {
+        sim::Scene scene = lessonScene(QString::fromUtf8(v.lesson));
+        v.edit(scene);
+        const QString name = QStringLiteral("%1 with %2").arg(QString::fromUtf8(v.lesson), QString::fromUtf8(v.change));
+        const sim::World world(scene);
+        QVERIFY2(scriptPiecesFor(world.settings(), scene.spawn).missing.isEmpty(), qPrintable(name));
+        const Run run = runSideBySide(scene);
+        qInfo("%s: worst relative difference %.3g", qPrintable(name), run.worst);
+        if (!run.error.isEmpty())
+            failures << name + QStringLiteral(": ") + run.error;
+        else if (run.firstBad >= 0)
+            failures << name + QStringLiteral(": past 1e-12 from step %1; %2").arg(run.firstBad).arg(run.where);
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
 }
 
 void TestScriptReference::aWrongUpdateOrderDeparts()
