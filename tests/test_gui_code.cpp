@@ -123,7 +123,7 @@ void GuiCodeTest::switchShowsTheLessonsJavaScript()
     QVERIFY(text.contains(QStringLiteral("function move(world, balls, h, t)"))); // semi-implicit Euler
     QVERIFY(text.contains(QStringLiteral("b.vy = b.vy + h * acc[i].y;")));
     QVERIFY(text.contains(QStringLiteral("function gravity(world, state, acc)")));
-    QVERIFY(text.contains(QStringLiteral("function bounceOnWalls(world, balls)")));
+    QVERIFY(text.contains(QStringLiteral("function bounceOnWalls(world, balls, h)")));
     QVERIFY(!text.contains(QStringLiteral("function drag(")));
     auto* view = dock.findChild<QWidget*>(QStringLiteral("codeView"));
     QVERIFY(view);
