@@ -33,7 +33,6 @@ constexpr double kTolerance = 1e-12;
 // The lessons the JavaScript does not cover yet, and why: the test fails when
 // this list and what scriptPiecesFor() reports disagree, so it cannot drift.
 const QMap<QString, QString> kNotCovered = {
-    {QStringLiteral("00-showcase"), QStringLiteral("the pointer's force, homing")},
     {QStringLiteral("35-stacks-that-stand"), QStringLiteral("the resting-contact solver (2d-impulse under gravity)")},
     {QStringLiteral("41-write-your-own-force"), QStringLiteral("a custom force law")},
 };

@@ -18,11 +18,25 @@ function randomBall(spawn, world, rng) {
   const x = uniform(rng, mx, world.width - mx);
   const speed = uniform(rng, spawn.minSpeed, spawn.maxSpeed);
   const angle = uniform(rng, 0, 2 * Math.PI);
-  uniform(rng, 0, spawn.colours); // its colour: drawn, so the next ball is the engine's next ball
-  if (spawn.horizontal) {
-    return { x: x, y: y, vx: Math.cos(angle) < 0 ? -speed : speed, vy: 0, r: r, m: sphereMass(r), q: 1 };
+  // Its colour k, and its home for homing: the k-th of `colours` points on
+  // a circle round the centre of the box.
+  const k = Math.min(spawn.colours - 1, Math.floor(uniform(rng, 0, spawn.colours)));
+  let hx = 0.5 * world.width;
+  let hy = 0.5 * world.height;
+  if (spawn.colours > 1) {
+    const around = 0.3 * Math.min(world.width, world.height);
+    const turn = 2 * Math.PI * k / spawn.colours;
+    hx = hx + around * Math.cos(turn);
+    hy = hy + around * Math.sin(turn);
   }
-  return { x: x, y: y, vx: speed * Math.cos(angle), vy: speed * Math.sin(angle), r: r, m: sphereMass(r), q: 1 };
+  const ball = { x: x, y: y, vx: 0, vy: 0, r: r, m: sphereMass(r), q: 1, hx: hx, hy: hy };
+  if (spawn.horizontal) {
+    ball.vx = Math.cos(angle) < 0 ? -speed : speed;
+  } else {
+    ball.vx = speed * Math.cos(angle);
+    ball.vy = speed * Math.sin(angle);
+  }
+  return ball;
 }
 
 function spawnOverTime(world, balls) {

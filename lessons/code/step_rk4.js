@@ -9,7 +9,7 @@ function trial(balls, prev, acc, f) {
       y: b.y + f * prev[i].vy,
       vx: b.vx + f * acc[i].x, // velocity: start + f × the previous trial's acceleration
       vy: b.vy + f * acc[i].y,
-      r: b.r, m: b.m, q: b.q,
+      r: b.r, m: b.m, q: b.q, hx: b.hx, hy: b.hy,
     });
   }
   return state;

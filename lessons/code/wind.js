@@ -16,7 +16,7 @@ function drawWind(world) {
     w.value = Math.min(Math.max(w.value + change, -w.strength), w.strength);
   } else if (w.mode === "pointer") {
     const half = 0.5 * world.width;
-    if (world.pointer) {
+    if (world.pointer && world.pointer.inside) {
       const side = Math.min(Math.max((world.pointer.x - half) / half, -1), 1);
       w.value = -w.strength * side;
     } else {

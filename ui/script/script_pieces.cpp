@@ -61,11 +61,11 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettin
     if (s.point.enabled)
         f << QStringLiteral("point_force.js");
     if (s.pointer.enabled)
-        p.missing << QStringLiteral("the pointer's force");
+        f << QStringLiteral("pointer_force.js");
     if (s.spring.enabled)
         f << QStringLiteral("spring.js");
     if (s.homing.enabled)
-        p.missing << QStringLiteral("homing");
+        f << QStringLiteral("homing.js");
     if (s.mutualGravity.enabled)
         f << QStringLiteral("mutual_gravity.js");
     if (s.magnetic.enabled)

@@ -171,6 +171,13 @@ QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::Spa
     QJSValue limit = js.newObject();
     limit.setProperty(QStringLiteral("max"), s.speedLimit.max);
     w.setProperty(QStringLiteral("speedLimit"), limit);
+    QJSValue homing = js.newObject();
+    homing.setProperty(QStringLiteral("strength"), s.homing.strength);
+    w.setProperty(QStringLiteral("homing"), homing);
+    QJSValue pointerForce = js.newObject();
+    pointerForce.setProperty(QStringLiteral("strength"), s.pointer.strength);
+    pointerForce.setProperty(QStringLiteral("maxAccel"), s.pointer.maxAccel);
+    w.setProperty(QStringLiteral("pointerForce"), pointerForce);
     QJSValue collisions = js.newObject();
     collisions.setProperty(QStringLiteral("restitution"), s.collisions.restitution);
     w.setProperty(QStringLiteral("collisions"), collisions);
@@ -203,6 +210,8 @@ QJSValue ScriptWorld::ballsArray(const sim::BallState& balls)
         b.setProperty(QStringLiteral("r"), balls.radius[i]);
         b.setProperty(QStringLiteral("m"), balls.mass[i]);
         b.setProperty(QStringLiteral("q"), balls.charge[i]);
+        b.setProperty(QStringLiteral("hx"), balls.home(0, i)); // where homing pulls it
+        b.setProperty(QStringLiteral("hy"), balls.home(1, i));
         array.setProperty(static_cast<quint32>(i), b);
     }
     return array;
