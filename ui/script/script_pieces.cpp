@@ -1,5 +1,7 @@
 #include "ui/script/script_pieces.h"
 
+#include "sim/integrators/integrator_info.h"
+
 #include <QDir>
 #include <QFile>
 
@@ -42,10 +44,8 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettin
     case sim::IntegratorKind::Yoshida4:
     case sim::IntegratorKind::Rk45:
     case sim::IntegratorKind::Ias15:
-        p.missing << QStringLiteral("the %1 integrator").arg(s.time.integrator == sim::IntegratorKind::Verlet     ? QStringLiteral("verlet")
-                                                             : s.time.integrator == sim::IntegratorKind::Yoshida4 ? QStringLiteral("yoshida4")
-                                                             : s.time.integrator == sim::IntegratorKind::Rk45     ? QStringLiteral("rk45")
-                                                                                                                  : QStringLiteral("ias15"));
+        p.missing << QStringLiteral("the %1 integrator").arg(QString::fromUtf8(sim::integratorInfo(s.time.integrator).name.data(),
+                                                                               static_cast<qsizetype>(sim::integratorInfo(s.time.integrator).name.size())));
         break;
     }
     // The forces in the order the engine adds them (sim/forces/force_models.cpp):
