@@ -60,7 +60,10 @@ double relative(double js, double engine)
     return std::abs(js - engine) / std::max(1.0, std::abs(engine));
 }
 
-Run runSideBySide(const sim::Scene& scene, const QString& extra = {})
+/// Where the pointer is before step `step` (1-based); none: no pointer.
+using PointerPath = std::function<sim::PointerInput(int step)>;
+
+Run runSideBySide(const sim::Scene& scene, const QString& extra = {}, const PointerPath& pointer = {})
 {
     Run run;
     sim::World world(scene);
@@ -71,6 +74,10 @@ Run runSideBySide(const sim::Scene& scene, const QString& extra = {})
         return run;
     }
     for (int step = 1; step <= kSteps; ++step) {
+        if (pointer) {
+            world.setPointer(pointer(step));
+            script.setPointer(pointer(step));
+        }
         world.step();
         if (world.halted()) {
             run.error = QStringLiteral("the engine stopped at step %1: %2")
@@ -123,6 +130,7 @@ class TestScriptReference : public QObject {
 private slots:
     void everyCoveredLessonMatchesTheEngine();
     void theSwitchesStudentsFlipMatchToo();
+    void thePointerMatchesToo();
     void aWrongUpdateOrderDeparts();
     void theGeneratorIsMt19937_64();
     void anEndlessLoopIsStopped();
@@ -249,6 +257,31 @@ void TestScriptReference::theSwitchesStudentsFlipMatchToo()
             failures << name + QStringLiteral(": past 1e-12 from step %1; %2").arg(run.firstBad).arg(run.where);
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QLatin1Char('\n'))));
+}
+
+// The pointer's force and the pointer wind (stage 14) with a
+// pointer that circles over the box, pressed half of the time, and leaves it
+// for a while: the engine and the JavaScript get the same pointer each step.
+void TestScriptReference::thePointerMatchesToo()
+{
+    const PointerPath circling = [](int step) {
+        sim::PointerInput p;
+        p.inside = step % 200 < 150;
+        p.pressed = step % 100 >= 50;
+        const double angle = 0.05 * step;
+        p.position = sim::Vec2(300.0 + 200.0 * std::cos(angle), 200.0 + 120.0 * std::sin(angle));
+        return p;
+    };
+    // The showcase has the pointer's force too, but 300 colliding balls: stage
+    // 16's eight balls with the pointer's force switched on cost far less.
+    for (const char* lesson : {"14-blow-your-own-wind", "16-repulsion"}) {
+        sim::Scene scene = lessonScene(QString::fromUtf8(lesson));
+        scene.settings.pointer.enabled = true;
+        const Run run = runSideBySide(scene, {}, circling);
+        qInfo("%s with a circling pointer: worst relative difference %.3g", lesson, run.worst);
+        QVERIFY2(run.error.isEmpty(), qPrintable(run.error));
+        QVERIFY2(run.firstBad < 0, qPrintable(QStringLiteral("%1: from step %2; %3").arg(QString::fromUtf8(lesson)).arg(run.firstBad).arg(run.where)));
+    }
 }
 
 void TestScriptReference::aWrongUpdateOrderDeparts()

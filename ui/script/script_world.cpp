@@ -259,6 +259,20 @@ std::optional<ScriptError> ScriptWorld::step()
     return errorOf(result, QStringLiteral("step"), interrupted);
 }
 
+void ScriptWorld::setPointer(const sim::PointerInput& pointer)
+{
+    if (!pointer.inside) {
+        m_world.setProperty(QStringLiteral("pointer"), QJSValue(QJSValue::NullValue));
+        return;
+    }
+    QJSValue p = m_engine.newObject();
+    p.setProperty(QStringLiteral("inside"), true);
+    p.setProperty(QStringLiteral("pressed"), pointer.pressed);
+    p.setProperty(QStringLiteral("x"), pointer.position.x());
+    p.setProperty(QStringLiteral("y"), pointer.position.y());
+    m_world.setProperty(QStringLiteral("pointer"), p);
+}
+
 int ScriptWorld::ballCount() const
 {
     return m_balls.property(QStringLiteral("length")).toInt();

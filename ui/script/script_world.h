@@ -6,6 +6,7 @@
 // extensions and no QObjects, so it has no files, network or console. A call
 // that runs longer than the time limit (1 s) is interrupted by a watchdog and
 // reported; a JS error is reported with its file, line and column.
+#include "sim/forces/force_model.h"
 #include "sim/world/ball_state.h"
 #include "sim/world/world_settings.h"
 #include "ui/script/script_pieces.h"
@@ -56,6 +57,9 @@ public:
     std::optional<ScriptError> step();
     /// Runs `code` under the watchdog, as file `file`.
     std::optional<ScriptError> evaluate(const QString& code, const QString& file);
+
+    /// Where the pointer is (world.pointer in the script; null while it is outside).
+    void setPointer(const sim::PointerInput& pointer);
 
     int ballCount() const;
     ScriptBall ball(int i) const;
