@@ -1,6 +1,7 @@
 // The world's step, the part every stage shares.
 // A ball is an object {x, y, vx, vy, r, m}: position (px), velocity (px/s),
-// radius (px) and mass. `world` holds the settings and the time.
+// radius (px) and mass; q (its charge) and hx, hy (its home) are there for
+// the magnetic field and homing. `world` holds the settings and the time.
 // The other files add their rules to the four lists below (var, not const:
 // each file is a script of its own, and only var is seen by the others).
 
