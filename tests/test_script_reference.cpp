@@ -353,6 +353,18 @@ void TestScriptReference::anEndlessLoopIsStopped()
     QVERIFY2(ms >= 900 && ms < 3000, qPrintable(QString::number(ms)));
     // The engine runs again afterwards.
     QVERIFY(!script.evaluate(QStringLiteral("let m = 1 + 1;"), QStringLiteral("after.js")));
+
+    // The same inside a step, where a student's loop would be.
+    const sim::Scene scene = lessonScene(QStringLiteral("07-gravity"));
+    const sim::World world(scene);
+    ScriptWorld stepping;
+    QVERIFY(!stepping.load(scriptPiecesFor(world.settings()).files, world.settings(), world.balls(), {},
+                           QStringLiteral("function step(world, balls) {\n  while (balls.length > 0) {}\n}\n")));
+    clock.restart();
+    const auto stuck = stepping.step();
+    QVERIFY(stuck);
+    QVERIFY2(stuck->message.contains(QStringLiteral("too long")), qPrintable(stuck->text()));
+    QVERIFY2(clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
 }
 
 void TestScriptReference::aSyntaxErrorGivesItsLine()
