@@ -5,10 +5,14 @@
 #include "ui/docks/code_snippets.h"
 #include "ui/canvas/simulation_controller.h"
 
+#include "lessons/lesson_loader.h"
 #include "sim/world/scene.h"
+#include "ui/script/script_pieces.h"
 
 #include <QFile>
 #include <QTest>
+#include <QTextEdit>
+#include <QToolButton>
 
 using namespace forcelab;
 
@@ -18,6 +22,7 @@ private slots:
     void regionsParseAndMatchTheSources();
     void markersThatDoNotParseAreReported();
     void panelFollowsTheSwitches();
+    void switchShowsTheLessonsJavaScript();
 };
 
 // Every compiled-in region: no marker problem, a valid condition, and each
@@ -86,6 +91,53 @@ void GuiCodeTest::panelFollowsTheSwitches()
     QCOMPARE(dock.highlightedLines(QStringLiteral("walls.test")).size(), 1);
     auto* view = dock.findChild<QWidget*>(QStringLiteral("codeView"));
     QVERIFY(view);
+}
+
+// The C++ | JavaScript switch: a click shows the lesson's JavaScript, the
+// pieces its settings run (its update step, its forces, its walls), whole and
+// in a font readable at 1024×768; a click back shows the C++ again, and a
+// change of settings changes the pieces.
+void GuiCodeTest::switchShowsTheLessonsJavaScript()
+{
+    const LoadResult loaded = LessonLoader::load(QStringLiteral("07-gravity"));
+    QVERIFY(loaded.ok());
+    SimulationController controller;
+    QVERIFY(!controller.setScene(loaded.lesson->scene));
+    CodeDock dock(&controller);
+    dock.resize(400, 600);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    auto* js = dock.findChild<QToolButton*>(QStringLiteral("codeJsButton"));
+    auto* cpp = dock.findChild<QToolButton*>(QStringLiteral("codeCppButton"));
+    QVERIFY(js && cpp);
+    QVERIFY(dock.shownText().contains(QStringLiteral("sim/integrators/integrators.cpp")));
+    QVERIFY(!dock.shownText().contains(QStringLiteral("function move(")));
+
+    QTest::mouseClick(js, Qt::LeftButton);
+    QTRY_VERIFY(dock.language() == CodeDock::Language::JavaScript);
+    const QString text = dock.shownText();
+    QCOMPARE(dock.shownPieces(), scriptPiecesFor(controller.world().settings()).files);
+    for (const QString& piece : dock.shownPieces())
+        for (const QString& line : scriptPieceSource(piece).split(QLatin1Char('\n')))
+            QVERIFY2(text.contains(line), qPrintable(piece + QStringLiteral(": ") + line));
+    QVERIFY(text.contains(QStringLiteral("function move(world, balls, h, t)"))); // semi-implicit Euler
+    QVERIFY(text.contains(QStringLiteral("b.vy = b.vy + h * acc[i].y;")));
+    QVERIFY(text.contains(QStringLiteral("function gravity(world, state, acc)")));
+    QVERIFY(text.contains(QStringLiteral("function bounceOnWalls(world, balls, h)")));
+    QVERIFY(!text.contains(QStringLiteral("function drag(")));
+    auto* view = dock.findChild<QWidget*>(QStringLiteral("codeView"));
+    QVERIFY(view);
+    QVERIFY2(qobject_cast<QTextEdit*>(view)->document()->defaultFont().pointSizeF() >= 12.0, "too small for a room");
+
+    sim::WorldSettings s = controller.world().settings();
+    s.drag.enabled = true;
+    QVERIFY(controller.setSettings(s));
+    QTRY_VERIFY(dock.shownText().contains(QStringLiteral("function drag(world, state, acc)")));
+
+    QTest::mouseClick(cpp, Qt::LeftButton);
+    QTRY_VERIFY(dock.language() == CodeDock::Language::Cpp);
+    QVERIFY(!dock.shownText().contains(QStringLiteral("function move(")));
+    QVERIFY(dock.shownText().contains(QStringLiteral("sim/forces/force_models.cpp")));
 }
 
 QTEST_MAIN(GuiCodeTest)

@@ -1,0 +1,81 @@
+#pragma once
+// A lesson's world run by its JavaScript (lessons/code/*.js) in a QJSEngine:
+// the balls are a plain JS array of {x, y, vx, vy, r, m, q} objects and the
+// settings a plain object, and each step() calls the script's step(world, balls).
+// The script reaches nothing outside the simulation: the engine gets no
+// extensions and no QObjects, so it has no files, network or console. A call
+// that runs longer than the time limit (1 s) is interrupted by a watchdog and
+// reported; a JS error is reported with its file, line and column.
+#include "sim/forces/force_model.h"
+#include "sim/world/ball_state.h"
+#include "sim/world/world_settings.h"
+#include "ui/script/script_pieces.h"
+
+#include <QJSEngine>
+#include <QJSValue>
+#include <QString>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+namespace forcelab {
+
+class ScriptWatchdog;
+
+struct ScriptError {
+    QString message;   ///< as the engine gives it ("ReferenceError: x is not defined")
+    QString file;      ///< the piece ("walls.js") or the name given to evaluate()
+    int line = 0;      ///< 1-based, 0 when unknown
+    int column = 0;    ///< 1-based, 0 when the engine does not say
+    /// "walls.js:12:5: ReferenceError: …"
+    QString text() const;
+};
+
+struct ScriptBall {
+    double x = 0.0, y = 0.0, vx = 0.0, vy = 0.0;
+};
+
+class ScriptWorld {
+public:
+    ScriptWorld();
+    ~ScriptWorld();
+    ScriptWorld(const ScriptWorld&) = delete;
+    ScriptWorld& operator=(const ScriptWorld&) = delete;
+
+    /// Loads the pieces of `settings` (scriptPiecesFor) and hands the script the
+    /// balls. Fails on a piece's error, or when the settings need a rule no piece
+    /// covers yet (ScriptPieces::missing).
+    std::optional<ScriptError> load(const sim::WorldSettings& settings, const sim::BallState& balls,
+                                    const sim::SpawnSettings& spawn = {});
+    /// Loads these pieces and, after them, `extra` (a student's change, a test's):
+    /// what extra defines replaces what the pieces did.
+    std::optional<ScriptError> load(const QStringList& pieces, const sim::WorldSettings& settings,
+                                    const sim::BallState& balls, const sim::SpawnSettings& spawn = {},
+                                    const QString& extra = {});
+    /// One step: the script's step(world, balls).
+    std::optional<ScriptError> step();
+    /// Runs `code` under the watchdog, as file `file`.
+    std::optional<ScriptError> evaluate(const QString& code, const QString& file);
+
+    /// Where the pointer is (world.pointer in the script; null while it is outside).
+    void setPointer(const sim::PointerInput& pointer);
+
+    int ballCount() const;
+    ScriptBall ball(int i) const;
+    void setTimeLimit(std::chrono::milliseconds limit) { m_limit = limit; }
+
+private:
+    std::optional<ScriptError> errorOf(const QJSValue& result, const QString& file, bool interrupted) const;
+    QJSValue settingsObject(const sim::WorldSettings& s, const sim::SpawnSettings& spawn);
+    QJSValue ballsArray(const sim::BallState& balls);
+
+    QJSEngine m_engine;
+    std::unique_ptr<ScriptWatchdog> m_watchdog;
+    std::chrono::milliseconds m_limit{1000};
+    QJSValue m_world;
+    QJSValue m_balls;
+    QJSValue m_step;
+};
+
+} // namespace forcelab
