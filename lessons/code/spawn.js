@@ -12,8 +12,8 @@ function randomBall(spawn, world, rng) {
   // Fully inside the box when asked (and when it fits), else anywhere.
   const mx = spawn.fullyInside ? Math.min(r, 0.5 * world.width) : 0;
   const my = spawn.fullyInside ? Math.min(r, 0.5 * world.height) : 0;
-  // y is drawn before x: the engine's C++ (sim/world/scene.cpp) draws both
-  // as the arguments of one call, which GCC evaluates right to left.
+  // y is drawn before x, as the engine does (sim/world/scene.cpp): the
+  // order of two draws changes which ball comes out.
   const y = uniform(rng, my, world.height - my);
   const x = uniform(rng, mx, world.width - mx);
   const speed = uniform(rng, spawn.minSpeed, spawn.maxSpeed);

@@ -45,7 +45,14 @@ Ball randomBall(const SpawnSettings& spawn, const BoxSettings& box, std::mt19937
     // box sits in the middle); otherwise the centre is anywhere in the box.
     const double mx = spawn.fullyInside ? std::min(b.radius, 0.5 * box.width) : 0.0;
     const double my = spawn.fullyInside ? std::min(b.radius, 0.5 * box.height) : 0.0;
-    b.position = Vec2(uniform(rng, mx, box.width - mx), uniform(rng, my, box.height - my));
+    // Drawn one at a time, y first: two draws as the arguments of one call
+    // happen in an order the compiler chooses (GCC right to left), so the
+    // same seed gave other balls with another compiler. y first keeps every
+    // lesson's balls as GCC has always made them, and is the order the
+    // course's JavaScript (lessons/code/spawn.js) draws them in.
+    const double y = uniform(rng, my, box.height - my);
+    const double x = uniform(rng, mx, box.width - mx);
+    b.position = Vec2(x, y);
     const double speed = uniform(rng, spawn.minSpeed, spawn.maxSpeed);
     const double angle = uniform(rng, 0.0, 2.0 * std::numbers::pi);
     b.velocity = spawn.horizontal ? Vec2(std::cos(angle) < 0.0 ? -speed : speed, 0.0)
