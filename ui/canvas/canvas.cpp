@@ -122,6 +122,44 @@ void paintRulerLeg(QPainter& p, const QPointF& a, const QPointF& b, double k)
 
 } // namespace
 
+void Canvas::setTraceMark(const std::optional<TraceMark>& mark)
+{
+    m_traceMark = mark;
+    update();
+}
+
+bool Canvas::showsTraceMark() const
+{
+    return m_traceMark && m_controller->world().stepCount() == m_traceMark->step &&
+           m_traceMark->ball < m_controller->world().balls().size();
+}
+
+// The student's position as a red cross, a dashed line from the ball's
+// centre to it (the departure, often less than a pixel: the cross and its
+// card say where), and the card.
+void Canvas::paintTraceMark(QPainter& p) const
+{
+    const double k = m_options.lineScale;
+    const QPointF ball = worldToWidget(sim::Vec2(m_controller->world().balls().position.col(m_traceMark->ball)));
+    const QPointF at = worldToWidget(m_traceMark->student);
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const QColor red(0xc0, 0x10, 0x10);
+    p.setPen(QPen(red, 1.5 * k, Qt::DashLine));
+    p.drawLine(ball, at);
+    p.setPen(QPen(red, 3.0 * k, Qt::SolidLine, Qt::RoundCap));
+    const double arm = 8.0 * k;
+    p.drawLine(at + QPointF(-arm, -arm), at + QPointF(arm, arm));
+    p.drawLine(at + QPointF(-arm, arm), at + QPointF(arm, -arm));
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
+    font.setBold(true);
+    p.setFont(font);
+    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
+    paintRulerCard(p, at + QPointF(0, -arm - cardHeight), m_traceMark->text, k);
+    p.restore();
+}
+
 QStringList Canvas::rulerTexts() const
 {
     if (!m_ruler.shown)
@@ -481,6 +519,8 @@ void Canvas::paintEvent(QPaintEvent*)
     paintRuns(painter, QRectF(rect()), m_painter, m_panePainters, devicePixelRatioF());
     if (m_ruler.shown)
         paintRuler(painter);
+    if (showsTraceMark())
+        paintTraceMark(painter);
     if (showsStartHint())
         paintStartHint(painter);
     ++m_frames;
@@ -697,6 +737,7 @@ void Canvas::onSceneChanged()
     m_drag = Drag();
     m_press = Press();
     m_ruler = Ruler(); // it measured the scene that went (a reset or a new lesson)
+    m_traceMark.reset();
     m_measuring = false;
     m_previousTime = -1.0; // the recorder starts over too
     if (m_options.selected >= m_controller->world().balls().size())

@@ -29,6 +29,7 @@
 class QMenu;
 
 #include <deque>
+#include <optional>
 #include <vector>
 
 namespace forcelab {
@@ -173,6 +174,19 @@ public:
     /// direction ("3.2 m at 45°"), or both legs' lengths and the angle
     /// between them; empty when no ruler is shown.
     QStringList rulerTexts() const;
+    /// Where a student's trace first departs from the run (File → Check a
+    /// Student's Trace): the student's position of `ball` at `step`, drawn
+    /// as a red cross joined to the ball while the world is at that step.
+    struct TraceMark {
+        std::int64_t step = 0;
+        int ball = 0;
+        sim::Vec2 student{0, 0}; ///< world px, the student's x and y there
+        QString text;            ///< the card beside the cross ("student, step 1")
+    };
+    void setTraceMark(const std::optional<TraceMark>& mark);
+    const std::optional<TraceMark>& traceMark() const { return m_traceMark; }
+    /// Whether the mark is drawn now (the world is at its step).
+    bool showsTraceMark() const;
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
     const std::vector<ApexMark>& apexes() const { return m_history->apexes(); }
 
@@ -318,6 +332,8 @@ private:
     ArrowRun m_arrowRun;                   // the arrows' scales of this run (m_options.arrowRun)
     int m_sceneSerial = -1;                // the controller's scene the run scales belong to
     Ruler m_ruler;
+    std::optional<TraceMark> m_traceMark;
+    void paintTraceMark(QPainter& p) const;
     bool m_measuringSecond = false; // the drag moves the second leg's end
     bool m_measuring = false;
     void paintRuler(QPainter& p) const;

@@ -266,6 +266,22 @@ void SimulationController::stepOnce()
     checkHalted();
 }
 
+bool SimulationController::runToStep(std::int64_t step)
+{
+    pause();
+    if (step <= m_world.stepCount())
+        return step == m_world.stepCount();
+    m_accumulator = 0.0;
+    m_previous.resize(2, 0);
+    while (m_world.stepCount() < step && !m_world.halted())
+        stepWorld();
+    stepGhost(); // it catches up with the world, as after a frame
+    emit stepped();
+    emit timelineChanged();
+    checkHalted();
+    return m_world.stepCount() == step;
+}
+
 bool SimulationController::respawn(const sim::SpawnSettings& spawn)
 {
     sim::Scene scene = m_scene;

@@ -156,6 +156,10 @@ public slots:
     /// Pauses and advances exactly one step of dt (re-runs the recorded one
     /// when the world is behind the latest recorded step).
     void stepOnce();
+    /// Pauses and steps the world on to step `step` (a step after the
+    /// world's), all in one frame; false when the world stops on the way
+    /// (it halted) or `step` is not ahead.
+    bool runToStep(std::int64_t step);
     /// Pauses and goes one step back (false at the earliest recorded step).
     bool stepBack();
     /// Pauses and shows the recorded world at `step` in [earliestStep(),

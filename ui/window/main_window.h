@@ -42,6 +42,7 @@ class StopwatchDock;
 class ForceEditorDock;
 class SimulationController;
 class TrajectoryExport;
+class TraceCheck;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -103,6 +104,7 @@ public:
     PlotsDock* plotsDock() const { return m_plotsDock; }
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     CodeDock* codeDock() const { return m_codeDock; }
+    TraceCheck* traceCheck() const { return m_traceCheck; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -183,6 +185,7 @@ private:
     QByteArray m_normalDocks;
     QAction* m_handbookAction = nullptr;
     TrajectoryExport* m_trajectory = nullptr;
+    TraceCheck* m_traceCheck = nullptr; // File → Check a Student's Trace
     Lesson m_lesson;
 
     QAction* m_playAction = nullptr;

@@ -2,6 +2,7 @@
 // one place, then placed in the menus and on the toolbars. Part of
 // MainWindow (main_window.h).
 #include "ui/window/main_window.h"
+#include "ui/window/trace_check.h"
 
 #include "lessons/atomic_file.h"
 #include "lessons/lesson_markup.h"
@@ -313,6 +314,9 @@ void MainWindow::createFileActions()
     m_exportAction->setStatusTip(tr("Write the recorded trajectory as CSV (time, ball, position, velocity)"));
     connect(m_exportAction, &QAction::triggered, this, &MainWindow::exportTrajectory);
 
+    m_traceCheck = new TraceCheck(m_controller, m_canvas, this);
+    connect(m_traceCheck, &TraceCheck::error, this, &MainWindow::showError);
+
     m_handbookAction = new QAction(tr("Export Teacher &Handbook…"), this);
     m_handbookAction->setObjectName(QStringLiteral("handbookAction"));
     m_handbookAction->setStatusTip(tr("Write every lesson with its teacher notes as one printable HTML page"));
@@ -489,6 +493,7 @@ void MainWindow::createMenus()
     file->addAction(m_recordAction);
     file->addAction(m_exportAction);
     file->addAction(m_handbookAction);
+    file->addAction(m_traceCheck->action());
     file->addSeparator();
     file->addAction(m_quitAction);
 
