@@ -229,6 +229,12 @@ void TestScriptReference::theSwitchesStudentsFlipMatchToo()
         {"12-smoother-wind", "noise wind", [](sim::Scene& s) { s.settings.wind.mode = sim::WindMode::Noise; }},
         {"10-random-acceleration", "fixed", [](sim::Scene& s) { s.settings.randomAccel.fixed = true; }},
         {"16-repulsion", "clamped at 2000 px/s²", [](sim::Scene& s) { s.settings.point.maxAccel = 2000.0; }},
+        // The course's own bugs (docs/parameters.md), so a first program can be matched.
+        {"10-random-acceleration", "un-centred random numbers",
+         [](sim::Scene& s) { s.settings.randomAccel.uncentred = true; }},
+        {"16-repulsion", "un-normalised repulsion", [](sim::Scene& s) { s.settings.point.unnormalised = true; }},
+        {"17-attraction-and-the-slingshot", "un-normalised attraction",
+         [](sim::Scene& s) { s.settings.point.unnormalised = true; }},
         {"36-magnetic-field", "rk4 inside clamp walls",
          [](sim::Scene& s) { s.settings.walls = sim::WallSettings{}; }},
         {"30-newtons-cradle", "1d-elastic, e = 0.8",

@@ -1,12 +1,5 @@
 // Detection, brute force: test every ball against every other ball,
 // N (N - 1) tests. Each touching pair is kept once, as (a, b) with a < b.
-function touching(a, b) {
-  const dx = b.x - a.x;
-  const dy = b.y - a.y;
-  const s = a.r + b.r;
-  return dx * dx + dy * dy < s * s;
-}
-
 function findContacts(balls) {
   const contacts = [];
   for (let i = 0; i < balls.length; i++) {

@@ -1,12 +1,5 @@
 // Detection, halved: the pair (i, j) is the pair (j, i), so test each pair
 // once, j after i: N (N - 1) / 2 tests.
-function touching(a, b) {
-  const dx = b.x - a.x;
-  const dy = b.y - a.y;
-  const s = a.r + b.r;
-  return dx * dx + dy * dy < s * s;
-}
-
 function findContacts(balls) {
   const contacts = [];
   for (let i = 0; i < balls.length; i++) {

@@ -2,13 +2,6 @@
 // along the sorted list, a ball can only touch the balls whose left edge
 // comes before its right edge: stop looking at the first one that does not.
 // The pairs found are then put in (a, b) order, as the other detections give them.
-function touching(a, b) {
-  const dx = b.x - a.x;
-  const dy = b.y - a.y;
-  const s = a.r + b.r;
-  return dx * dx + dy * dy < s * s;
-}
-
 function findContacts(balls) {
   const order = [];
   for (let i = 0; i < balls.length; i++) {

@@ -1,6 +1,8 @@
 // A point that pulls (attract) or pushes (repel) every ball with
 // |a| = strength / d², along the line from the point to the ball,
 // at most maxAccel when that is above 0. At d = 0 there is no direction.
+// "unnormalised" is the course's bug: the difference (dx, dy) itself, not
+// its direction, times strength / d², so |a| = strength / d.
 function pointForce(world, state, acc) {
   const p = world.point;
   const sign = p.kind === "attract" ? -1 : 1;
@@ -12,7 +14,7 @@ function pointForce(world, state, acc) {
       continue;
     }
     const dist = Math.sqrt(d2);
-    let size = p.strength / d2;
+    let size = p.unnormalised ? p.strength / dist : p.strength / d2;
     if (p.scale !== "none") {
       size = size * scaleFactor(p.scale, state[i]);
     }

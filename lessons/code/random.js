@@ -100,9 +100,15 @@ function nextRandom(rng) {
   return y;
 }
 
-// A number in [-1, 1): the top 53 bits of the next number, times 2^-52, less 1.
-function symmetric(rng) {
+// A number in [0, 1): the top 53 bits of the next number, times 2^-53
+// (what Math.random() gives, from the engine's own generator).
+function unit(rng) {
   const y = nextRandom(rng);
   const top53 = y.hi * 2097152 + (y.lo >>> 11); // the number >> 11, exact in a double
-  return top53 * Math.pow(2, -52) - 1;
+  return top53 * Math.pow(2, -53);
+}
+
+// A number in [-1, 1): 2u - 1, centred on zero.
+function symmetric(rng) {
+  return 2 * unit(rng) - 1;
 }

@@ -1,5 +1,7 @@
 // A random acceleration per ball, each component in [-strength, strength).
 // Drawn once per step (x then y, ball by ball); "fixed" draws it only once.
+// "uncentred" is the course's first program: strength * Math.random(), in
+// [0, strength), which always pushes right and down.
 function drawRandomAcceleration(world, balls) {
   const r = world.randomAccel;
   if (!r.rng) {
@@ -9,8 +11,8 @@ function drawRandomAcceleration(world, balls) {
   const from = r.fixed ? Math.min(r.values.length, balls.length) : 0;
   r.values.length = Math.min(r.values.length, balls.length);
   for (let i = from; i < balls.length; i++) {
-    const x = r.strength * symmetric(r.rng);
-    const y = r.strength * symmetric(r.rng);
+    const x = r.strength * (r.uncentred ? unit(r.rng) : symmetric(r.rng));
+    const y = r.strength * (r.uncentred ? unit(r.rng) : symmetric(r.rng));
     r.values[i] = { x: x, y: y };
   }
 }

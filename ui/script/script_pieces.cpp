@@ -82,6 +82,7 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettin
     }
     const sim::CollisionSettings& c = s.collisions;
     if (c.response != sim::Response::None) {
+        f << QStringLiteral("touching.js"); // the test every detection loop uses
         switch (c.detection) {
         case sim::Detection::Brute:
             f << QStringLiteral("detect_brute.js");

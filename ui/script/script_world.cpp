@@ -146,6 +146,7 @@ QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::Spa
     QJSValue random = js.newObject();
     random.setProperty(QStringLiteral("fixed"), s.randomAccel.fixed);
     random.setProperty(QStringLiteral("strength"), s.randomAccel.strength);
+    random.setProperty(QStringLiteral("uncentred"), s.randomAccel.uncentred);
     w.setProperty(QStringLiteral("randomAccel"), random);
     QJSValue point = js.newObject();
     point.setProperty(QStringLiteral("kind"), s.point.kind == sim::PointKind::Attract ? QStringLiteral("attract")
@@ -155,6 +156,7 @@ QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::Spa
     point.setProperty(QStringLiteral("strength"), s.point.strength);
     point.setProperty(QStringLiteral("maxAccel"), s.point.maxAccel);
     point.setProperty(QStringLiteral("scale"), scaleName(s.point.scale));
+    point.setProperty(QStringLiteral("unnormalised"), s.point.unnormalised);
     w.setProperty(QStringLiteral("point"), point);
     QJSValue spring = js.newObject();
     spring.setProperty(QStringLiteral("x"), s.spring.anchor.x());
