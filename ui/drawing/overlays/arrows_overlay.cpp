@@ -74,12 +74,9 @@ void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
     font.setPixelSize(static_cast<int>(std::lround(13 * k)));
     font.setBold(true);
     const QFontMetricsF fm(font);
-    struct Drawn {
-        double pixels;
-        QString label;
-        QRgb color;
-    };
-    QList<Drawn> drawn;
+    // The rows go to the frame (the stage bar shows them from there) and
+    // are drawn from it here.
+    const QList<ArrowLegendRow>& drawn = c.frame.arrowLegendRows;
     double widestArrow = 0.0, widestLabel = 0.0;
     for (const LegendRow& row : rows) {
         // In the view's units (SI or px): widget px per shown unit of the quantity.
@@ -91,7 +88,6 @@ void paintLegend(const PaintContext& c, const QList<LegendRow>& rows)
         const double pixels = value * perUnit;
         const QString label = QStringLiteral("%1 %2 (%3)")
                                   .arg(QString::fromStdString(sim::numberText(value)), unit.text, row.name);
-        drawn.append({pixels, label, row.color});
         c.frame.arrowLegendRows.append({pixels, label, row.color});
         c.frame.arrowLegend.append(QStringLiteral("%1: arrow %2 px = %3 %4")
                                        .arg(row.name, QString::number(pixels, 'f', 1),
