@@ -58,6 +58,8 @@ ScriptPieces scriptPiecesFor(const sim::WorldSettings& s, const sim::SpawnSettin
         f << QStringLiteral("noise.js") << QStringLiteral("wind.js");
     if (s.randomAccel.enabled)
         f << QStringLiteral("random_acceleration.js");
+    if (s.point.enabled || s.pointer.enabled)
+        f << QStringLiteral("inverse_square.js"); // the rule both use, as the engine's addInverseSquare
     if (s.point.enabled)
         f << QStringLiteral("point_force.js");
     if (s.pointer.enabled)
