@@ -70,6 +70,12 @@ function makeRandom(seed) {
   return { mt: mt, index: 312 };
 }
 
+// A generator that goes on from where another one got to: its 312 numbers
+// (written in decimal) and how many of them it has used.
+function randomFromState(words, index) {
+  return { mt: words.map(seedFromText), index: index };
+}
+
 // Mixes all 312 numbers into the next 312.
 function twist(rng) {
   const mt = rng.mt;

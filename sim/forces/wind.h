@@ -26,6 +26,11 @@ public:
     /// Wind on a reference ball at time t, px/s² (+ blows to the right).
     double at(WindMode mode, const WindSettings& settings, double t) const;
 
+    /// The generator's state and this step's value, for a copy of the run
+    /// written elsewhere (the course's JavaScript) to go on from here.
+    const std::mt19937_64& generator() const { return m_rng; }
+    double value() const { return m_value; } ///< px/s²
+
 private:
     std::mt19937_64 m_rng;
     GradientNoise1D m_noise;

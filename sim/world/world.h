@@ -82,6 +82,18 @@ public:
     /// the integrator moved the balls to.
     double time() const { return m_time; }
     std::int64_t stepCount() const { return m_stepCount; }
+    /// s, what the rounding of time()'s sum lost so far (Kahan's carry).
+    double timeCarry() const { return m_timeCarry; }
+    /// The spawn settings the world was started with.
+    const SpawnSettings& spawn() const { return m_spawn; }
+
+    /// The random generators where the run has got to: the random
+    /// acceleration's, spawning's and the wind's, so a copy of the run written
+    /// elsewhere (the course's JavaScript) can go on from this step and draw
+    /// the same numbers.
+    const std::mt19937_64& accelGenerator() const { return m_rng; }
+    const std::mt19937_64& spawnGenerator() const { return m_spawnRng; }
+    const WindGenerator& windGenerator() const { return m_inputs.wind; }
     const StepStats& lastStep() const { return m_last; }
     const StepStats& totals() const { return m_totals; }
 

@@ -4,6 +4,10 @@
 
 #include "sim/integrators/integrator_info.h"
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 namespace forcelab {
 
 namespace {
@@ -251,6 +255,83 @@ std::optional<ScriptError> ScriptWorld::load(const QStringList& pieces, const si
     return std::nullopt;
 }
 
+namespace {
+
+// A generator's state as the script's randomFromState(words, index) takes it.
+// libstdc++ writes the 312 words as it keeps them and then how many it has
+// used; the standard's form is the last 312 numbers in order, which is the
+// same state with all of them used.
+QString randomStateCall(const std::mt19937_64& generator)
+{
+    std::ostringstream text;
+    text << generator;
+    std::istringstream in(text.str());
+    std::vector<std::string> words;
+    for (std::string word; in >> word;)
+        words.push_back(word);
+    int index = 312;
+    if (words.size() == 313) {
+        index = std::stoi(words.back());
+        words.pop_back();
+    }
+    QString call = QStringLiteral("randomFromState([");
+    for (std::size_t i = 0; i < words.size(); ++i)
+        call += (i ? QStringLiteral(",\"") : QStringLiteral("\"")) + QString::fromStdString(words[i]) + QStringLiteral("\"");
+    return call + QStringLiteral("], %1)").arg(index);
+}
+
+} // namespace
+
+std::optional<ScriptError> ScriptWorld::piecesFor(const sim::World& world, QStringList& files)
+{
+    const ScriptPieces pieces = scriptPiecesFor(world.settings(), world.spawn());
+    if (!pieces.missing.isEmpty())
+        return ScriptError{QStringLiteral("no JavaScript yet for %1").arg(pieces.missing.join(QStringLiteral(", "))),
+                           {}, 0, 0};
+    files = pieces.files;
+    return std::nullopt;
+}
+
+std::optional<ScriptError> ScriptWorld::loadFrom(const sim::World& world, const QString& extra)
+{
+    QStringList files;
+    if (auto error = piecesFor(world, files))
+        return error;
+    if (auto error = load(files, world.settings(), world.balls(), world.spawn(), extra))
+        return error;
+    m_world.setProperty(QStringLiteral("time"), world.time());
+    m_world.setProperty(QStringLiteral("timeCarry"), world.timeCarry());
+    if (!m_engine.globalObject().property(QStringLiteral("randomFromState")).isCallable())
+        return std::nullopt; // no piece draws random numbers
+    // The generators as the engine has them, where the pieces would make them
+    // from the seed on their first draw.
+    auto generator = [this](const std::mt19937_64& g) { return m_engine.evaluate(randomStateCall(g)); };
+    QJSValue random = m_world.property(QStringLiteral("randomAccel"));
+    random.setProperty(QStringLiteral("rng"), generator(world.accelGenerator()));
+    const sim::Matrix2X& draws = world.randomDraws();
+    QJSValue values = m_engine.newArray(static_cast<uint>(draws.cols()));
+    for (Eigen::Index i = 0; i < draws.cols(); ++i) {
+        QJSValue v = m_engine.newObject();
+        v.setProperty(QStringLiteral("x"), draws(0, i));
+        v.setProperty(QStringLiteral("y"), draws(1, i));
+        values.setProperty(static_cast<quint32>(i), v);
+    }
+    random.setProperty(QStringLiteral("values"), values);
+    QJSValue wind = m_world.property(QStringLiteral("wind"));
+    wind.setProperty(QStringLiteral("rng"), generator(world.windGenerator().generator()));
+    wind.setProperty(QStringLiteral("value"), world.windGenerator().value());
+    const QJSValue makeNoise = m_engine.globalObject().property(QStringLiteral("makeNoise"));
+    if (makeNoise.isCallable())
+        wind.setProperty(QStringLiteral("slopes"), makeNoise.call({m_world.property(QStringLiteral("seed"))}));
+    m_world.property(QStringLiteral("spawn")).setProperty(QStringLiteral("rng"), generator(world.spawnGenerator()));
+    return std::nullopt;
+}
+
+QJSValue ScriptWorld::global(const QString& name) const
+{
+    return m_engine.globalObject().property(name);
+}
+
 std::optional<ScriptError> ScriptWorld::step()
 {
     if (!m_step.isCallable())
@@ -283,8 +364,9 @@ int ScriptWorld::ballCount() const
 ScriptBall ScriptWorld::ball(int i) const
 {
     const QJSValue b = m_balls.property(static_cast<quint32>(i));
-    return {b.property(QStringLiteral("x")).toNumber(), b.property(QStringLiteral("y")).toNumber(),
-            b.property(QStringLiteral("vx")).toNumber(), b.property(QStringLiteral("vy")).toNumber()};
+    return {b.property(QStringLiteral("x")).toNumber(),  b.property(QStringLiteral("y")).toNumber(),
+            b.property(QStringLiteral("vx")).toNumber(), b.property(QStringLiteral("vy")).toNumber(),
+            b.property(QStringLiteral("r")).toNumber(),  b.property(QStringLiteral("m")).toNumber()};
 }
 
 } // namespace forcelab

@@ -8,6 +8,7 @@
 // reported; a JS error is reported with its file, line and column.
 #include "sim/forces/force_model.h"
 #include "sim/world/ball_state.h"
+#include "sim/world/world.h"
 #include "sim/world/world_settings.h"
 #include "ui/script/script_pieces.h"
 
@@ -33,7 +34,8 @@ struct ScriptError {
 };
 
 struct ScriptBall {
-    double x = 0.0, y = 0.0, vx = 0.0, vy = 0.0;
+    double x = 0.0, y = 0.0, vx = 0.0, vy = 0.0; ///< px, px/s
+    double r = 0.0, m = 0.0;                     ///< px, mass
 };
 
 class ScriptWorld {
@@ -53,6 +55,14 @@ public:
     std::optional<ScriptError> load(const QStringList& pieces, const sim::WorldSettings& settings,
                                     const sim::BallState& balls, const sim::SpawnSettings& spawn = {},
                                     const QString& extra = {});
+    /// Loads the pieces `world`'s settings need and, after them, `extra`, and
+    /// goes on from where `world` is: its balls, its time, and its random
+    /// generators (the random acceleration's, the wind's and spawning's) at the
+    /// numbers they will draw next, so the script's next step is the engine's.
+    std::optional<ScriptError> loadFrom(const sim::World& world, const QString& extra = {});
+    /// The pieces loadFrom uses for `world`, or the error naming what no piece covers.
+    static std::optional<ScriptError> piecesFor(const sim::World& world, QStringList& files);
+
     /// One step: the script's step(world, balls).
     std::optional<ScriptError> step();
     /// Runs `code` under the watchdog, as file `file`.
@@ -63,6 +73,12 @@ public:
 
     int ballCount() const;
     ScriptBall ball(int i) const;
+    /// The script's own value of global `name` (a function, a list it keeps).
+    QJSValue global(const QString& name) const;
+    /// The `world` object the script steps.
+    QJSValue worldObject() const { return m_world; }
+    QJSValue ballsObject() const { return m_balls; }
+    QJSEngine& engine() { return m_engine; }
     void setTimeLimit(std::chrono::milliseconds limit) { m_limit = limit; }
 
 private:
