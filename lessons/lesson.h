@@ -8,6 +8,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <QMap>
 
 #include <optional>
 
@@ -95,6 +96,11 @@ struct Lesson {
     /// Runs shown beside the live one (at most kMaxComparePanes).
     std::vector<ComparePane> compare;
     static constexpr int kMaxComparePanes = 3;
+    /// "student_code": a student's own versions of the course's JavaScript
+    /// files (file name, e.g. "walls.js" → its text), kept with the lesson so
+    /// the student can carry on where they stopped. Run only in the script
+    /// sandbox (ui/script), and only when the student presses Run.
+    QMap<QString, QString> studentCode;
     /// "units": shown in SI at this scale; absent, the lesson speaks pixels.
     std::optional<LessonUnits> units;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")

@@ -19,6 +19,9 @@ inline constexpr int kMaxListEntries = 1000;    ///< challenges, controls, overl
 inline constexpr int kMaxPaletteColours = 256;
 inline constexpr int kMaxErrors = 100;          ///< further problems are counted, not listed
 inline constexpr int kFormat = 1;
+/// "student_code": at most this many files of at most this many characters each.
+inline constexpr int kMaxStudentFiles = 64;
+inline constexpr int kMaxStudentFileChars = 64 * 1024;
 /// Sub-steps one claim may run (the longest shipped claim takes 18,000), so
 /// that `check` and the Predict panel finish in seconds.
 inline constexpr double kMaxClaimSteps = 1e6;

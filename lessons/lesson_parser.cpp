@@ -126,6 +126,39 @@ void checkControlsNamed(Reader& r, const Lesson& lesson)
     }
 }
 
+/// "student_code": {"walls.js": "…"}: file names of the course's kind (lower
+/// case, digits, '_', ending in .js) and their text. Only the sizes are
+/// checked here; the names are matched to the course's files when the code runs.
+void parseStudentCode(Reader& r, const QJsonObject& o, QMap<QString, QString>& out)
+{
+    static const QRegularExpression namePattern(QStringLiteral("^[a-z0-9_]{1,60}\\.js$"));
+    if (o.size() > kMaxStudentFiles) {
+        r.fail(QStringLiteral("student_code"),
+               QStringLiteral("%1 files is more than the limit of %2").arg(o.size()).arg(kMaxStudentFiles));
+        return;
+    }
+    QMap<QString, QString> files;
+    bool ok = true;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString path = QStringLiteral("student_code.%1").arg(it.key());
+        if (!namePattern.match(it.key()).hasMatch()) {
+            r.fail(path, QStringLiteral("%1 is not a file name of the course's code (such as \"walls.js\")").arg(quoted(it.key())));
+            ok = false;
+        } else if (!it.value().isString()) {
+            r.fail(path, QStringLiteral("expected the file's text as a string, got %1").arg(describe(it.value())));
+            ok = false;
+        } else if (it.value().toString().size() > kMaxStudentFileChars) {
+            r.fail(path, QStringLiteral("%1 characters is more than the limit of %2")
+                             .arg(it.value().toString().size()).arg(kMaxStudentFileChars));
+            ok = false;
+        } else {
+            files.insert(it.key(), it.value().toString());
+        }
+    }
+    if (ok)
+        out = files;
+}
+
 } // namespace
 
 const QStringList& overlayNames()
@@ -136,6 +169,8 @@ const QStringList& overlayNames()
     return names;
 }
 
+
+
 ParseResult parseLesson(const QJsonObject& root)
 {
     ParseResult result;
@@ -144,7 +179,7 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict", "units"});
+                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict", "units", "student_code"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -173,6 +208,8 @@ ParseResult parseLesson(const QJsonObject& root)
 
     if (const auto o = r.object(root, top, "units"))
         parseUnits(r, *o, lesson.units);
+    if (const auto o = r.object(root, top, "student_code"))
+        parseStudentCode(r, *o, lesson.studentCode);
 
     sim::Scene& scene = lesson.scene;
     if (const auto o = r.object(root, top, "world"))

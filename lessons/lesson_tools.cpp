@@ -15,6 +15,7 @@ const QList<ToolInfo>& lessonTools()
         {QStringLiteral("inspector"), QStringLiteral("Inspector"), {QStringLiteral("Inspector")}},
         {QStringLiteral("plots"), QStringLiteral("Plots"), {QStringLiteral("Plots")}},
         {QStringLiteral("code"), QStringLiteral("Code"), {QStringLiteral("Code panel")}},
+        {QStringLiteral("your_code"), QStringLiteral("Your Code"), {QStringLiteral("Your Code panel")}},
         {QStringLiteral("force_editor"), QStringLiteral("Force editor"), {QStringLiteral("Force editor")}},
         {QStringLiteral("accuracy"), QStringLiteral("Accuracy"),
          {QStringLiteral("Accuracy panel"), QStringLiteral("Accuracy menu")}},

@@ -426,6 +426,12 @@ QByteArray saveLesson(const Lesson& lesson)
             questions << predictLine(q);
         top.push_back({"predict", blockArray(questions, 2)});
     }
+    if (!lesson.studentCode.isEmpty()) { // only with a student's code, so a lesson saves as before
+        QList<QByteArray> files;
+        for (auto it = lesson.studentCode.cbegin(); it != lesson.studentCode.cend(); ++it)
+            files << str(it.key()) + ": " + str(it.value());
+        top.push_back({"student_code", "{\n    " + files.join(",\n    ") + "\n  }"});
+    }
     if (!lesson.compare.empty()) {
         QList<QByteArray> panes;
         for (const ComparePane& pane : lesson.compare)

@@ -440,6 +440,62 @@ void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std:
     font.setBold(true);
     p.setFont(font);
     p.setPen(QColor(0x1d, 0x22, 0x2c));
+    const QStringList labels = paneLabels();
+    const QFontMetricsF fm(font);
+    for (qsizetype k = 0; k < areas.size(); ++k) {
+        const QRectF strip(areas[k].left() + 10, areas[k].top(), areas[k].width() - 20, label);
+        const bool failed = k > 0 && runs[static_cast<std::size_t>(k - 1)].student &&
+                            (runs[static_cast<std::size_t>(k - 1)].student->error() ||
+                             runs[static_cast<std::size_t>(k - 1)].student->departure());
+        p.setPen(failed ? QColor(0xb0, 0x10, 0x10) : QColor(0x1d, 0x22, 0x2c));
+        p.drawText(strip, Qt::AlignLeft | Qt::AlignVCenter,
+                   fm.elidedText(labels.value(k), Qt::ElideRight, strip.width()));
+    }
+    // Where a student's code first departed from the reference: marked in its pane.
+    for (std::size_t k = 0; k < runs.size(); ++k)
+        if (runs[k].student && runs[k].world && runs[k].student->departure())
+            paintDeparture(p, areas[static_cast<qsizetype>(k) + 1].adjusted(0, label, 0, 0), *runs[k].world,
+                           *runs[k].student->departure(), own);
+}
+
+QStringList Canvas::paneLabels() const
+{
+    const std::vector<SimulationController::Pane>& runs = m_controller->comparePanes();
+    if (runs.empty())
+        return {};
+    QStringList labels;
+    if (const StudentRun* student = m_controller->studentRun()) {
+        // The student's code beside the reference: each with its energy, and
+        // the student's with how far it has come or where it departed.
+        const auto energy = [](const sim::World& w) {
+            return quantityText(w.energy().total(), WorldPainter::kEnergyUnit, 4);
+        };
+        labels << tr("reference (the course's code) · energy %1").arg(energy(m_controller->world()));
+        for (const SimulationController::Pane& pane : runs) {
+            if (!pane.student) {
+                labels << pane.label;
+                continue;
+            }
+            if (student->error())
+                labels << tr("your code stopped: %1").arg(student->error()->text());
+            else if (const auto& d = student->departure(); d && d->ball < 0)
+                labels << tr("your code departs at step %1: %2 balls, the reference has %3")
+                              .arg(d->step).arg(d->student).arg(d->reference);
+            else if (d)
+                labels << tr("your code departs at step %1 (ball %2, %3 off by %4) · energy %5")
+                              .arg(d->step)
+                              .arg(d->ball)
+                              .arg(d->field,
+                                   quantityText(d->size(), d->field.startsWith(QLatin1Char('v')) ? QStringLiteral("px/s")
+                                                                                               : QStringLiteral("px"), 3),
+                                   pane.world ? energy(*pane.world) : QString());
+            else
+                labels << tr("your code · agrees for %1 steps · energy %2")
+                              .arg(student->steps())
+                              .arg(pane.world ? energy(*pane.world) : QString());
+        }
+        return labels;
+    }
     // The live run is named by its own values of what the panes change
     // ("your run: clamp"), so the three labels read as one comparison.
     QStringList liveValues;
@@ -464,12 +520,42 @@ void Canvas::paintRuns(QPainter& p, const QRectF& area, WorldPainter& live, std:
                            .arg(value, 0, 'g', 4);
             }
         }
-    for (qsizetype k = 0; k < areas.size(); ++k) {
-        const QString text = k == 0 ? tr("your run: %1").arg(liveValues.join(QStringLiteral(", ")))
-                                    : runs[static_cast<std::size_t>(k - 1)].label;
-        p.drawText(QRectF(areas[k].left() + 10, areas[k].top(), areas[k].width() - 20, label),
-                   Qt::AlignLeft | Qt::AlignVCenter, text);
-    }
+    labels << tr("your run: %1").arg(liveValues.join(QStringLiteral(", ")));
+    for (const SimulationController::Pane& pane : runs)
+        labels << pane.label;
+    return labels;
+}
+
+// A red cross where the student's ball was at the step it departed, a ring
+// where the reference had it, and a card with the step: the two are often
+// less than a pixel apart, so the card says what the eye cannot see.
+void Canvas::paintDeparture(QPainter& p, const QRectF& area, const sim::World& pane, const ScriptDeparture& d,
+                            const PaintOptions& paneOptions) const
+{
+    if (d.ball < 0)
+        return;
+    const ViewTransform view = WorldPainter::view(pane, area, paneOptions); // the pane's own layout (no readout)
+    const double k = m_options.lineScale;
+    const QPointF at = view.toWidget(d.studentPosition);
+    const QPointF ref = view.toWidget(d.referencePosition);
+    p.save();
+    p.setClipRect(area);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const QColor red(0xc0, 0x10, 0x10);
+    p.setPen(QPen(red, 2.0 * k));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(ref, 10.0 * k, 10.0 * k);
+    p.setPen(QPen(red, 3.0 * k, Qt::SolidLine, Qt::RoundCap));
+    const double arm = 8.0 * k;
+    p.drawLine(at + QPointF(-arm, -arm), at + QPointF(arm, arm));
+    p.drawLine(at + QPointF(-arm, arm), at + QPointF(arm, -arm));
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
+    font.setBold(true);
+    p.setFont(font);
+    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
+    paintRulerCard(p, at + QPointF(0, -arm - cardHeight), tr("departs here, step %1").arg(d.step), k);
+    p.restore();
 }
 
 bool Canvas::showsStartHint() const

@@ -36,6 +36,7 @@ namespace forcelab {
 
 class SettingsEditor;
 class SimulationController;
+struct ScriptDeparture;
 
 class Canvas : public QWidget {
     Q_OBJECT
@@ -187,6 +188,10 @@ public:
     const std::optional<TraceMark>& traceMark() const { return m_traceMark; }
     /// Whether the mark is drawn now (the world is at its step).
     bool showsTraceMark() const;
+    /// The words over the live run and each compare pane, in the panes'
+    /// order (empty without panes): with a student's code running, the
+    /// reference's and the student's energy and where the code departed.
+    QStringList paneLabels() const;
     /// The tops of the flights recorded for the "apexes" overlay (world px, oldest first).
     const std::vector<ApexMark>& apexes() const { return m_history->apexes(); }
 
@@ -334,6 +339,8 @@ private:
     Ruler m_ruler;
     std::optional<TraceMark> m_traceMark;
     void paintTraceMark(QPainter& p) const;
+    void paintDeparture(QPainter& p, const QRectF& area, const sim::World& pane, const ScriptDeparture& d,
+                        const PaintOptions& paneOptions) const;
     bool m_measuringSecond = false; // the drag moves the second leg's end
     bool m_measuring = false;
     void paintRuler(QPainter& p) const;

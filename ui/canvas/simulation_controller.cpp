@@ -46,12 +46,15 @@ bool SimulationController::setSettings(const sim::WorldSettings& settings)
         emit ghostChanged();
     }
     // The panes follow every live change but their own settings.
-    for (Pane& pane : m_panes)
+    for (Pane& pane : m_panes) {
         if (pane.world)
             if (auto error = pane.world->setSettings(paneSettings(settings, pane))) {
                 emit errorOccurred(tr("%1 pane: %2").arg(pane.label, errorLine(*error)));
                 pane.world.reset();
             }
+        if (pane.student) // the script reads the settings when it is loaded
+            restartStudent(pane);
+    }
     m_timeline.settingsEdited(m_world);
     emit settingsChanged();
     emit stepped(); // a paused canvas shows the change (walls, markers)
@@ -88,6 +91,7 @@ void SimulationController::stepWorld()
         m_timeline.replayStep(m_world);
         if (m_ghost)
             m_ghost->setPointer(m_world.pointer());
+        followStudent();
         return;
     }
     if (m_pendingPointer) {
@@ -96,8 +100,73 @@ void SimulationController::stepWorld()
             m_ghost->setPointer(*m_pendingPointer);
         m_pendingPointer.reset();
     }
+    // The student's code sees the pointer the engine's step sees.
+    for (Pane& pane : m_panes)
+        if (pane.student)
+            pane.student->setPointer(m_world.pointer());
     m_world.step();
     m_timeline.afterStep(m_world);
+    followStudent();
+}
+
+// After each live step (not each frame): the student's code takes its step
+// and is compared with this one, so the first departure is found at its step.
+void SimulationController::followStudent()
+{
+    for (Pane& pane : m_panes) {
+        if (!pane.student || !pane.world)
+            continue;
+        const bool failed = pane.student->error().has_value();
+        const bool departed = pane.student->departure().has_value();
+        pane.student->follow(m_world);
+        pane.student->copyInto(m_world, *pane.world);
+        if (pane.student->error().has_value() != failed || pane.student->departure().has_value() != departed)
+            emit studentRunChanged();
+    }
+}
+
+void SimulationController::setStudentCode(const ScriptEdits& edits)
+{
+    if (!studentRun()) {
+        m_lessonPanes.clear();
+        for (const Pane& pane : m_panes)
+            m_lessonPanes.push_back({pane.label, pane.set});
+    }
+    m_panes.clear();
+    Pane pane;
+    pane.label = tr("your code");
+    pane.student = std::make_unique<StudentRun>(edits);
+    m_panes.push_back(std::move(pane));
+    restartPanes();
+    emit ghostChanged();
+    emit studentRunChanged();
+    emit stepped();
+}
+
+void SimulationController::stopStudentCode()
+{
+    if (!studentRun())
+        return;
+    setComparePanes(m_lessonPanes);
+    m_lessonPanes.clear();
+    emit studentRunChanged();
+    emit stepped();
+}
+
+const StudentRun* SimulationController::studentRun() const
+{
+    for (const Pane& pane : m_panes)
+        if (pane.student)
+            return pane.student.get();
+    return nullptr;
+}
+
+void SimulationController::restartStudent(Pane& pane)
+{
+    pane.student->restart(m_world);
+    if (pane.world)
+        pane.student->copyInto(m_world, *pane.world);
+    emit studentRunChanged();
 }
 
 bool SimulationController::stepBack()
@@ -388,9 +457,13 @@ void SimulationController::updateTimer()
 
 void SimulationController::setComparePanes(const std::vector<ComparePane>& panes)
 {
+    const bool student = studentRun() != nullptr;
     m_panes.clear();
+    m_lessonPanes.clear();
+    if (student)
+        emit studentRunChanged();
     for (const ComparePane& p : panes)
-        m_panes.push_back({p.label, p.set, nullptr});
+        m_panes.push_back({p.label, p.set, nullptr, nullptr});
     restartPanes();
     emit ghostChanged();
 }
@@ -419,6 +492,8 @@ void SimulationController::restartPanes()
         }
         world->mutableBalls() = m_world.balls();
         pane.world = std::move(world);
+        if (pane.student)
+            restartStudent(pane);
     }
     m_paneOffset = m_world.time();
 }
@@ -471,7 +546,7 @@ void SimulationController::restartGhost()
 void SimulationController::stepGhost()
 {
     for (Pane& pane : m_panes) {
-        if (!pane.world)
+        if (!pane.world || pane.student) // a student's run follows each step (followStudent)
             continue;
         const double target = m_world.time() - m_paneOffset;
         const double h = pane.world->settings().time.dt;

@@ -11,6 +11,7 @@
 #include "sim/world/timeline.h"
 #include "sim/world/world.h"
 #include "lessons/lesson.h"
+#include "ui/script/student_run.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -129,9 +130,22 @@ public:
         QString label;
         std::vector<std::pair<std::string, double>> set; ///< key path and value (sim/world/parameters.h rows)
         std::unique_ptr<sim::World> world;
+        /// Set for the pane of a student's own code (setStudentCode): `world`
+        /// then only shows the script's balls, which the script moves.
+        std::unique_ptr<StudentRun> student;
     };
     void setComparePanes(const std::vector<ComparePane>& panes);
     const std::vector<Pane>& comparePanes() const { return m_panes; }
+
+    /// Runs the course's JavaScript with the student's files in place of the
+    /// course's, in one pane beside the live world (the reference), from the
+    /// live world's state now and one step after each of its steps; the
+    /// lesson's own compare panes wait until stopStudentCode(). A seek, an
+    /// edit, new settings or a reset start it again from the live world.
+    void setStudentCode(const ScriptEdits& edits);
+    void stopStudentCode();
+    /// The student's run, or null when none runs.
+    const StudentRun* studentRun() const;
     /// The live settings with `pane`'s own applied.
     static sim::WorldSettings paneSettings(const sim::WorldSettings& live, const Pane& pane);
 
@@ -190,6 +204,8 @@ signals:
     void ghostChanged();
     /// The recorded span or the world's place in it changed.
     void timelineChanged();
+    /// The student's run started, stopped, departed or failed.
+    void studentRunChanged();
     /// The world jumped to another recorded step (a seek, a step back, a
     /// restored future): paths drawn so far no longer lead to it.
     void seeked();
@@ -230,6 +246,9 @@ private:
     int m_ghostDivider = 1;
     std::unique_ptr<sim::World> m_ghost;
     std::vector<Pane> m_panes;
+    std::vector<ComparePane> m_lessonPanes; // the lesson's own, kept while a student's code runs
+    void followStudent();
+    void restartStudent(Pane& pane);
     double m_paneOffset = 0.0; // s, live time when the panes started
     void restartPanes();
     double m_ghostOffset = 0.0; // s, live time when the ghost started (its own time starts at 0)

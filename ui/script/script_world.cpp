@@ -235,11 +235,12 @@ std::optional<ScriptError> ScriptWorld::load(const sim::WorldSettings& settings,
 
 std::optional<ScriptError> ScriptWorld::load(const QStringList& pieces, const sim::WorldSettings& settings,
                                              const sim::BallState& balls, const sim::SpawnSettings& spawn,
-                                             const QString& extra)
+                                             const QString& extra, const QMap<QString, QString>& replaced)
 {
     for (const QString& name : pieces) {
-        const QString source = scriptPieceSource(name);
-        if (source.isEmpty())
+        const auto own = replaced.constFind(name);
+        const QString source = own != replaced.cend() ? *own : scriptPieceSource(name);
+        if (source.isEmpty() && own == replaced.cend())
             return ScriptError{QStringLiteral("no piece named %1").arg(name), name, 0, 0};
         if (auto error = evaluate(source, name))
             return error;
@@ -292,12 +293,13 @@ std::optional<ScriptError> ScriptWorld::piecesFor(const sim::World& world, QStri
     return std::nullopt;
 }
 
-std::optional<ScriptError> ScriptWorld::loadFrom(const sim::World& world, const QString& extra)
+std::optional<ScriptError> ScriptWorld::loadFrom(const sim::World& world, const QString& extra,
+                                                 const QMap<QString, QString>& replaced)
 {
     QStringList files;
     if (auto error = piecesFor(world, files))
         return error;
-    if (auto error = load(files, world.settings(), world.balls(), world.spawn(), extra))
+    if (auto error = load(files, world.settings(), world.balls(), world.spawn(), extra, replaced))
         return error;
     m_world.setProperty(QStringLiteral("time"), world.time());
     m_world.setProperty(QStringLiteral("timeCarry"), world.timeCarry());

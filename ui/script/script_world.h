@@ -14,6 +14,7 @@
 
 #include <QJSEngine>
 #include <QJSValue>
+#include <QMap>
 #include <QString>
 
 #include <chrono>
@@ -54,12 +55,15 @@ public:
     /// what extra defines replaces what the pieces did.
     std::optional<ScriptError> load(const QStringList& pieces, const sim::WorldSettings& settings,
                                     const sim::BallState& balls, const sim::SpawnSettings& spawn = {},
-                                    const QString& extra = {});
+                                    const QString& extra = {}, const QMap<QString, QString>& replaced = {});
     /// Loads the pieces `world`'s settings need and, after them, `extra`, and
     /// goes on from where `world` is: its balls, its time, and its random
     /// generators (the random acceleration's, the wind's and spawning's) at the
     /// numbers they will draw next, so the script's next step is the engine's.
-    std::optional<ScriptError> loadFrom(const sim::World& world, const QString& extra = {});
+    /// A piece named in `replaced` is loaded from the text given there (a
+    /// student's own version of that file) instead of the course's.
+    std::optional<ScriptError> loadFrom(const sim::World& world, const QString& extra = {},
+                                        const QMap<QString, QString>& replaced = {});
     /// The pieces loadFrom uses for `world`, or the error naming what no piece covers.
     static std::optional<ScriptError> piecesFor(const sim::World& world, QStringList& files);
 

@@ -12,6 +12,7 @@
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
+#include "ui/docks/student_code_dock.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/lessons_dock.h"
@@ -184,13 +185,15 @@ void MainWindow::createDocks()
     m_plotsDock = new PlotsDock(m_controller, this);
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
+    m_studentCodeDock = new StudentCodeDock(m_controller, this);
     m_predictDock = new PredictDock(m_controller, this);
     m_stopwatchDock = new StopwatchDock(m_controller, this);
     m_forceEditorDock = new ForceEditorDock(m_controller, m_editor, this);
     connect(m_canvas, &Canvas::selectedBallChanged, m_stopwatchDock, &StopwatchDock::setBall);
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
                               static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
-                              static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_ballsDock),
+                              static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_studentCodeDock),
+                              static_cast<QDockWidget*>(m_ballsDock),
                               static_cast<QDockWidget*>(m_accuracyDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
@@ -227,6 +230,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_ballsDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
+    m_viewMenu->addAction(m_studentCodeDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
     m_viewMenu->addAction(m_stopwatchDock->toggleViewAction());
     m_viewMenu->addAction(m_forceEditorDock->toggleViewAction());
@@ -428,6 +432,7 @@ bool MainWindow::setLesson(const Lesson& lesson)
     m_inspectorDock->setSelectedBall(start);
     m_plotsDock->setHistogramShown(lesson.overlays.contains(QStringLiteral("histogram")));
     m_codeDock->setLessonControls(lesson.controls);
+    m_studentCodeDock->setLesson(lesson);
     m_predictDock->setLesson(lesson);
     if (m_predictDock->hasQuestions())
         m_predictDock->raise(); // the lesson asks first
@@ -591,7 +596,7 @@ QDockWidget* MainWindow::toolDock(const QString& name) const
     // lessons::lessonTools()'s names and the panels they open.
     const std::pair<const char*, QDockWidget*> docks[] = {
         {"stopwatch", m_stopwatchDock}, {"predict", m_predictDock}, {"inspector", m_inspectorDock},
-        {"plots", m_plotsDock},         {"code", m_codeDock},       {"force_editor", m_forceEditorDock},
+        {"plots", m_plotsDock},         {"code", m_codeDock}, {"your_code", m_studentCodeDock},       {"force_editor", m_forceEditorDock},
         {"accuracy", m_accuracyDock}};
     for (const auto& [key, dock] : docks)
         if (name == QLatin1String(key))

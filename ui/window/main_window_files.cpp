@@ -3,6 +3,8 @@
 // Every file is written atomically. Part of MainWindow (main_window.h).
 #include "ui/window/main_window.h"
 
+#include "ui/docks/student_code_dock.h"
+
 #include "lessons/atomic_file.h"
 #include "lessons/lesson_markup.h"
 #include "ui/drawing/png_file.h"
@@ -121,8 +123,10 @@ bool MainWindow::saveLessonTo(const QString& path, const lessons::DeriveChoices&
         showError(tr("Lesson not saved: %1").arg(derived.problems.join(QLatin1Char(' '))));
         return false;
     }
+    Lesson lesson = derived.lesson;
+    lesson.studentCode = m_studentCodeDock->edits(); // the student's own code goes with the lesson
     QString why;
-    if (!lessons::writeFileAtomically(path, saveLesson(derived.lesson), &why)) {
+    if (!lessons::writeFileAtomically(path, saveLesson(lesson), &why)) {
         showError(tr("Lesson not saved: %1").arg(why));
         return false;
     }
