@@ -207,6 +207,9 @@ void GuiStudentCodeTest::aSyntaxErrorMarksItsLine()
     QCOMPARE(student->error()->line, line);
     QVERIFY2(dock->statusText().contains(QStringLiteral("gravity.js:%1").arg(line)), qPrintable(dock->statusText()));
     QCOMPARE(dock->editor()->textCursor().blockNumber(), line - 1);
+    // The column, where the engine gives one (a syntax error): the cursor sits on the '*'.
+    QCOMPARE(student->error()->column, lines[line - 1].size() + 3);
+    QCOMPARE(dock->editor()->textCursor().positionInBlock(), student->error()->column - 1);
     QCOMPARE(dock->editor()->extraSelections().size(), 1);
     QCOMPARE(dock->editor()->extraSelections().front().cursor.blockNumber(), line - 1);
 }

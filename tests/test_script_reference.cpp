@@ -435,8 +435,9 @@ void TestScriptReference::aSyntaxErrorGivesItsLine()
     const auto error = script.evaluate(QStringLiteral("let a = 1;\nlet b = ;\nlet c = 3;\n"), QStringLiteral("mine.js"));
     QVERIFY(error);
     QCOMPARE(error->line, 2);
+    QCOMPARE(error->column, 9); // the ';' where a value should be
     QVERIFY2(error->message.contains(QStringLiteral("SyntaxError")), qPrintable(error->text()));
-    QVERIFY2(error->text().startsWith(QStringLiteral("mine.js:2")), qPrintable(error->text()));
+    QVERIFY2(error->text().startsWith(QStringLiteral("mine.js:2:9: ")), qPrintable(error->text()));
 }
 
 void TestScriptReference::aRuntimeErrorGivesItsLine()

@@ -101,9 +101,16 @@ std::optional<ScriptError> ScriptWorld::errorOf(const QJSValue& result, const QS
 std::optional<ScriptError> ScriptWorld::evaluate(const QString& code, const QString& file)
 {
     m_watchdog->arm(m_limit);
-    const QJSValue result = m_engine.evaluate(code, file);
+    QStringList stack; // "function:line:column:file" per frame; the column is known for syntax errors
+    const QJSValue result = m_engine.evaluate(code, file, 1, &stack);
     const bool interrupted = m_watchdog->disarm() && result.isError();
-    return errorOf(result, file, interrupted);
+    std::optional<ScriptError> error = errorOf(result, file, interrupted);
+    if (error && error->column == 0 && !stack.isEmpty()) {
+        const QStringList parts = stack.front().split(QLatin1Char(':'));
+        if (parts.size() >= 3 && parts[1].toInt() == error->line && parts[2].toInt() > 0)
+            error->column = parts[2].toInt();
+    }
+    return error;
 }
 
 QJSValue ScriptWorld::settingsObject(const sim::WorldSettings& s, const sim::SpawnSettings& spawn)

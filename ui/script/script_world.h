@@ -29,7 +29,7 @@ struct ScriptError {
     QString message;   ///< as the engine gives it ("ReferenceError: x is not defined")
     QString file;      ///< the piece ("walls.js") or the name given to evaluate()
     int line = 0;      ///< 1-based, 0 when unknown
-    int column = 0;    ///< 1-based, 0 when the engine does not say
+    int column = 0;    ///< 1-based, 0 when the engine does not say (Qt 6.4 says it for syntax errors only)
     /// "walls.js:12:5: ReferenceError: …"
     QString text() const;
 };
