@@ -72,6 +72,7 @@ private slots:
     void aSyntaxErrorMarksItsLine();
     void editsAreKeptPerLessonAndSavedWithIt();
     void aBadStudentCodeFieldIsOneLine();
+    void theLessonsPanesComeBackAfterStop();
 };
 
 // Unchanged, the course's code is the engine's: lesson 10 (random
@@ -264,6 +265,26 @@ void GuiStudentCodeTest::aBadStudentCodeFieldIsOneLine()
     QVERIFY2(loaded.errors().front().contains(QStringLiteral("bad.json")) &&
                  loaded.errors().front().contains(QStringLiteral("student_code.../../etc/passwd")),
              qPrintable(loaded.errors().front()));
+}
+
+// Lesson 09 compares wall rules in three panes: the student's run takes
+// their place and Stop gives them back, with their labels.
+void GuiStudentCodeTest::theLessonsPanesComeBackAfterStop()
+{
+    test::Workbench w(QStringLiteral("bounce-at-the-right-moment"));
+    QVERIFY(w.ready());
+    std::vector<QString> before;
+    for (const SimulationController::Pane& pane : w.controller()->comparePanes())
+        before.push_back(pane.label);
+    QVERIFY(before.size() >= 2);
+    w.window.studentCodeDock()->run();
+    QCOMPARE(w.controller()->comparePanes().size(), std::size_t{1});
+    w.window.studentCodeDock()->stop();
+    std::vector<QString> after;
+    for (const SimulationController::Pane& pane : w.controller()->comparePanes())
+        after.push_back(pane.label);
+    QCOMPARE(after, before);
+    QVERIFY(!w.controller()->studentRun());
 }
 
 QTEST_MAIN(GuiStudentCodeTest)

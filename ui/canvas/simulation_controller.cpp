@@ -147,8 +147,8 @@ void SimulationController::stopStudentCode()
 {
     if (!studentRun())
         return;
-    setComparePanes(m_lessonPanes);
-    m_lessonPanes.clear();
+    const std::vector<ComparePane> lessonPanes = std::move(m_lessonPanes); // setComparePanes clears the kept list
+    setComparePanes(lessonPanes);
     emit studentRunChanged();
     emit stepped();
 }
