@@ -12,6 +12,7 @@
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
+#include "ui/docks/step_apart_dock.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/lessons_dock.h"
@@ -184,6 +185,8 @@ void MainWindow::createDocks()
     m_plotsDock = new PlotsDock(m_controller, this);
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
+    m_stepApartDock = new StepApartDock(m_controller, this);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_stepApartDock, &StepApartDock::setSelectedBall);
     m_predictDock = new PredictDock(m_controller, this);
     m_stopwatchDock = new StopwatchDock(m_controller, this);
     m_forceEditorDock = new ForceEditorDock(m_controller, m_editor, this);
@@ -191,7 +194,7 @@ void MainWindow::createDocks()
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_plotsDock), static_cast<QDockWidget*>(m_predictDock),
                               static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
                               static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_ballsDock),
-                              static_cast<QDockWidget*>(m_accuracyDock)}) {
+                              static_cast<QDockWidget*>(m_accuracyDock), static_cast<QDockWidget*>(m_stepApartDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
     }
@@ -227,6 +230,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_ballsDock->toggleViewAction());
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
+    m_viewMenu->addAction(m_stepApartDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
     m_viewMenu->addAction(m_stopwatchDock->toggleViewAction());
     m_viewMenu->addAction(m_forceEditorDock->toggleViewAction());
@@ -592,7 +596,7 @@ QDockWidget* MainWindow::toolDock(const QString& name) const
     const std::pair<const char*, QDockWidget*> docks[] = {
         {"stopwatch", m_stopwatchDock}, {"predict", m_predictDock}, {"inspector", m_inspectorDock},
         {"plots", m_plotsDock},         {"code", m_codeDock},       {"force_editor", m_forceEditorDock},
-        {"accuracy", m_accuracyDock}};
+        {"accuracy", m_accuracyDock},   {"step_apart", m_stepApartDock}};
     for (const auto& [key, dock] : docks)
         if (name == QLatin1String(key))
             return dock;

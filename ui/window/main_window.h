@@ -28,6 +28,7 @@ namespace forcelab {
 
 class AccuracyDock;
 class CodeDock;
+class StepApartDock;
 class SettingsEditor;
 class StageView;
 class OverlayActions;
@@ -104,6 +105,7 @@ public:
     PlotsDock* plotsDock() const { return m_plotsDock; }
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     CodeDock* codeDock() const { return m_codeDock; }
+    StepApartDock* stepApartDock() const { return m_stepApartDock; }
     TraceCheck* traceCheck() const { return m_traceCheck; }
 
 protected:
@@ -178,6 +180,7 @@ private:
     ForceEditorDock* m_forceEditorDock = nullptr;
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
+    StepApartDock* m_stepApartDock = nullptr;
     SettingsEditor* m_editor = nullptr; // every control edits through it; owns the undo stack
     StageView* m_stage = nullptr;       // the central widget: the canvas and the stage view's bar
     OverlayActions* m_overlayActions = nullptr;
