@@ -46,6 +46,7 @@ private slots:
     void collisionNamesThePairAndItsResponse();
     void stepBackShowsTheStepBefore();
     void lessonWithoutJavaScriptSaysSo();
+    void playingAsksToPause();
 };
 
 // Lesson 07, semi-implicit Euler with gravity: forces, acceleration,
@@ -169,6 +170,23 @@ void GuiStepApartTest::lessonWithoutJavaScriptSaysSo()
     QTRY_VERIFY(dock->isVisible() && !dock->message().isEmpty());
     QVERIFY2(dock->message().contains(QStringLiteral("no JavaScript yet")), qPrintable(dock->message()));
     QVERIFY(dock->rows().isEmpty());
+}
+
+// While the world plays the panel runs no JavaScript and asks for a pause;
+// paused, it takes the step apart again.
+void GuiStepApartTest::playingAsksToPause()
+{
+    test::Workbench bench(QStringLiteral("07-gravity"));
+    QVERIFY(bench.ready());
+    SimulationController* controller = bench.controller();
+    controller->pause();
+    StepApartDock* dock = showDock(bench);
+    QTRY_VERIFY(dock->isVisible() && !dock->rows().isEmpty());
+    controller->play();
+    QTRY_VERIFY(dock->rows().isEmpty() && dock->message().startsWith(QStringLiteral("Pause")));
+    controller->pause();
+    QTRY_VERIFY(!dock->rows().isEmpty() && dock->message().isEmpty());
+    QVERIFY2(dock->rows().last().ok, qPrintable(dock->rows().last().note));
 }
 
 QTEST_MAIN(GuiStepApartTest)

@@ -177,7 +177,7 @@ QString full(double v) { return QString::number(v, 'g', 17); }
 
 QString ruleWords(const QString& name)
 {
-    if (name == QLatin1String("bounceOnWalls") || name == QLatin1String("exactWalls"))
+    if (name == QLatin1String("bounceOnWalls"))
         return QObject::tr("Walls: is the ball outside the box?");
     if (name.contains(QLatin1String("peed")))
         return QObject::tr("Speed limit");
@@ -242,8 +242,16 @@ void StepApartDock::refresh()
         return;
     }
     m_stale = false;
+    // While playing, every frame would only set the same note again.
+    if (m_controller->isPlaying() && m_rows.isEmpty() && m_message == pauseNote())
+        return;
     takeApart();
     render();
+}
+
+QString StepApartDock::pauseNote() const
+{
+    return tr("Pause to take a step apart: it is worked out for one step at a time, not for every frame.");
 }
 
 void StepApartDock::takeApart()
@@ -253,7 +261,7 @@ void StepApartDock::takeApart()
     const sim::World& world = m_controller->world();
     // A JavaScript engine per frame at 60 Hz would slow the run it describes.
     if (m_controller->isPlaying()) {
-        m_message = tr("Pause to take a step apart.");
+        m_message = pauseNote();
         return;
     }
     if (world.balls().empty()) {

@@ -60,6 +60,7 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    QString pauseNote() const;
     void takeApart();
     void render();
 
