@@ -51,6 +51,7 @@ private slots:
     void lessonWithoutJavaScriptSaysSo();
     void playingAsksToPause();
     void everyCoveredLessonMatchesTheEngine();
+    void eachSubStepHasItsRows();
 };
 
 // Lesson 07, semi-implicit Euler with gravity: forces, acceleration,
@@ -230,6 +231,38 @@ void GuiStepApartTest::everyCoveredLessonMatchesTheEngine()
         ++covered;
     }
     QVERIFY2(covered >= 25, qPrintable(QString::number(covered)));
+}
+
+// With 8 sub-steps each has its own rows, h = dt / 8; the panel shows one at
+// a time, and the rows still end on the engine's step.
+void GuiStepApartTest::eachSubStepHasItsRows()
+{
+    const LoadResult loaded = LessonLoader::load(QStringLiteral("07-gravity"));
+    QVERIFY(loaded.ok());
+    SimulationController controller;
+    QVERIFY(!controller.setScene(loaded.lesson->scene));
+    sim::WorldSettings s = controller.world().settings();
+    s.time.substeps = 8;
+    QVERIFY(controller.setSettings(s));
+    StepApartDock dock(&controller);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    QTRY_VERIFY(!dock.rows().isEmpty());
+    QList<int> velocityRows;
+    for (const StepApartRow& row : dock.rows())
+        if (row.kind == Kind::Velocity)
+            velocityRows << row.subStep;
+    QCOMPARE(velocityRows, (QList<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+    const double h = s.time.dt / 8;
+    const double vy0 = controller.world().balls().velocity(1, 0);
+    QVERIFY(sameBits(dock.rows()[indexOf(dock.rows(), Kind::Velocity)].vy, vy0 + h * s.gravity.g.y()));
+    QCOMPARE(dock.shownSubStep(), 1);
+    QVERIFY(dock.shownText().contains(QStringLiteral("Sub-step 1 of 8")));
+    QVERIFY(!dock.shownText().contains(QStringLiteral("Sub-step 2 of 8")));
+    dock.showSubStep(8);
+    QVERIFY(dock.shownText().contains(QStringLiteral("Sub-step 8 of 8")));
+    QVERIFY(dock.shownText().contains(QStringLiteral("matches the engine bit for bit")));
+    QVERIFY2(dock.rows().last().ok, qPrintable(dock.rows().last().note));
 }
 
 QTEST_MAIN(GuiStepApartTest)

@@ -12,6 +12,8 @@
 #include <QMap>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSignalBlocker>
+#include <QSpinBox>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
@@ -197,6 +199,18 @@ StepApartDock::StepApartDock(SimulationController* controller, QWidget* parent)
     m_title->setObjectName(QStringLiteral("stepApartTitle"));
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
+    auto* subStepRow = new QHBoxLayout;
+    m_subStep = new QSpinBox(body);
+    m_subStep->setObjectName(QStringLiteral("stepApartSubStep"));
+    m_subStep->setRange(0, 1);
+    m_subStep->setEnabled(false);
+    m_subStep->setSpecialValueText(tr("all"));
+    m_subStep->setAccessibleName(tr("Sub-step shown"));
+    subStepRow->addWidget(new QLabel(tr("Sub-step shown:"), body));
+    subStepRow->addWidget(m_subStep);
+    subStepRow->addStretch(1);
+    layout->addLayout(subStepRow);
+    connect(m_subStep, &QSpinBox::valueChanged, this, [this] { render(); });
     m_view = new QTextBrowser(body);
     m_view->setObjectName(QStringLiteral("stepApartView"));
     QFont font = m_view->font();
@@ -220,6 +234,10 @@ StepApartDock::StepApartDock(SimulationController* controller, QWidget* parent)
         connect(m_controller, signal, this, &StepApartDock::refresh);
     connect(m_controller, &SimulationController::playingChanged, this, &StepApartDock::refresh);
 }
+
+int StepApartDock::shownSubStep() const { return m_subStep->value(); }
+
+void StepApartDock::showSubStep(int subStep) { m_subStep->setValue(subStep); }
 
 void StepApartDock::setSelectedBall(int ball)
 {
@@ -246,6 +264,16 @@ void StepApartDock::refresh()
     if (m_controller->isPlaying() && m_rows.isEmpty() && m_message == pauseNote())
         return;
     takeApart();
+    // A few sub-steps are shown one after the other; with many, one at a
+    // time (the first at first), so the list stays short enough to read.
+    const int subSteps = std::max(1, m_controller->world().settings().time.substeps);
+    if (subSteps != m_subSteps) {
+        m_subSteps = subSteps;
+        const QSignalBlocker block(m_subStep);
+        m_subStep->setRange(0, subSteps);
+        m_subStep->setValue(subSteps <= 4 ? 0 : 1);
+    }
+    m_subStep->setEnabled(subSteps > 1);
     render();
 }
 
@@ -481,7 +509,10 @@ void StepApartDock::render()
     const QString mono = QFontDatabase::systemFont(QFontDatabase::FixedFont).family();
     QString html;
     const StepApartRow* previous = nullptr;
+    const int only = m_subStep->value() - 1; // -1: all
     for (const StepApartRow& row : m_rows) {
+        if (only >= 0 && row.subStep != only && row.kind != StepApartRow::Kind::Check)
+            continue;
         const bool heading = row.kind == StepApartRow::Kind::SubStep;
         const bool check = row.kind == StepApartRow::Kind::Check;
         QString colour = heading ? QStringLiteral("#1565c0") : QStringLiteral("#000000");

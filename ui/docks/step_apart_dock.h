@@ -15,6 +15,7 @@
 
 class QLabel;
 class QPushButton;
+class QSpinBox;
 class QTextBrowser;
 
 namespace forcelab {
@@ -49,6 +50,9 @@ public:
     int ball() const { return m_ball; }
     /// The rows as plain text, for a test or a copy.
     QString shownText() const;
+    /// The sub-step shown (1-based), or 0 for all of them.
+    int shownSubStep() const;
+    void showSubStep(int subStep);
 
 public slots:
     /// The canvas's selection; -1 takes ball 0.
@@ -71,6 +75,8 @@ private:
     QString m_message;
     QLabel* m_title = nullptr;
     QTextBrowser* m_view = nullptr;
+    QSpinBox* m_subStep = nullptr; // with many sub-steps, one at a time
+    int m_subSteps = 1;
     QPushButton* m_stepButton = nullptr;
     QPushButton* m_backButton = nullptr;
 };
