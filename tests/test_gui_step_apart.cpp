@@ -80,6 +80,7 @@ void GuiStepApartTest::gravityStepInOrderAndBitForBit()
              qPrintable(rows[velocity].code.join(QLatin1Char('\n'))));
     QVERIFY(rows[velocity].code.join(QLatin1Char('\n')).contains(QStringLiteral("b.vy = b.vy + h * acc[i].y;")));
     QVERIFY(rows[position].code.join(QLatin1Char('\n')).contains(QStringLiteral("b.y = b.y + h * b.vy;")));
+    QVERIFY2(rows[walls].note.contains(QStringLiteral("no wall touched")), qPrintable(rows[walls].note));
 
     const sim::WorldSettings& s = world.settings();
     const double h = s.time.dt / s.time.substeps;
@@ -130,6 +131,10 @@ void GuiStepApartTest::collisionNamesThePairAndItsResponse()
     QVERIFY2(rows[detection].note.contains(QStringLiteral("ball %1 and ball %2").arg(contact.a).arg(contact.b)),
              qPrintable(rows[detection].note));
     QCOMPARE(rows[response].other, contact.b);
+    // No force in this lesson: the acceleration row says so.
+    const int acceleration = indexOf(rows, Kind::Acceleration);
+    QVERIFY(acceleration >= 0 && indexOf(rows, Kind::Force) < 0);
+    QVERIFY2(rows[acceleration].note.contains(QStringLiteral("no force")), qPrintable(rows[acceleration].note));
     // Nothing after the response changes a velocity in this lesson (the
     // push-apart moves positions only), so its velocity is the engine's.
     QVERIFY(sameBits(rows[response].vx, next.balls().velocity(0, contact.a)));

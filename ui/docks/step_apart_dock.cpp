@@ -372,6 +372,8 @@ void StepApartDock::takeApart()
             row.hasAcceleration = true;
             row.ax = e.property(QStringLiteral("acc")).property(QStringLiteral("x")).toNumber();
             row.ay = e.property(QStringLiteral("acc")).property(QStringLiteral("y")).toNumber();
+            if (script.global(QStringLiteral("forces")).property(QStringLiteral("length")).toInt() == 0)
+                row.note = tr("no force is switched on: the acceleration stays 0");
         } else if (kind == QLatin1String("move")) {
             // The move's lines for one ball run one after the other, so the
             // ball between them holds the new velocity and the old position
