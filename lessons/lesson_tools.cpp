@@ -19,6 +19,7 @@ const QList<ToolInfo>& lessonTools()
         {QStringLiteral("force_editor"), QStringLiteral("Force editor"), {QStringLiteral("Force editor")}},
         {QStringLiteral("accuracy"), QStringLiteral("Accuracy"),
          {QStringLiteral("Accuracy panel"), QStringLiteral("Accuracy menu")}},
+        {QStringLiteral("step_apart"), QStringLiteral("One Step Apart"), {QStringLiteral("One Step Apart")}},
     };
     return tools;
 }

@@ -13,6 +13,7 @@
 #include "ui/drawing/handbook.h"
 #include "ui/docks/code_dock.h"
 #include "ui/docks/student_code_dock.h"
+#include "ui/docks/step_apart_dock.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/docks/inspector_dock.h"
 #include "ui/docks/lessons_dock.h"
@@ -186,6 +187,8 @@ void MainWindow::createDocks()
     m_accuracyDock = new AccuracyDock(m_controller, m_canvas, this); // closed at first: its books cost evaluations
     m_codeDock = new CodeDock(m_controller, this);
     m_studentCodeDock = new StudentCodeDock(m_controller, this);
+    m_stepApartDock = new StepApartDock(m_controller, this);
+    connect(m_canvas, &Canvas::selectedBallChanged, m_stepApartDock, &StepApartDock::setSelectedBall);
     m_predictDock = new PredictDock(m_controller, this);
     m_stopwatchDock = new StopwatchDock(m_controller, this);
     m_forceEditorDock = new ForceEditorDock(m_controller, m_editor, this);
@@ -194,7 +197,7 @@ void MainWindow::createDocks()
                               static_cast<QDockWidget*>(m_stopwatchDock), static_cast<QDockWidget*>(m_forceEditorDock),
                               static_cast<QDockWidget*>(m_codeDock), static_cast<QDockWidget*>(m_studentCodeDock),
                               static_cast<QDockWidget*>(m_ballsDock),
-                              static_cast<QDockWidget*>(m_accuracyDock)}) {
+                              static_cast<QDockWidget*>(m_accuracyDock), static_cast<QDockWidget*>(m_stepApartDock)}) {
         addDockWidget(Qt::RightDockWidgetArea, dock);
         tabifyDockWidget(m_inspectorDock, dock);
     }
@@ -231,6 +234,7 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_accuracyDock->toggleViewAction());
     m_viewMenu->addAction(m_codeDock->toggleViewAction());
     m_viewMenu->addAction(m_studentCodeDock->toggleViewAction());
+    m_viewMenu->addAction(m_stepApartDock->toggleViewAction());
     m_viewMenu->addAction(m_predictDock->toggleViewAction());
     m_viewMenu->addAction(m_stopwatchDock->toggleViewAction());
     m_viewMenu->addAction(m_forceEditorDock->toggleViewAction());
@@ -596,8 +600,8 @@ QDockWidget* MainWindow::toolDock(const QString& name) const
     // lessons::lessonTools()'s names and the panels they open.
     const std::pair<const char*, QDockWidget*> docks[] = {
         {"stopwatch", m_stopwatchDock}, {"predict", m_predictDock}, {"inspector", m_inspectorDock},
-        {"plots", m_plotsDock},         {"code", m_codeDock}, {"your_code", m_studentCodeDock},       {"force_editor", m_forceEditorDock},
-        {"accuracy", m_accuracyDock}};
+        {"plots", m_plotsDock},         {"code", m_codeDock},       {"your_code", m_studentCodeDock},
+        {"force_editor", m_forceEditorDock}, {"accuracy", m_accuracyDock}, {"step_apart", m_stepApartDock}};
     for (const auto& [key, dock] : docks)
         if (name == QLatin1String(key))
             return dock;

@@ -29,6 +29,7 @@ namespace forcelab {
 class AccuracyDock;
 class CodeDock;
 class StudentCodeDock;
+class StepApartDock;
 class SettingsEditor;
 class StageView;
 class OverlayActions;
@@ -106,6 +107,7 @@ public:
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     CodeDock* codeDock() const { return m_codeDock; }
     StudentCodeDock* studentCodeDock() const { return m_studentCodeDock; }
+    StepApartDock* stepApartDock() const { return m_stepApartDock; }
     TraceCheck* traceCheck() const { return m_traceCheck; }
 
 protected:
@@ -181,6 +183,7 @@ private:
     AccuracyDock* m_accuracyDock = nullptr;
     CodeDock* m_codeDock = nullptr;
     StudentCodeDock* m_studentCodeDock = nullptr;
+    StepApartDock* m_stepApartDock = nullptr;
     SettingsEditor* m_editor = nullptr; // every control edits through it; owns the undo stack
     StageView* m_stage = nullptr;       // the central widget: the canvas and the stage view's bar
     OverlayActions* m_overlayActions = nullptr;
