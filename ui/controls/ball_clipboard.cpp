@@ -18,10 +18,6 @@ QString number(double v)
     return QString::fromStdString(sim::shortestText(v));
 }
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("BallClipboard", text);
-}
 
 } // namespace
 
@@ -50,20 +46,20 @@ std::optional<sim::Ball> ballFromText(const QString& text, QString* why)
     };
     constexpr int kMaxCharacters = 4096;
     if (text.size() > kMaxCharacters)
-        return fail(tr("the clipboard holds %1 characters, more than a ball's %2").arg(text.size()).arg(kMaxCharacters));
+        return fail(QCoreApplication::translate("BallClipboard", "the clipboard holds %1 characters, more than a ball's %2").arg(text.size()).arg(kMaxCharacters));
     const QJsonDocument doc = QJsonDocument::fromJson(text.trimmed().toUtf8());
     if (!doc.isObject())
-        return fail(tr("the clipboard does not hold a ball"));
+        return fail(QCoreApplication::translate("BallClipboard", "the clipboard does not hold a ball"));
     const QJsonObject o = doc.object();
     for (auto it = o.begin(); it != o.end(); ++it) {
         static const QStringList known{"x", "y", "vx", "vy", "r", "mass", "q", "color", "pinned", "restitution"};
         if (!known.contains(it.key()))
-            return fail(tr("the clipboard's ball has an unknown field \"%1\"").arg(it.key().left(40)));
+            return fail(QCoreApplication::translate("BallClipboard", "the clipboard's ball has an unknown field \"%1\"").arg(it.key().left(40)));
     }
     sim::Ball ball;
     for (const char* key : {"x", "y", "r"})
         if (!o.value(QLatin1String(key)).isDouble())
-            return fail(tr("the clipboard's ball has no number \"%1\"").arg(QLatin1String(key)));
+            return fail(QCoreApplication::translate("BallClipboard", "the clipboard's ball has no number \"%1\"").arg(QLatin1String(key)));
     auto read = [&o](const char* key, double fallback) {
         const QJsonValue v = o.value(QLatin1String(key));
         return v.isDouble() ? v.toDouble() : fallback;
@@ -76,19 +72,19 @@ std::optional<sim::Ball> ballFromText(const QString& text, QString* why)
     ball.home = ball.position;
     if (o.contains(QStringLiteral("pinned"))) {
         if (!o.value(QStringLiteral("pinned")).isBool())
-            return fail(tr("the clipboard's ball has \"pinned\" that is not true or false"));
+            return fail(QCoreApplication::translate("BallClipboard", "the clipboard's ball has \"pinned\" that is not true or false"));
         ball.pinned = o.value(QStringLiteral("pinned")).toBool();
     }
     if (o.contains(QStringLiteral("restitution"))) { // absent: the world's
         const QJsonValue e = o.value(QStringLiteral("restitution"));
         if (!e.isDouble() || !(e.toDouble() >= 0.0))
-            return fail(tr("the clipboard's ball has a restitution that is not a number from 0 to 1"));
+            return fail(QCoreApplication::translate("BallClipboard", "the clipboard's ball has a restitution that is not a number from 0 to 1"));
         ball.restitution = e.toDouble();
     }
     if (o.contains(QStringLiteral("color"))) {
         const QColor colour = QColor::fromString(o.value(QStringLiteral("color")).toString());
         if (!colour.isValid())
-            return fail(tr("the clipboard's ball has no valid colour"));
+            return fail(QCoreApplication::translate("BallClipboard", "the clipboard's ball has no valid colour"));
         ball.color = colour.rgb() & 0xffffffu;
     }
     return ball;
