@@ -51,18 +51,21 @@ StudentCodeDock::StudentCodeDock(SimulationController* controller, QWidget* pare
     m_editor->setFont(mono);
     layout->addWidget(m_editor, 1);
 
+    // Two rows, so the panel stays as narrow as the others beside the canvas.
     auto* buttons = new QHBoxLayout;
+    auto* more = new QHBoxLayout;
     m_run = new QPushButton(tr("Run beside the reference"), body);
     m_run->setToolTip(tr("Runs your version in place of the course's, beside the reference (Ctrl+Return)"));
     m_stop = new QPushButton(tr("Stop"), body);
     m_stop->setToolTip(tr("Takes your code off the canvas"));
     m_revert = new QPushButton(tr("Back to the course's file"), body);
     m_revert->setToolTip(tr("Throws away your changes to this file"));
-    buttons->addWidget(m_run);
+    buttons->addWidget(m_run, 1);
     buttons->addWidget(m_stop);
-    buttons->addStretch(1);
-    buttons->addWidget(m_revert);
+    more->addStretch(1);
+    more->addWidget(m_revert);
     layout->addLayout(buttons);
+    layout->addLayout(more);
 
     m_status = new QLabel(body);
     m_status->setWordWrap(true);
