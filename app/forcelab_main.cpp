@@ -4,6 +4,8 @@
 #include "lessons/lesson_loader.h"
 #include "ui/canvas/canvas.h"
 #include "ui/window/main_window.h"
+#include "ui/window/window_host.h"
+#include "ui/window/language.h"
 #include "ui/drawing/png_file.h"
 #include "ui/drawing/render_bench.h"
 #include "ui/canvas/simulation_controller.h"
@@ -33,6 +35,7 @@ struct Options {
     QCommandLineOption zoom;
     QCommandLineOption follow;
     QCommandLineOption fitBalls;
+    QCommandLineOption language;
 };
 
 Options declareOptions(QCommandLineParser& parser)
@@ -72,9 +75,14 @@ Options declareOptions(QCommandLineParser& parser)
                                     QStringLiteral("Follow the selected ball (with --select)."));
     const QCommandLineOption fitBalls(QStringLiteral("fit-balls"),
                                       QStringLiteral("Zoom so every ball is seen (with --time: where they are then)."));
-    parser.addOptions({screenshot, after, time, size, present, select, ballTable, zoom, follow, fitBalls, benchRender});
+    const QCommandLineOption language(QStringLiteral("language"),
+                                      QStringLiteral("Show the program in language CODE (en, de or es) this time, "
+                                                     "without changing the remembered one (View > Language)."),
+                                      QStringLiteral("CODE"));
+    parser.addOptions({screenshot, after, time, size, present, select, ballTable, zoom, follow, fitBalls, language,
+                       benchRender});
     return {help, version, screenshot, after, time, size, present, benchRender, select, ballTable, zoom, follow,
-            fitBalls};
+            fitBalls, language};
 }
 
 // Reads the arguments before any window system is needed: --help and
@@ -239,7 +247,14 @@ int main(int argc, char* argv[])
             return 2;
         }
     }
-    forcelab::MainWindow window(lessons.isEmpty() ? QString() : lessons.first());
+    // The host owns the window, in the remembered language, and rebuilds it when View → Language changes it.
+    const QString language = parser.value(o.language);
+    if (parser.isSet(o.language) && !forcelab::applyLanguage(language)) {
+        std::fprintf(stderr, "forcelab: --language: \"%s\" is not one of en, de, es\n", qPrintable(language.left(40)));
+        return 2;
+    }
+    forcelab::WindowHost host(lessons.isEmpty() ? QString() : lessons.first(), parser.isSet(o.language));
+    forcelab::MainWindow& window = *host.window();
     std::optional<QSize> requested; // --size
     if (parser.isSet(o.screenshot) && !sizeForPicture(window, parser, o, requested))
         return 2;

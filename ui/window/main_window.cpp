@@ -756,6 +756,21 @@ void MainWindow::about()
                            .arg(QApplication::applicationVersion()));
 }
 
+bool MainWindow::isStaged() const
+{
+    return m_stage->isStaged();
+}
+
+QByteArray MainWindow::savedGeometry() const
+{
+    return m_stage->isStaged() ? m_normalGeometry : saveGeometry();
+}
+
+QByteArray MainWindow::savedDockState() const
+{
+    return m_stage->isStaged() ? m_normalDocks : saveState();
+}
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     writeSettings();

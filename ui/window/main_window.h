@@ -98,7 +98,21 @@ public:
     /// with ball `index` selected (−1: none), its keyboard focus in the table.
     void editBall(int index);
 
+    /// Whether the stage view is on.
+    bool isStaged() const;
+    /// The window's geometry and the docks' layout as the normal (not the
+    /// stage) view has them: what a rebuilt window restores.
+    QByteArray savedGeometry() const;
+    QByteArray savedDockState() const;
+
     SimulationController* controller() const { return m_controller; }
+
+signals:
+    /// View → Language: the user picked `code` (language.h); the window host
+    /// applies it and rebuilds the window in it.
+    void languageChosen(const QString& code);
+
+public:
     Canvas* canvas() const { return m_canvas; }
     ParameterPanel* parameterPanel() const { return m_parameters; }
     LessonsDock* lessonsDock() const { return m_lessonsDock; }
@@ -228,6 +242,7 @@ private:
     QAction* m_siUnitsAction = nullptr;
     QAction* m_unitScaleAction = nullptr;
     QMenu* m_unitsMenu = nullptr;
+    QMenu* m_languageMenu = nullptr;
     QMenu* m_toolsMenu = nullptr; // the lesson's tools, keys 1, 2, …
     QAction* m_largerTextAction = nullptr;
     QAction* m_smallerTextAction = nullptr;

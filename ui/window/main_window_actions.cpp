@@ -2,6 +2,7 @@
 // one place, then placed in the menus and on the toolbars. Part of
 // MainWindow (main_window.h).
 #include "ui/window/main_window.h"
+#include "ui/window/language.h"
 #include "ui/window/trace_check.h"
 
 #include "lessons/atomic_file.h"
@@ -64,6 +65,7 @@
 #include <QToolButton>
 #include <QBoxLayout>
 #include <QSettings>
+#include <QActionGroup>
 #include <QStatusBar>
 #include <QVBoxLayout>
 #include <QStyle>
@@ -544,6 +546,21 @@ void MainWindow::createMenus()
     m_unitsMenu->addSeparator();
     m_unitsMenu->addAction(m_unitScaleAction);
     m_viewMenu->addMenu(m_overlayActions->menu());
+    // Each language in its own words, so whoever cannot read the current one finds theirs.
+    m_languageMenu = m_viewMenu->addMenu(tr("&Language"));
+    m_languageMenu->setObjectName(QStringLiteral("languageMenu"));
+    auto* languages = new QActionGroup(m_languageMenu);
+    for (const Language& language : shippedLanguages()) {
+        QAction* action = m_languageMenu->addAction(language.name);
+        action->setObjectName(QStringLiteral("language_%1").arg(language.code));
+        action->setCheckable(true);
+        action->setChecked(language.code == currentLanguage());
+        languages->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code = language.code] {
+            if (code != currentLanguage())
+                emit languageChosen(code);
+        });
+    }
     // The stage view hides the menu bar: its right-click menu ends with the
     // lesson's tools and what the stage shows.
     m_canvas->setContextMenus({m_toolsMenu, m_overlayActions->menu()});

@@ -1,0 +1,105 @@
+// View → Language switches the whole window live: a new window in the new
+// language replaces the old one with the same lesson, the same world (balls,
+// clock) and the same selection, and the choice is remembered.
+
+#include "gui_settle.h"
+
+#include "ui/canvas/canvas.h"
+#include "ui/canvas/simulation_controller.h"
+#include "ui/window/language.h"
+#include "ui/window/main_window.h"
+#include "ui/window/window_host.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+using namespace forcelab;
+
+namespace {
+
+QStringList menuTitles(MainWindow* window)
+{
+    QStringList titles;
+    for (QAction* a : window->menuBar()->actions())
+        titles << a->text();
+    return titles;
+}
+
+} // namespace
+
+class GuiLanguageTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+    void cleanup() { applyLanguage(QStringLiteral("en")); }
+    void switchingKeepsTheClassesWorkAndIsRemembered();
+    void aDamagedSettingFallsBackToEnglishAndSaysSo();
+};
+
+void GuiLanguageTest::switchingKeepsTheClassesWorkAndIsRemembered()
+{
+    WindowHost host(QStringLiteral("gravity"));
+    MainWindow* english = host.window();
+    english->resize(1280, 720);
+    english->show();
+    QVERIFY(QTest::qWaitForWindowExposed(english));
+    QVERIFY(menuTitles(english).contains(QStringLiteral("&View")));
+    QVERIFY(english->controller()->runToStep(90));
+    english->canvas()->setSelectedBall(2);
+    const sim::BallState before = english->controller()->world().balls();
+    const double time = english->controller()->world().time();
+
+    // The user picks Deutsch in View → Language.
+    QAction* deutsch = english->findChild<QAction*>(QStringLiteral("language_de"));
+    QVERIFY(deutsch);
+    QCOMPARE(deutsch->text(), QStringLiteral("Deutsch"));
+    deutsch->trigger();
+    QTRY_VERIFY(host.window() != english);
+    MainWindow* german = host.window();
+    QVERIFY(QTest::qWaitForWindowExposed(german));
+    QCOMPARE(currentLanguage(), QStringLiteral("de"));
+    QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("de"));
+    const QString view = QCoreApplication::translate("forcelab::MainWindow", "&View");
+    QVERIFY2(menuTitles(german).contains(view) && !menuTitles(german).contains(QStringLiteral("&View")),
+             qPrintable(menuTitles(german).join(QLatin1Char(' '))));
+    // The class's work is all there: the lesson, the clock, every ball, the selection.
+    QCOMPARE(german->lesson().id, QStringLiteral("gravity"));
+    QCOMPARE(german->controller()->world().time(), time);
+    const sim::BallState& after = german->controller()->world().balls();
+    QCOMPARE(after.size(), before.size());
+    QVERIFY(after.position == before.position && after.velocity == before.velocity);
+    QCOMPARE(german->canvas()->selectedBall(), 2);
+    QVERIFY(german->findChild<QAction*>(QStringLiteral("language_de"))->isChecked());
+
+    // And it runs on from there.
+    QVERIFY(german->controller()->runToStep(german->controller()->world().stepCount() + 10));
+
+    german->findChild<QAction*>(QStringLiteral("language_en"))->trigger();
+    QTRY_VERIFY(host.window() != german);
+    QVERIFY(menuTitles(host.window()).contains(QStringLiteral("&View")));
+    QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("en"));
+}
+
+void GuiLanguageTest::aDamagedSettingFallsBackToEnglishAndSaysSo()
+{
+    QSettings().setValue(QStringLiteral("language"), QStringLiteral("klingon"));
+    QString problem;
+    QCOMPARE(rememberedLanguage(&problem), QStringLiteral("en"));
+    QVERIFY2(problem.contains(QStringLiteral("language")) && problem.contains(QStringLiteral("klingon")), qPrintable(problem));
+    QSettings().setValue(QStringLiteral("language"), QStringLiteral("es"));
+    QCOMPARE(rememberedLanguage(), QStringLiteral("es"));
+    WindowHost host(QStringLiteral("gravity"));
+    QCOMPARE(currentLanguage(), QStringLiteral("es"));
+    QSettings().remove(QStringLiteral("language"));
+}
+
+QTEST_MAIN(GuiLanguageTest)
+#include "test_gui_language.moc"
