@@ -6,6 +6,7 @@
 
 #include "ui/canvas/canvas.h"
 #include "ui/canvas/simulation_controller.h"
+#include "ui/controls/number_control.h"
 #include "ui/window/language.h"
 #include "ui/window/main_window.h"
 #include "ui/window/window_host.h"
@@ -16,6 +17,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
+
+#include <cmath>
 
 using namespace forcelab;
 
@@ -78,6 +81,18 @@ void GuiLanguageTest::switchingKeepsTheClassesWorkAndIsRemembered()
     QVERIFY(after.position == before.position && after.velocity == before.velocity);
     QCOMPARE(german->canvas()->selectedBall(), 2);
     QVERIFY(german->findChild<QAction*>(QStringLiteral("language_de"))->isChecked());
+
+    // Number fields write and read numbers the German way: the time step
+    // reads "0,01667" and typing "0,02" gives 0.02 s.
+    bool sawComma = false;
+    for (NumberSpinBox* box : german->findChildren<NumberSpinBox*>())
+        if (box->isVisibleTo(german) && box->value() != std::round(box->value()) && std::isfinite(box->value())) {
+            QVERIFY2(box->text().contains(QLatin1Char(',')) && !box->text().contains(QLatin1Char('.')),
+                     qPrintable(box->text()));
+            QCOMPARE(box->valueFromText(QStringLiteral("0,02")), 0.02);
+            sawComma = true;
+        }
+    QVERIFY(sawComma);
 
     // And it runs on from there.
     QVERIFY(german->controller()->runToStep(german->controller()->world().stepCount() + 10));

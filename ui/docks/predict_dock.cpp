@@ -61,7 +61,7 @@ PredictDock::PredictDock(SimulationController* controller, QWidget* parent)
     m_number->setPlaceholderText(tr("your guess"));
     auto* validator = new QDoubleValidator(m_number);
     validator->setNotation(QDoubleValidator::StandardNotation);
-    validator->setLocale(QLocale::c());
+    validator->setLocale(QLocale()); // the language's (1,5 in German; language.h)
     m_number->setValidator(validator);
     m_unit = new QLabel(body);
     m_unit->setObjectName(QStringLiteral("predictUnit"));
@@ -204,7 +204,7 @@ void PredictDock::lockIn()
     const Prediction& q = m_lesson.predict[static_cast<std::size_t>(m_question)];
     if (q.choices.isEmpty()) {
         bool ok = false;
-        const double value = QLocale::c().toDouble(m_number->text().trimmed(), &ok);
+        const double value = QLocale().toDouble(m_number->text().trimmed(), &ok);
         if (!ok || !std::isfinite(value)) {
             m_result->setText(tr("Type a number first (for example 200)."));
             return;

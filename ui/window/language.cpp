@@ -69,6 +69,15 @@ bool applyLanguage(const QString& code)
     if (now.qt)
         QCoreApplication::installTranslator(now.qt.get());
     now.code = code;
+    // Number fields follow the language: 1,5 in German and Spanish, 1.5 in
+    // English, never with thousands separators (a typed number is one group
+    // of digits). Lesson files, traces and the command line keep their one
+    // format: they are read with the C locale or from_chars, not this one.
+    QLocale locale = code == QLatin1String("de")   ? QLocale(QLocale::German, QLocale::Germany)
+                     : code == QLatin1String("es") ? QLocale(QLocale::Spanish, QLocale::Spain)
+                                                   : QLocale::c();
+    locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
+    QLocale::setDefault(locale);
     return true;
 }
 

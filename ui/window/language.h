@@ -2,8 +2,9 @@
 // The program's languages: English (the source) and those with a
 // translation built in (ui/i18n/forcelab_XX.ts, compiled to
 // ":/i18n/forcelab_XX.qm"). Applying one installs the program's
-// translator and Qt's own (standard dialogs' buttons); the choice is
-// remembered in the settings.
+// translator and Qt's own (standard dialogs' buttons) and makes number
+// fields write and read numbers the language's way (1,5 in German); the
+// choice is remembered in the settings.
 #include <QList>
 #include <QString>
 
