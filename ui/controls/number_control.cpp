@@ -196,6 +196,18 @@ NumberControl::NumberControl(const QString& objectName, const Spec& spec, QWidge
         emit valueEdited(v, false);
     });
     connect(m_spin, &NumberSpinBox::outOfRange, this, &NumberControl::outOfRange);
+    // The slider's own value is a position (0 … kSteps): its description
+    // carries the number a student reads, with the unit.
+    connect(m_spin, &QDoubleSpinBox::textChanged, m_slider,
+            [this](const QString& text) { m_slider->setAccessibleDescription(text); });
+    m_slider->setAccessibleDescription(m_spin->text());
+}
+
+void NumberControl::setSpokenName(const QString& name)
+{
+    setAccessibleName(name);
+    m_slider->setAccessibleName(tr("%1, slider").arg(name));
+    m_spin->setAccessibleName(tr("%1, value").arg(name));
 }
 
 void NumberControl::applySpec()
@@ -235,6 +247,7 @@ void NumberControl::setValue(double value)
     if (!m_slider->isSliderDown())
         m_slider->setValue(positionFor(value));
     m_updating = false;
+    m_slider->setAccessibleDescription(m_spin->text()); // also when only the unit changed (setSpec)
 }
 
 double NumberControl::value() const

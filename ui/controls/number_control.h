@@ -94,6 +94,11 @@ public:
     void setValue(double value);
     double value() const;
 
+    /// What a screen reader calls the row: the slider "NAME, slider", the
+    /// field "NAME, value"; the slider's description says the value with
+    /// its unit as the field shows it ("980 px/s²"), kept up to date.
+    void setSpokenName(const QString& name);
+
     NumberSpinBox* spinBox() const { return m_spin; }
     QSlider* slider() const { return m_slider; }
     /// True while the user drags the slider (consecutive moves merge into one undo step).

@@ -390,10 +390,8 @@ void ParameterPanel::addRow(const QString& key, const QString& label, QWidget* f
     plain.remove(QStringLiteral("<sub>")).remove(QStringLiteral("</sub>"));
     // A screen reader names each part of the row after its label.
     field->setAccessibleName(plain);
-    if (auto* number = qobject_cast<NumberControl*>(field)) {
-        number->slider()->setAccessibleName(tr("%1, slider").arg(plain));
-        number->spinBox()->setAccessibleName(tr("%1, value").arg(plain));
-    }
+    if (auto* number = qobject_cast<NumberControl*>(field))
+        number->setSpokenName(plain);
     m_rows.push_back(Row{key, section.key, section.box->title() + QLatin1Char(' ') + plain.toLower(), field});
 }
 

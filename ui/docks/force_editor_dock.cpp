@@ -166,7 +166,7 @@ void ForceEditorDock::rebuildConstants()
         const QString name = QString::fromStdString(constant.name);
         auto* slider = new NumberControl(QStringLiteral("customConstant_%1").arg(name), spec, m_constantsBox);
         slider->setValue(constant.value);
-        slider->slider()->setAccessibleName(tr("Constant %1").arg(name));
+        slider->setSpokenName(tr("Constant %1").arg(name));
         auto* label = new QLabel(name, m_constantsBox);
         m_constantsGrid->addWidget(label, static_cast<int>(k), 0);
         m_constantsGrid->addWidget(slider, static_cast<int>(k), 1);
