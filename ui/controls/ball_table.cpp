@@ -28,6 +28,9 @@ BallTable::BallTable(SimulationController* controller, SettingsEditor* editor, c
     m_proxy->setDynamicSortFilter(false); // sorted when a header is clicked, not re-sorted every frame
 
     m_view->setObjectName(QStringLiteral("ballTableView"));
+    // Tab leaves the table (the arrows move between its cells), so a keyboard
+    // user is not caught in it on the way round the window.
+    m_view->setTabKeyNavigation(false);
     m_view->setModel(m_proxy);
     m_view->setSortingEnabled(true);
     m_view->sortByColumn(BallTableModel::Index, Qt::AscendingOrder);

@@ -53,6 +53,9 @@
 #include <QToolButton>
 #include <QBoxLayout>
 #include <QSettings>
+#include <QKeyEvent>
+#include <QPushButton>
+#include <QAbstractButton>
 #include <QStatusBar>
 #include <QVBoxLayout>
 #include <QStyle>
@@ -80,7 +83,8 @@ const QString kTextScaleKey = QStringLiteral("view/textScale");
 // "Ins…", "P…", "P…", "Stop…", "Force …", "C…", and nobody can tell Plots
 // from Predict. The main window makes those bars itself, when docks are
 // stacked (at start, on a saved layout, when the user drags one), so each
-// is set up here when it is first polished.
+// is set up here when it is first polished, and Tab reaches it so the
+// keyboard can bring a stacked panel forward.
 class ReadableDockTabs : public QObject {
 public:
     using QObject::QObject;
@@ -92,7 +96,39 @@ protected:
             if (auto* bar = qobject_cast<QTabBar*>(static_cast<QChildEvent*>(event)->child())) {
                 bar->setElideMode(Qt::ElideNone);
                 bar->setUsesScrollButtons(true);
+                // Reached with Tab, its arrows pick a panel: the keyboard's way to the stacked ones.
+                bar->setFocusPolicy(Qt::TabFocus);
             }
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+// Space runs and pauses the simulation from anywhere, as a window-wide
+// shortcut; but a keyboard user presses a focused button with Space, and a
+// shortcut would take the key first. So while a button has the keyboard
+// focus, Space (and Enter) go to the button.
+class KeysToFocusedButton : public QObject {
+public:
+    using QObject::QObject;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() == QEvent::ShortcutOverride && qobject_cast<QAbstractButton*>(watched)) {
+            auto* key = static_cast<QKeyEvent*>(event);
+            if (key->modifiers() == Qt::NoModifier &&
+                (key->key() == Qt::Key_Space || key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
+                event->accept();
+                return true;
+            }
+        }
+        if (event->type() == QEvent::KeyPress && qobject_cast<QPushButton*>(watched)) {
+            auto* key = static_cast<QKeyEvent*>(event);
+            if (key->modifiers() == Qt::NoModifier && (key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
+                static_cast<QPushButton*>(watched)->click(); // Enter presses it too, as in a dialog
+                return true;
+            }
+        }
         return QObject::eventFilter(watched, event);
     }
 };
@@ -119,8 +155,15 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
     m_overlayActions = new OverlayActions(m_canvas, this);
     m_stage->createBar({m_playAction, m_stepAction, m_resetAction, m_slowerAction, m_fasterAction});
     // Escape leaves the stage view.
+    // In the normal view it takes the keyboard back to the canvas, where the keys of the simulation work.
     auto* leave = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    connect(leave, &QShortcut::activated, this, [this] { m_presentationAction->setChecked(false); });
+    connect(leave, &QShortcut::activated, this, [this] {
+        if (m_stage->isStaged())
+            m_presentationAction->setChecked(false);
+        else
+            m_canvas->setFocus(Qt::ShortcutFocusReason);
+    });
+    qApp->installEventFilter(new KeysToFocusedButton(this));
     createMenus();
     createToolBars();
     createTimeActions(); // Step Back and the timeline bar
@@ -616,6 +659,7 @@ void MainWindow::showTool(const QString& name)
     if (!m_stage->isStaged()) {
         dock->show();
         dock->raise();
+        focusFirstControl(dock); // the key that opens a tool takes the keyboard into it (Escape: back)
         return;
     }
     // On the stage: a floating panel in the top-right corner, over the box
@@ -637,6 +681,21 @@ void MainWindow::showTool(const QString& name)
     const QPoint corner(std::max(0, width() - shown.width() - 12), std::min(12, std::max(0, height() - shown.height())));
     dock->move(mapToGlobal(corner));
     dock->raise();
+    focusFirstControl(dock);
+}
+
+// The first control of `dock` a Tab would reach (in the order they were
+// made, which is the order they are laid out): a typed answer, a button.
+void MainWindow::focusFirstControl(QDockWidget* dock)
+{
+    if (!dock->widget())
+        return;
+    for (QWidget* w : dock->widget()->findChildren<QWidget*>())
+        if ((w->focusPolicy() & Qt::TabFocus) && w->isVisibleTo(dock) && w->isEnabled() &&
+            !w->objectName().startsWith(QLatin1String("qt_"))) {
+            w->setFocus(Qt::ShortcutFocusReason);
+            return;
+        }
 }
 
 void MainWindow::setTextScale(double scale)

@@ -157,6 +157,7 @@ private slots:
     void setLessonTools(const QStringList& tools);
     QDockWidget* toolDock(const QString& name) const;
     void useCompactDocks();
+    void focusFirstControl(QDockWidget* dock);
     void about();
 
 private:
