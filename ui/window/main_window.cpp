@@ -1,4 +1,5 @@
 #include "ui/window/main_window.h"
+#include "ui/canvas/scene_description.h"
 
 #include "lessons/atomic_file.h"
 #include "lessons/lesson_markup.h"
@@ -53,6 +54,8 @@
 #include <QToolButton>
 #include <QBoxLayout>
 #include <QSettings>
+#include <QToolTip>
+#include <QAccessible>
 #include <QKeyEvent>
 #include <QPushButton>
 #include <QAbstractButton>
@@ -813,6 +816,18 @@ void MainWindow::about()
     QMessageBox::about(this, tr("About ForceLab"),
                        tr("<b>ForceLab</b> %1<br>A workbench for forces and collisions of balls in two dimensions.")
                            .arg(QApplication::applicationVersion()));
+}
+
+void MainWindow::describeScene()
+{
+    m_sceneDescription = forcelab::describeScene(m_controller->world(), m_canvas->selectedBall());
+    m_canvas->setAccessibleDescription(m_sceneDescription);
+    QAccessibleEvent changed(m_canvas, QAccessible::DescriptionChanged);
+    QAccessible::updateAccessibility(&changed);
+    statusBar()->showMessage(m_sceneDescription, 20000);
+    if (m_stage->isStaged() && m_canvas->isVisible()) // the status bar is hidden there
+        QToolTip::showText(m_canvas->mapToGlobal(QPoint(m_canvas->width() / 4, m_canvas->height() * 3 / 4)),
+                           m_sceneDescription, m_canvas);
 }
 
 bool MainWindow::isStaged() const

@@ -106,6 +106,11 @@ public:
     QByteArray savedDockState() const;
 
     SimulationController* controller() const { return m_controller; }
+    /// Says what is on the stage (Simulation → Describe the Scene, D; and
+    /// after every pause): the canvas's accessible description, announced to
+    /// a screen reader, and the status bar (on the stage, a note over it).
+    void describeScene();
+    QString sceneDescription() const { return m_sceneDescription; }
 
 signals:
     /// View → Language: the user picked `code` (language.h); the window host
@@ -238,6 +243,8 @@ private:
     QAction* m_nextAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_presentationAction = nullptr;
+    QAction* m_describeAction = nullptr;
+    QString m_sceneDescription;
     QAction* m_themeAction = nullptr;
     QAction* m_pixelUnitsAction = nullptr; // View → Units, one of the two checked
     QAction* m_siUnitsAction = nullptr;

@@ -134,6 +134,18 @@ void MainWindow::createSimulationActions()
     m_stepAction->setStatusTip(tr("Pause and advance by one time step dt (→ or .)"));
     connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepOnce);
 
+    // The stage in words (scene_description.h): on the key, and by itself after every pause.
+    m_describeAction = new QAction(tr("&Describe the Scene"), this);
+    m_describeAction->setObjectName(QStringLiteral("describeAction"));
+    m_describeAction->setShortcut(Qt::Key_D);
+    m_describeAction->setStatusTip(tr("Say in words what is on the stage: the balls, the selected one's motion, "
+                                      "when it reaches a wall, the energy (D)"));
+    connect(m_describeAction, &QAction::triggered, this, &MainWindow::describeScene);
+    connect(m_controller, &SimulationController::playingChanged, this, [this](bool playing) {
+        if (!playing)
+            describeScene();
+    });
+
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("&Reset"), this);
     m_resetAction->setObjectName(QStringLiteral("resetAction"));
     m_resetAction->setShortcut(Qt::Key_R);
@@ -355,7 +367,7 @@ void MainWindow::createFileActions()
     connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentationMode);
     // The keys of the menus and toolbars the stage view hides work there too.
     addActions({m_presentationAction, m_previousAction, m_nextAction, m_playAction, m_stepAction, m_resetAction,
-                m_slowerAction, m_fasterAction, m_quitAction});
+                m_slowerAction, m_fasterAction, m_quitAction, m_describeAction});
 
     // Text size: Ctrl with = (or +) and −, as in a web browser; the plain
     // keys zoom the stage (createCameraActions).
@@ -515,6 +527,8 @@ void MainWindow::createMenus()
     simulation->addSeparator();
     simulation->addAction(m_slowerAction);
     simulation->addAction(m_fasterAction);
+    simulation->addSeparator();
+    simulation->addAction(m_describeAction);
 
     QMenu* lessons = menuBar()->addMenu(tr("&Lesson"));
     lessons->addAction(m_previousAction);
