@@ -10,6 +10,7 @@
 #include "ui/docks/stopwatch_dock.h"
 #include "ui/controls/parameter_panel.h"
 #include "ui/controls/number_control.h"
+#include "ui/controls/focus_ring.h"
 #include "sim/world/parameters.h"
 
 #include <QAction>
@@ -121,6 +122,28 @@ void GuiKeyboardTest::aWholeLessonWithKeysAlone()
         auto* spin = qobject_cast<NumberSpinBox*>(f);
         return spin && w.window.parameterPanel()->isAncestorOf(spin) && spin->value() < spin->maximum();
     }));
+    // The focus ring is round it, in the plain theme and the projector theme.
+    auto* ring = w.window.findChild<FocusRing*>();
+    QVERIFY(ring);
+    auto ringIsRound = [&] {
+        const QRect target(focus()->mapTo(&w.window, QPoint(0, 0)), focus()->size());
+        return ring->isVisible() && ring->target() == focus() && ring->geometry().contains(target) &&
+               w.window.rect().contains(target) && // in sight: its panel came forward
+               !focus()->visibleRegion().isEmpty() &&
+               ring->geometry().adjusted(8, 8, -8, -8).width() < target.width();
+    };
+    QTRY_VERIFY(ringIsRound());
+    const QImage plain = w.window.grab().toImage();
+    auto* projector = w.window.findChild<QAction*>(QStringLiteral("themeAction"));
+    QVERIFY(projector);
+    projector->setChecked(true);
+    QTRY_VERIFY(ringIsRound());
+    projector->setChecked(false);
+    QTRY_VERIFY(ringIsRound());
+    ring->hide();
+    QVERIFY(w.window.grab().toImage() != plain); // the ring is in the picture
+    ring->show();
+
     const std::vector<double> before = settingValues(w.controller()->world().settings());
     press(Qt::Key_Up);
     QTRY_VERIFY(settingValues(w.controller()->world().settings()) != before);

@@ -1,5 +1,6 @@
 #include "ui/window/main_window.h"
 #include "ui/canvas/scene_description.h"
+#include "ui/controls/focus_ring.h"
 
 #include "lessons/atomic_file.h"
 #include "lessons/lesson_markup.h"
@@ -167,6 +168,7 @@ MainWindow::MainWindow(const QString& lesson, QWidget* parent)
             m_canvas->setFocus(Qt::ShortcutFocusReason);
     });
     qApp->installEventFilter(new KeysToFocusedButton(this));
+    new FocusRing(this); // where the keys go, seen from the back row
     createMenus();
     createToolBars();
     createTimeActions(); // Step Back and the timeline bar
