@@ -1,4 +1,4 @@
-// Layout that holds: at 1280x720 and 1024x768, with every parameter shown,
+// Layout that holds, in every shipped language: at 1280x720 and 1024x768, with every parameter shown,
 // no label of the Parameters panel, the Inspector or the stage bar is cut,
 // every number field shows its whole text with its unit, and every tab of
 // the docks shows its whole name. ctest runs this
@@ -7,6 +7,7 @@
 #include "gui_settle.h"
 #include "ui/window/main_window.h"
 #include "ui/controls/parameter_panel.h"
+#include "ui/window/language.h"
 
 #include <QAbstractSpinBox>
 #include <QCheckBox>
@@ -18,6 +19,7 @@
 #include <QStandardPaths>
 #include <QTabBar>
 #include <QTest>
+#include <QScopeGuard>
 
 using namespace forcelab;
 
@@ -98,17 +100,27 @@ void GuiLayoutTest::nothingIsCut_data()
 {
     QTest::addColumn<QString>("lesson");
     QTest::addColumn<QSize>("size");
-    for (const char* lesson : {"gravity", "smoother-wind", "break-shot", "two-bodies-in-orbit"})
-        for (const QSize size : {QSize(1280, 720), QSize(1024, 768)})
-            QTest::newRow(qPrintable(QStringLiteral("%1 %2x%3").arg(lesson).arg(size.width()).arg(size.height())))
-                << QString::fromLatin1(lesson) << size;
+    QTest::addColumn<QString>("language");
+    // In every shipped language: German's long words are the test of a layout.
+    for (const Language& language : shippedLanguages())
+        for (const char* lesson : {"gravity", "smoother-wind", "break-shot", "two-bodies-in-orbit"})
+            for (const QSize size : {QSize(1280, 720), QSize(1024, 768)})
+                QTest::newRow(qPrintable(QStringLiteral("%1 %2x%3 %4")
+                                             .arg(lesson)
+                                             .arg(size.width())
+                                             .arg(size.height())
+                                             .arg(language.code)))
+                    << QString::fromLatin1(lesson) << size << language.code;
 }
 
 void GuiLayoutTest::nothingIsCut()
 {
     QFETCH(QString, lesson);
     QFETCH(QSize, size);
+    QFETCH(QString, language);
     QSettings().clear();
+    QVERIFY(applyLanguage(language));
+    const auto english = qScopeGuard([] { applyLanguage(QStringLiteral("en")); });
     MainWindow window(lesson);
     window.resize(size);
     window.show();

@@ -6,6 +6,8 @@
 // compiled .qm files are built in and translate.
 
 #include "ui/window/language.h"
+#include "ui/i18n/parameter_words.h"
+#include "sim/world/parameters.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -96,6 +98,7 @@ class TestTranslations : public QObject {
 private slots:
     void everyStringOfTheProgramIsTranslated();
     void theBuiltInTranslationsTranslate();
+    void everyParameterLabelIsListedForTranslation();
 };
 
 void TestTranslations::everyStringOfTheProgramIsTranslated()
@@ -170,6 +173,24 @@ void TestTranslations::theBuiltInTranslationsTranslate()
     QCOMPARE(QCoreApplication::translate("forcelab::MainWindow", "&View"), QStringLiteral("&View"));
     QVERIFY(!forcelab::applyLanguage(QStringLiteral("xx")));
     QCOMPARE(forcelab::currentLanguage(), QStringLiteral("en"));
+}
+
+// sim/'s parameter labels reach lupdate through ui/i18n/parameter_words.cpp:
+// a parameter added to sim/world/parameters.cpp must be listed there.
+void TestTranslations::everyParameterLabelIsListedForTranslation()
+{
+    const QStringList listed = forcelab::listedParameterLabels();
+    QStringList missing;
+    for (const forcelab::sim::Parameter& p : forcelab::sim::parameters()) {
+        const QString label = QString::fromUtf8(p.label.data(), static_cast<qsizetype>(p.label.size()));
+        if (!listed.contains(label))
+            missing << label;
+    }
+    QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not in ui/i18n/parameter_words.cpp: ") + missing.join(QStringLiteral(", "))));
+    QVERIFY(forcelab::applyLanguage(QStringLiteral("de")));
+    const QString drag = forcelab::parameterLabel(*forcelab::sim::findParameter("models.drag.k"));
+    QVERIFY(forcelab::applyLanguage(QStringLiteral("en")));
+    QVERIFY2(!drag.isEmpty() && drag != QStringLiteral("Drag k"), qPrintable(drag));
 }
 
 QTEST_MAIN(TestTranslations)

@@ -1,4 +1,5 @@
 #include "ui/canvas/canvas.h"
+#include "ui/i18n/parameter_words.h"
 
 #include "ui/drawing/display_units.h"
 
@@ -513,10 +514,9 @@ QStringList Canvas::paneLabels() const
                 if (i < names.size())
                     liveValues << QString::fromLatin1(names[i].data(), static_cast<qsizetype>(names[i].size()));
             } else if (row->type == sim::ParameterType::Boolean) {
-                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())),
-                                                   value != 0.0 ? tr("on") : tr("off"));
+                liveValues << QStringLiteral("%1 %2").arg(parameterLabel(*row), value != 0.0 ? tr("on") : tr("off"));
             } else {
-                liveValues << QStringLiteral("%1 %2").arg(QString::fromLatin1(row->label.data(), static_cast<qsizetype>(row->label.size())))
+                liveValues << QStringLiteral("%1 %2").arg(parameterLabel(*row))
                            .arg(value, 0, 'g', 4);
             }
         }

@@ -1,4 +1,5 @@
 #include "ui/controls/parameter_panel.h"
+#include "ui/i18n/parameter_words.h"
 
 #include "ui/controls/number_control.h"
 #include "ui/controls/settings_editor.h"
@@ -164,7 +165,7 @@ void ParameterPanel::addUnplacedRows()
                                         [&](const Section& s) { return s.key == section; });
         if (key.endsWith(QStringLiteral(".enabled"))) {
             if (!placed)
-                addModelSection(section, qs(p.label)); // its tick box is this row's control
+                addModelSection(section, parameterLabel(p)); // its tick box is this row's control
         } else if (placed && !controlWidget(qs(p.control))) {
             m_currentSection = section;
             addParameter(p.key);
@@ -425,7 +426,7 @@ QWidget* ParameterPanel::addParameterWidget(std::string_view key)
     const sim::Parameter& p = *row;
     const QString control = qs(p.control);
     const QString stem = objectStem(p.control);
-    const QString label = qs(p.label);
+    const QString label = parameterLabel(p);
     auto get = [&p](const Settings& s) { return p.get(s); };
     switch (p.type) {
     case sim::ParameterType::Boolean:

@@ -33,6 +33,265 @@
     </message>
 </context>
 <context>
+    <name>Parameter</name>
+    <message>
+        <source>Box width</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Box height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wall model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wall restitution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Middle wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test the centre only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step dt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sub-steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move per frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step past close passes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>g x (right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>g y (down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag law</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag k</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wind strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wind scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smoothed step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Noise frequency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Random acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One value per ball</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Random strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Un-centred (0 to strength)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point clamp (0 = off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Un-normalised (S d / d²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Anchor x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Anchor y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spring k</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gravity between balls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Softening ε</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pointer force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pointer strength</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pointer clamp (0 = off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetic field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Custom force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Formulas give a, not F</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Response</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ball restitution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resting contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Change speed to %1×</source>
@@ -96,6 +355,113 @@
     </message>
     <message>
         <source>For the teacher</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SceneDescription</name>
+    <message>
+        <source>right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>up and to the right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>up and to the left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>down and to the left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>down and to the right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the left wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the right wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the ceiling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the middle wall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No balls.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One ball.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 balls.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ball %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ball %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is pinned in place.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is at rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 moves %2 at %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>will hit %1 in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>will hit %1 in about %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>and %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>It %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Total energy %1.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1464,6 +1830,29 @@ The handbook was not written; an old file there is unchanged.</source>
         <source>Wrote %L1 rows to %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Describe the Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Say in words what is on the stage: the balls, the selected one&apos;s motion, when it reaches a wall, the energy (D)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>forcelab::NumberControl</name>
+    <message>
+        <source>%1, slider</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, value</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>forcelab::OverlayActions</name>
@@ -1631,14 +2020,6 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Tick to switch %1 on</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1, slider</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1, value</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -1,4 +1,5 @@
 #include "ui/stage/stage_sliders.h"
+#include "ui/i18n/parameter_words.h"
 
 #include "ui/drawing/display_units.h"
 #include "ui/controls/number_control.h"
@@ -123,7 +124,7 @@ void StageSliders::setLessonControls(const QStringList& controls)
             if (!s.slider)
                 s.widget()->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
             s.widget()->setToolTip(qs(p->help));
-            s.widget()->setAccessibleName(qs(p->label));
+            s.widget()->setAccessibleName(parameterLabel(*p));
             s.label = new QLabel(this);
             s.label->setObjectName(QStringLiteral("stage_%1Label").arg(row));
             s.label->setFont(big);
@@ -162,7 +163,7 @@ StageSliders::Control StageSliders::makeWallSides(const QFont& big)
         button->setMinimumHeight(36);
         button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         button->setToolTip(qs(p->help));
-        button->setAccessibleName(qs(p->label));
+        button->setAccessibleName(parameterLabel(*p));
         connect(button, &QPushButton::clicked, this, [this, p](bool on) { apply(p, on ? 1.0 : 0.0, -1); });
         layout->addWidget(button, at / 2, at % 2);
         ++at;
@@ -260,7 +261,7 @@ NumberControl* StageSliders::makeSlider(const sim::Parameter* p, const QString& 
     auto* slider = new NumberControl(QStringLiteral("stage_%1").arg(row), spec, this);
     slider->spinBox()->hide(); // the label above shows the value, large
     slider->slider()->setMinimumHeight(36);
-    slider->slider()->setAccessibleName(qs(p->label));
+    slider->slider()->setAccessibleName(parameterLabel(*p));
     connect(slider, &NumberControl::dragStarted, this, [this] { ++m_dragSession; });
     return slider;
 }
@@ -305,7 +306,7 @@ void StageSliders::arrange()
 void StageSliders::apply(const sim::Parameter* p, double value, int mergeId)
 {
     const double v = p->type == sim::ParameterType::Integer ? std::round(value) : value;
-    if (!m_editor->editSettings(qs(p->label), [p, v](sim::WorldSettings& s) { p->set(s, v); }, {mergeId, m_dragSession}))
+    if (!m_editor->editSettings(parameterLabel(*p), [p, v](sim::WorldSettings& s) { p->set(s, v); }, {mergeId, m_dragSession}))
         refresh(); // refused: the controller said why; the slider goes back
 }
 
@@ -364,7 +365,7 @@ void StageSliders::refresh()
             shown = s.list->currentText();
         }
         s.label->setText(QStringLiteral("%1: <b>%2</b>%3")
-                             .arg(qs(s.parameter->label).toHtmlEscaped(), shown.toHtmlEscaped(), unit.toHtmlEscaped()));
+                             .arg(parameterLabel(*s.parameter).toHtmlEscaped(), shown.toHtmlEscaped(), unit.toHtmlEscaped()));
     }
 }
 
