@@ -5,801 +5,801 @@
     <name>BallClipboard</name>
     <message>
         <source>the clipboard holds %1 characters, more than a ball&apos;s %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zwischenablage enthält %1 Zeichen, mehr als die %2 einer Kugel</translation>
     </message>
     <message>
         <source>the clipboard does not hold a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zwischenablage enthält keine Kugel</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has an unknown field &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat ein unbekanntes Feld „%1“</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no number &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat keine Zahl „%1“</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has &quot;pinned&quot; that is not true or false</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat ein „pinned“, das weder true noch false ist</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has a restitution that is not a number from 0 to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat eine Stoßzahl, die keine Zahl von 0 bis 1 ist</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no valid colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat keine gültige Farbe</translation>
     </message>
 </context>
 <context>
     <name>QObject</name>
     <message>
         <source>Change speed to %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo auf %1× ändern</translation>
     </message>
     <message>
         <source>Walls: is the ball outside the box?</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände: Ist die Kugel außerhalb des Kastens?</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempolimit</translation>
     </message>
     <message>
         <source>Rule %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Regel %1</translation>
     </message>
     <message>
         <source>Goal:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziel:</translation>
     </message>
     <message>
         <source>about %1 minutes</source>
-        <translation type="unfinished"></translation>
+        <translation>etwa %1 Minuten</translation>
     </message>
     <message>
         <source>Expected answers</source>
-        <translation type="unfinished"></translation>
+        <translation>Erwartete Antworten</translation>
     </message>
     <message>
         <source>Common misconceptions</source>
-        <translation type="unfinished"></translation>
+        <translation>Häufige Fehlvorstellungen</translation>
     </message>
     <message>
         <source>What the scene is checked to show</source>
-        <translation type="unfinished"></translation>
+        <translation>Was die Szene nachweislich zeigt</translation>
     </message>
     <message>
         <source>ForceLab: teacher&apos;s handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab: Handbuch für Lehrkräfte</translation>
     </message>
     <message>
         <source>One section per lesson: the goal, the time it takes, the text students read, the challenges with their expected answers, the misconceptions to expect, and what the scene is checked to show (forcelab-cli check).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Abschnitt pro Lektion: das Ziel, die benötigte Zeit, der Text für die Schülerinnen und Schüler, die Aufgaben mit den erwarteten Antworten, die zu erwartenden Fehlvorstellungen und was die Szene nachweislich zeigt (forcelab-cli check).</translation>
     </message>
     <message>
         <source>Showcase</source>
-        <translation type="unfinished"></translation>
+        <translation>Schaukasten</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufe %1 von 29</translation>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus</translation>
     </message>
     <message>
         <source>Challenges</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufgaben</translation>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Für die Lehrkraft</translation>
     </message>
 </context>
 <context>
     <name>forcelab::AccuracyDock</name>
     <message>
         <source>Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>Genauigkeit</translation>
     </message>
     <message>
         <source>Drift</source>
-        <translation type="unfinished"></translation>
+        <translation>Drift</translation>
     </message>
     <message>
         <source>Ghost</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist</translation>
     </message>
     <message>
         <source>Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>Abwägung</translation>
     </message>
     <message>
         <source>Off</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus</translation>
     </message>
     <message>
         <source>Compare with another integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit einem anderen Integrator vergleichen</translation>
     </message>
     <message>
         <source>Sensitivity twin (moved 1e-10 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Empfindlichkeits-Zwilling (um 1e-10 px verschoben)</translation>
     </message>
     <message>
         <source>dt (same)</source>
-        <translation type="unfinished"></translation>
+        <translation>dt (gleich)</translation>
     </message>
     <message>
         <source>dt / %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dt / %1</translation>
     </message>
     <message>
         <source>Draw the ghost on the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Geist auf der Zeichenfläche zeigen</translation>
     </message>
     <message>
         <source>Ghost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist:</translation>
     </message>
     <message>
         <source>Its integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sein Integrator:</translation>
     </message>
     <message>
         <source>Its step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sein Schritt:</translation>
     </message>
     <message>
         <source>Separation:</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand:</translation>
     </message>
     <message>
         <source>t, s</source>
-        <translation type="unfinished"></translation>
+        <translation>t, s</translation>
     </message>
     <message>
         <source>px</source>
-        <translation type="unfinished"></translation>
+        <translation>px</translation>
     </message>
     <message>
         <source>Measure the &amp;Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abwägung messen</translation>
     </message>
     <message>
         <source>Run the current scene with every integrator at several steps and plot error against cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aktuelle Szene mit jedem Integrator bei mehreren Schrittweiten laufen lassen und den Fehler gegen den Aufwand auftragen</translation>
     </message>
     <message>
         <source>Check &amp;Convergence</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Konvergenz prüfen</translation>
     </message>
     <message>
         <source>Rerun the current scene at dt, dt/2, dt/4, dt/8 and fit the order</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aktuelle Szene mit dt, dt/2, dt/4, dt/8 erneut laufen lassen und die Ordnung anpassen</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>Runs the lesson&apos;s scene for %1 s with each integrator.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lässt die Szene der Lektion %1 s lang mit jedem Integrator laufen.</translation>
     </message>
     <message>
         <source>Error against cost, both on log scales: lower left is better</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler gegen Aufwand, beide logarithmisch: unten links ist besser</translation>
     </message>
     <message>
         <source>(E now − E at the start − energy added or removed on purpose) / |E at the start|: the integrator&apos;s own error</source>
-        <translation type="unfinished"></translation>
+        <translation>(E jetzt − E am Anfang − absichtlich zugeführte oder entzogene Energie) / |E am Anfang|: der eigene Fehler des Integrators</translation>
     </message>
     <message>
         <source>Energy added (+) or removed (−) on purpose by drag, wind, walls, collisions, the pointer and edits, relative to |E at the start|</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie, die absichtlich durch Luftwiderstand, Wind, Wände, Stöße, den Mauszeiger und Änderungen zugeführt (+) oder entzogen (−) wurde, relativ zu |E am Anfang|</translation>
     </message>
     <message>
         <source>|p now − p at the start − impulse of the outside forces|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p jetzt − p am Anfang − Kraftstoß der äußeren Kräfte|</translation>
     </message>
     <message>
         <source>Energy drift ΔE/|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiedrift ΔE/|E₀|:</translation>
     </message>
     <message>
         <source>Booked on purpose /|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Absichtlich verbucht /|E₀|:</translation>
     </message>
     <message>
         <source>Momentum drift |Δp|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Impulsdrift |Δp|:</translation>
     </message>
     <message>
         <source>Force evaluations per simulated s:</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnungen pro simulierter s:</translation>
     </message>
     <message>
         <source>Step cost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand pro Schritt:</translation>
     </message>
     <message>
         <source>Energy added or taken away on purpose (drag, wind, walls, collisions, your pointer, edits) is booked apart. What is left should be zero: it is the integrator&apos;s own error.</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie, die absichtlich zugeführt oder entzogen wird (Luftwiderstand, Wind, Wände, Stöße, dein Mauszeiger, Änderungen), wird getrennt verbucht. Was übrig bleibt, sollte null sein: Es ist der eigene Fehler des Integrators.</translation>
     </message>
     <message>
         <source>Start Counting Again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu zählen</translation>
     </message>
     <message>
         <source>%1 ms, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms, %2</translation>
     </message>
     <message>
         <source>force evaluation</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnung</translation>
     </message>
     <message>
         <source>force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnungen</translation>
     </message>
     <message>
         <source>Measuring %1 runs of %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>Messe %1 Läufe zu je %2 s …</translation>
     </message>
     <message>
         <source>Running %1 at dt, dt/2, dt/4, dt/8 for %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 läuft mit dt, dt/2, dt/4, dt/8 für %2 s …</translation>
     </message>
     <message>
         <source>Could not measure: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Messung nicht möglich: %1</translation>
     </message>
     <message>
         <source>Cancelled after %1 runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach %1 Läufen abgebrochen.</translation>
     </message>
     <message>
         <source>Done: %1 runs against ias15 at dt/8. Each dot is one run; a steeper line is a higher order. Fitted orders: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fertig: %1 Läufe gegen ias15 bei dt/8. Jeder Punkt ist ein Lauf; eine steilere Linie bedeutet eine höhere Ordnung. Angepasste Ordnungen: %2.</translation>
     </message>
     <message>
         <source>%1 cannot run this scene: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann diese Szene nicht ausführen: %2</translation>
     </message>
     <message>
         <source>dt = %1 s: error %2</source>
-        <translation type="unfinished"></translation>
+        <translation>dt = %1 s: Fehler %2</translation>
     </message>
     <message>
         <source>%1: fitted order %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: angepasste Ordnung %2</translation>
     </message>
     <message>
         <source> (theory: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Theorie: %1)</translation>
     </message>
     <message>
         <source>cost: force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand: Kraftberechnungen</translation>
     </message>
     <message>
         <source>error, px</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler, px</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ArrowLegendView</name>
     <message>
         <source>An arrow this long stands for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein so langer Pfeil steht für %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTable</name>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Double-click a number to type a new one. Undo (Ctrl+Z) takes it back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelklicke auf eine Zahl, um eine neue einzugeben. Rückgängig (Ctrl+Z) nimmt es zurück.</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTableModel</name>
     <message>
         <source>world</source>
-        <translation type="unfinished"></translation>
+        <translation>Welt</translation>
     </message>
     <message>
         <source>Radius. A new radius keeps the density: twice as big is 8 times the mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Radius. Ein neuer Radius behält die Dichte bei: doppelt so groß heißt 8-fache Masse.</translation>
     </message>
     <message>
         <source>Mass, in the mass units of the lesson (a 10 px ball of density 1 has 4189). Independent of the size: a small ball can be heavy.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse, in den Masseneinheiten der Lektion (eine 10-px-Kugel mit Dichte 1 hat 4189). Unabhängig von der Größe: Eine kleine Kugel kann schwer sein.</translation>
     </message>
     <message>
         <source>Mass per volume of a sphere: 1 is the density of every ball a lesson does not give a mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse pro Volumen einer Kugel: 1 ist die Dichte jeder Kugel, der eine Lektion keine Masse gibt.</translation>
     </message>
     <message>
         <source>What a magnetic field acts on (1: like the 10 px reference ball).</source>
-        <translation type="unfinished"></translation>
+        <translation>Worauf ein Magnetfeld wirkt (1: wie die 10-px-Referenzkugel).</translation>
     </message>
     <message>
         <source>How much of its speed this ball keeps in a bounce: 0 stops it dead, 1 keeps it all. &quot;world&quot;: the scene&apos;s value. When two balls hit, the smaller value counts. Clear the cell to go back to the world&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viel ihres Tempos diese Kugel beim Aufprall behält: 0 stoppt sie ganz, 1 behält alles. „Welt“: der Wert der Szene. Stoßen zwei Kugeln zusammen, zählt der kleinere Wert. Leere die Zelle, um zum Wert der Welt zurückzukehren.</translation>
     </message>
     <message>
         <source>A pinned ball never moves: other balls bounce off it as off a ball too heavy to push.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine festgehaltene Kugel bewegt sich nie: Andere Kugeln prallen von ihr ab wie von einer Kugel, die zu schwer zum Schieben ist.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>x (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>x (%1)</translation>
     </message>
     <message>
         <source>y (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>y (%1)</translation>
     </message>
     <message>
         <source>vx (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vx (%1)</translation>
     </message>
     <message>
         <source>vy (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vy (%1)</translation>
     </message>
     <message>
         <source>r (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>r (%1)</translation>
     </message>
     <message>
         <source>mass (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse (%1)</translation>
     </message>
     <message>
         <source>mass</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse</translation>
     </message>
     <message>
         <source>density</source>
-        <translation type="unfinished"></translation>
+        <translation>Dichte</translation>
     </message>
     <message>
         <source>charge</source>
-        <translation type="unfinished"></translation>
+        <translation>Ladung</translation>
     </message>
     <message>
         <source>colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe</translation>
     </message>
     <message>
         <source>restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl</translation>
     </message>
     <message>
         <source>pinned</source>
-        <translation type="unfinished"></translation>
+        <translation>fest</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 festhalten</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 freigeben</translation>
     </message>
     <message>
         <source>Give ball %1 the world&apos;s restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 die Stoßzahl der Welt geben</translation>
     </message>
     <message>
         <source>colour: &quot;%1&quot; is not a colour; type a name like red or #e05050</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe: „%1“ ist keine Farbe; gib einen Namen wie red oder #e05050 ein</translation>
     </message>
     <message>
         <source>Colour of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe von Kugel %1</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine Zahl</translation>
     </message>
     <message>
         <source>Set %1 of ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von Kugel %2 setzen</translation>
     </message>
     <message>
         <source>restitution: %1 is outside %2; leave it empty for the world&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl: %1 liegt außerhalb von %2; lass das Feld leer für den Wert der Welt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::Canvas</name>
     <message>
         <source>Simulation stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulationsbühne</translation>
     </message>
     <message>
         <source>%1 at %2°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bei %2°</translation>
     </message>
     <message>
         <source>%1°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1°</translation>
     </message>
     <message>
         <source>reference (the course&apos;s code) · energy %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenz (Code des Kurses) · Energie %1</translation>
     </message>
     <message>
         <source>your code stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code wurde angehalten: %1</translation>
     </message>
     <message>
         <source>your code departs at step %1: %2 balls, the reference has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code weicht ab bei Schritt %1: %2 Kugeln, die Referenz hat %3</translation>
     </message>
     <message>
         <source>your code departs at step %1 (ball %2, %3 off by %4) · energy %5</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code weicht ab bei Schritt %1 (Kugel %2, %3 um %4 daneben) · Energie %5</translation>
     </message>
     <message>
         <source>your code · agrees for %1 steps · energy %2</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code · stimmt seit %1 Schritten überein · Energie %2</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
     <message>
         <source>your run: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Lauf: %1</translation>
     </message>
     <message>
         <source>departs here, step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>weicht hier ab, Schritt %1</translation>
     </message>
     <message>
         <source>Paused at t = 0 · press Space to run</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausiert bei t = 0 · drücke die Leertaste zum Starten</translation>
     </message>
     <message>
         <source>Tools: press %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeuge: drücke %1</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>Set the velocity of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit von Kugel %1 setzen</translation>
     </message>
     <message>
         <source>Move ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 verschieben</translation>
     </message>
     <message>
         <source>Add a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel hinzufügen</translation>
     </message>
     <message>
         <source>Nothing to paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nichts einzufügen: %1</translation>
     </message>
     <message>
         <source>Paste a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel einfügen</translation>
     </message>
     <message>
         <source>Ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>Edit its numbers…</source>
-        <translation type="unfinished"></translation>
+        <translation>Zahlen bearbeiten …</translation>
     </message>
     <message>
         <source>Stop it (v = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten (v = 0)</translation>
     </message>
     <message>
         <source>Stop ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 anhalten</translation>
     </message>
     <message>
         <source>Pin</source>
-        <translation type="unfinished"></translation>
+        <translation>Festhalten</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 festhalten</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 freigeben</translation>
     </message>
     <message>
         <source>Duplicate</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplizieren</translation>
     </message>
     <message>
         <source>Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopieren</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <source>Follow it</source>
-        <translation type="unfinished"></translation>
+        <translation>Ihr folgen</translation>
     </message>
     <message>
         <source>Add a ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier eine Kugel hinzufügen</translation>
     </message>
     <message>
         <source>Paste the copied ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopierte Kugel hier einfügen</translation>
     </message>
     <message>
         <source>Zoom in here</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier vergrößern</translation>
     </message>
     <message>
         <source>Zoom out</source>
-        <translation type="unfinished"></translation>
+        <translation>Verkleinern</translation>
     </message>
     <message>
         <source>Fit the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Kasten einpassen</translation>
     </message>
     <message>
         <source>Fit all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Kugeln einpassen</translation>
     </message>
 </context>
 <context>
     <name>forcelab::CodeDock</name>
     <message>
         <source>Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Code</translation>
     </message>
     <message>
         <source>The simulation code of this stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Simulationscode dieser Stufe</translation>
     </message>
     <message>
         <source>C++</source>
-        <translation type="unfinished"></translation>
+        <translation>C++</translation>
     </message>
     <message>
         <source>The engine&apos;s own code (sim/)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der eigene Code der Engine (sim/)</translation>
     </message>
     <message>
         <source>JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>JavaScript</translation>
     </message>
     <message>
         <source>The code students write in the programming course (lessons/code/)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Code, den Schülerinnen und Schüler im Programmierkurs schreiben (lessons/code/)</translation>
     </message>
     <message>
         <source>&lt;p&gt;This stage runs no marked code.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Diese Stufe führt keinen markierten Code aus.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>, runs when %1 = %2</source>
-        <translation type="unfinished"></translation>
+        <translation>, läuft, wenn %1 = %2</translation>
     </message>
     <message>
         <source>&lt;p&gt;The code of this stage in JavaScript, as students write it. It runs beside the engine and moves the balls the same, to the last bit (test_script_reference).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Der Code dieser Stufe in JavaScript, so wie Schülerinnen und Schüler ihn schreiben. Er läuft neben der Engine und bewegt die Kugeln genauso, bis aufs letzte Bit (test_script_reference).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p class=&apos;missing&apos;&gt;Not written in JavaScript yet: %1.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p class=&apos;missing&apos;&gt;Noch nicht in JavaScript geschrieben: %1.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::EnergyBars</name>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potenziell</translation>
     </message>
     <message>
         <source>lost</source>
-        <translation type="unfinished"></translation>
+        <translation>verloren</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>Energy bars: kinetic, potential, lost and total energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiebalken: kinetische, potenzielle, verlorene und gesamte Energie jetzt</translation>
     </message>
     <message>
         <source>Energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie jetzt</translation>
     </message>
     <message>
         <source>Lost: energy taken out by drag, bumpy collisions and walls since the bars were shown or the lesson restarted. Energy put in (wind, your hand, an edit) counts as negative lost energy, so the total stays the same unless the computer&apos;s steps are inaccurate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Verloren: Energie, die seit dem Einblenden der Balken oder dem Neustart der Lektion durch Luftwiderstand, unelastische Stöße und Wände entzogen wurde. Zugeführte Energie (Wind, deine Hand, eine Änderung) zählt als negative verlorene Energie, daher bleibt die Summe gleich, außer die Schritte des Computers sind ungenau.</translation>
     </message>
     <message>
         <source>energy (%1%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie (%1%2)</translation>
     </message>
     <message>
         <source>not counted</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht gezählt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ForceEditorDock</name>
     <message>
         <source>Force editor</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraft-Editor</translation>
     </message>
     <message>
         <source>Write your own force law. Use x, y (px), vx, vy (px/s), m, r, q, the time t, the box W and H, pi, functions such as sqrt, sin, exp, and your constants.</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreibe dein eigenes Kraftgesetz. Verwende x, y (px), vx, vy (px/s), m, r, q, die Zeit t, den Kasten W und H, pi, Funktionen wie sqrt, sin, exp und deine Konstanten.</translation>
     </message>
     <message>
         <source>Custom force on</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Kraft an</translation>
     </message>
     <message>
         <source>the formulas give the force F (divided by m)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formeln ergeben die Kraft F (geteilt durch m)</translation>
     </message>
     <message>
         <source>the formulas give the acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formeln ergeben die Beschleunigung a</translation>
     </message>
     <message>
         <source>What the formulas give</source>
-        <translation type="unfinished"></translation>
+        <translation>Was die Formeln ergeben</translation>
     </message>
     <message>
         <source>F_x =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_x =</translation>
     </message>
     <message>
         <source>The x part of the force (or acceleration)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der x-Anteil der Kraft (oder Beschleunigung)</translation>
     </message>
     <message>
         <source>F_y =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y =</translation>
     </message>
     <message>
         <source>The y part; y points down</source>
-        <translation type="unfinished"></translation>
+        <translation>Der y-Anteil; y zeigt nach unten</translation>
     </message>
     <message>
         <source>U =</source>
-        <translation type="unfinished"></translation>
+        <translation>U =</translation>
     </message>
     <message>
         <source>Optional: the potential energy of a conservative law, with F = −∇U</source>
-        <translation type="unfinished"></translation>
+        <translation>Optional: die potenzielle Energie eines konservativen Gesetzes, mit F = −∇U</translation>
     </message>
     <message>
         <source>&lt;b&gt;Constants&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Konstanten&lt;/b&gt;</translation>
     </message>
     <message>
         <source>name, e.g. k</source>
-        <translation type="unfinished"></translation>
+        <translation>Name, z. B. k</translation>
     </message>
     <message>
         <source>New constant&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>Name der neuen Konstante</translation>
     </message>
     <message>
         <source>Add constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante hinzufügen</translation>
     </message>
     <message>
         <source>Constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante %1</translation>
     </message>
     <message>
         <source>Add constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante %1 hinzufügen</translation>
     </message>
     <message>
         <source>Custom force: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Kraft: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::InspectorDock</name>
     <message>
         <source>Inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>Inspektor</translation>
     </message>
     <message>
         <source>Click a ball to see its numbers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicke auf eine Kugel, um ihre Zahlen zu sehen.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>Position x</source>
-        <translation type="unfinished"></translation>
+        <translation>Position x</translation>
     </message>
     <message>
         <source>Velocity v</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v</translation>
     </message>
     <message>
         <source>Acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung a</translation>
     </message>
     <message>
         <source>Mass, radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse, Radius</translation>
     </message>
     <message>
         <source>Draw its trail</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur zeichnen</translation>
     </message>
     <message>
         <source>#%1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>#%1 von %2</translation>
     </message>
     <message>
         <source>m = %1 %2, r = %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1 %2, r = %3 %4</translation>
     </message>
     <message>
         <source>m = %1, r = %2 px</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1, r = %2 px</translation>
     </message>
     <message>
         <source>Forces F = m a</source>
-        <translation type="unfinished"></translation>
+        <translation>Kräfte F = m a</translation>
     </message>
     <message>
         <source>no force acts</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kraft wirkt</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>in %1</translation>
     </message>
 </context>
 <context>
@@ -844,11 +844,11 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufe %1 von 29</translation>
     </message>
     <message>
         <source>Beyond the course · %1</source>
@@ -860,7 +860,7 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Für die Lehrkraft</translation>
     </message>
     <message>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
@@ -875,7 +875,7 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
@@ -1034,7 +1034,7 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>behind: %1 ms skipped</source>
@@ -1604,7 +1604,7 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempolimit</translation>
     </message>
     <message>
         <source>Collisions</source>
@@ -1616,7 +1616,7 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message numerus="yes">
         <source>%n more setting(s) under &quot;Show all parameters&quot;.</source>
@@ -1749,15 +1749,15 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potenziell</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>|p|</source>
@@ -1852,7 +1852,7 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>This lesson asks no question before it runs.</source>
@@ -2274,11 +2274,11 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
 </context>
 <context>
@@ -2300,7 +2300,7 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Show every ball&apos;s numbers under the box, to type new ones (T)</source>
@@ -2530,7 +2530,7 @@ The handbook was not written; an old file there is unchanged.</source>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>Reset</source>
