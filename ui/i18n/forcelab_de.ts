@@ -806,41 +806,44 @@
     <name>forcelab::LessonTextView</name>
     <message>
         <source>Open a web page?</source>
-        <translation type="unfinished"></translation>
+        <translation>Webseite öffnen?</translation>
     </message>
     <message>
         <source>The lesson links to
 %1
 
 Open it in your web browser?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion verweist auf
+%1
+
+In deinem Webbrowser öffnen?</translation>
     </message>
 </context>
 <context>
     <name>forcelab::LessonsDock</name>
     <message>
         <source>Lessons</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionen</translation>
     </message>
     <message>
         <source>Teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinweise für Lehrkräfte</translation>
     </message>
     <message>
         <source>Show the goal, expected answers and misconceptions under the lesson text</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziel, erwartete Antworten und Fehlvorstellungen unter dem Lektionstext zeigen</translation>
     </message>
     <message>
         <source>Part A · Motion and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil A · Bewegung und Wände</translation>
     </message>
     <message>
         <source>Part B · Forces</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil B · Kräfte</translation>
     </message>
     <message>
         <source>Part C · Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil C · Stöße</translation>
     </message>
     <message>
         <source>Beyond the course</source>
@@ -852,11 +855,11 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>Beyond the course · %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus · %1</translation>
     </message>
     <message>
         <source>Try this</source>
-        <translation type="unfinished"></translation>
+        <translation>Probier das aus</translation>
     </message>
     <message>
         <source>For the teacher</source>
@@ -864,14 +867,14 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Diese Lektion hat keine Hinweise für Lehrkräfte.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::MainWindow</name>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter</translation>
     </message>
     <message>
         <source>Balls</source>
@@ -879,158 +882,155 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederholen</translation>
     </message>
     <message>
         <source>The computer could not keep up: simulated time was skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Computer kam nicht hinterher: Simulierte Zeit wurde übersprungen</translation>
     </message>
     <message>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Zeit</translation>
     </message>
     <message>
         <source>Simulated seconds per real second ([ slower, ] faster)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde ([ langsamer, ] schneller)</translation>
     </message>
     <message>
         <source>Frames drawn per second, and the time to draw one</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeichnete Bilder pro Sekunde und die Zeit für eines</translation>
     </message>
     <message>
         <source>Wall-clock time of the last simulation step</source>
-        <translation type="unfinished"></translation>
+        <translation>Echte Dauer des letzten Simulationsschritts</translation>
     </message>
     <message>
         <source>Number of balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzahl der Kugeln</translation>
     </message>
     <message>
         <source>Ball pairs tested for contact in the last step, and the contacts found</source>
-        <translation type="unfinished"></translation>
+        <translation>Im letzten Schritt auf Berührung geprüfte Kugelpaare und die gefundenen Berührungen</translation>
     </message>
     <message>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3</translation>
     </message>
     <message>
         <source>not a saved window geometry; using the default size</source>
-        <translation type="unfinished"></translation>
+        <translation>keine gespeicherte Fenstergeometrie; Standardgröße wird verwendet</translation>
     </message>
     <message>
         <source>not a saved layout of the docks; using the default layout</source>
-        <translation type="unfinished"></translation>
+        <translation>keine gespeicherte Anordnung der Leisten; Standardanordnung wird verwendet</translation>
     </message>
     <message>
         <source>%1 is not a folder; using the home folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist kein Ordner; der persönliche Ordner wird verwendet</translation>
     </message>
     <message>
         <source>not true or false; using the plain theme</source>
-        <translation type="unfinished"></translation>
+        <translation>weder true noch false; das normale Design wird verwendet</translation>
     </message>
     <message>
         <source>not a text size from %1 to %2; using the usual size</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Textgröße von %1 bis %2; die übliche Größe wird verwendet</translation>
     </message>
     <message>
         <source>%1: %2: %3; opened the first lesson instead</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3; stattdessen wurde die erste Lektion geöffnet</translation>
     </message>
     <message>
         <source>no built-in lessons were found</source>
-        <translation type="unfinished"></translation>
+        <translation>keine eingebauten Lektionen gefunden</translation>
     </message>
     <message>
         <source>ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab</translation>
     </message>
     <message>
         <source>%1 — ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — ForceLab</translation>
     </message>
     <message>
         <source>Already the slowest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Schon das langsamste Tempo, %1×</translation>
     </message>
     <message>
         <source>Already the fastest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Schon das schnellste Tempo, %1×</translation>
     </message>
     <message>
         <source>Speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo %1×</translation>
     </message>
     <message>
         <source>Cannot open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion kann nicht geöffnet werden</translation>
     </message>
     <message>
         <source>The lesson could not be opened; the running lesson goes on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion konnte nicht geöffnet werden; die laufende Lektion geht weiter.</translation>
     </message>
     <message numerus="yes">
         <source>… and %n more. Show Details… lists every problem.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
+        <translation><numerusform>… und %n weiteres. „Details anzeigen …“ listet jedes Problem auf.</numerusform><numerusform>… und %n weitere. „Details anzeigen …“ listet jedes Problem auf.</numerusform></translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>Text at %1% of its usual size (Ctrl+= larger, Ctrl+− smaller, Ctrl+0 usual)</source>
-        <translation type="unfinished"></translation>
+        <translation>Text bei %1 % der üblichen Größe (Ctrl+= größer, Ctrl+− kleiner, Ctrl+0 üblich)</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo %1×</translation>
     </message>
     <message>
         <source>%1 fps · draw %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fps · Zeichnen %2 ms</translation>
     </message>
     <message>
         <source>step %1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1 µs</translation>
     </message>
     <message>
         <source>1 ball</source>
-        <translation type="unfinished"></translation>
+        <translation>1 Kugel</translation>
     </message>
     <message>
         <source>%L1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 Kugeln</translation>
     </message>
     <message>
         <source>pairs tested %L1 · contacts %L2</source>
-        <translation type="unfinished"></translation>
+        <translation>geprüfte Paare %L1 · Berührungen %L2</translation>
     </message>
     <message>
         <source>&amp;Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pause</translation>
     </message>
     <message>
         <source>&amp;Play</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Start</translation>
     </message>
     <message>
         <source>Pause the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation anhalten (Space)</translation>
     </message>
     <message>
         <source>Run the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation starten (Space)</translation>
     </message>
     <message>
         <source>⚠ %1</source>
@@ -1038,431 +1038,429 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>behind: %1 ms skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>im Rückstand: %1 ms übersprungen</translation>
     </message>
     <message>
         <source>About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Über ForceLab</translation>
     </message>
     <message>
         <source>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;A workbench for forces and collisions of balls in two dimensions.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;Eine Werkbank für Kräfte und Stöße von Kugeln in zwei Dimensionen.</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt &amp;zurück</translation>
     </message>
     <message>
         <source>Pause and go back by one time step dt, to the world as it was (← or ,)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten und um einen Zeitschritt dt zurückgehen, zur Welt, wie sie war (← oder ,)</translation>
     </message>
     <message>
         <source>Timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitleiste</translation>
     </message>
     <message>
         <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schritt</translation>
     </message>
     <message>
         <source>Pause and advance by one time step dt (→ or .)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten und um einen Zeitschritt dt weitergehen (→ oder .)</translation>
     </message>
     <message>
         <source>&amp;Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
         <source>Start the lesson again with its own values (R)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion mit ihren eigenen Werten neu starten (R)</translation>
     </message>
     <message>
         <source>S&amp;lower</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Langsamer</translation>
     </message>
     <message>
         <source>Half the speed: slow motion down to 1/16× ([)</source>
-        <translation type="unfinished"></translation>
+        <translation>Halbes Tempo: Zeitlupe bis zu 1/16× ([)</translation>
     </message>
     <message>
         <source>&amp;Faster</source>
-        <translation type="unfinished"></translation>
+        <translation>Sc&amp;hneller</translation>
     </message>
     <message>
         <source>Double the speed, up to %1× (])</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppeltes Tempo, bis zu %1× (])</translation>
     </message>
     <message>
         <source>&amp;Add Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;hinzufügen</translation>
     </message>
     <message>
         <source>Add a ball in the middle of the box (B). Right-click the stage to add one where you click.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Kugel in der Mitte des Kastens hinzufügen (B). Rechtsklicke auf die Bühne, um eine dort hinzuzufügen, wo du klickst.</translation>
     </message>
     <message>
         <source>&amp;Delete Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;löschen</translation>
     </message>
     <message>
         <source>D&amp;uplicate Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel d&amp;uplizieren</translation>
     </message>
     <message>
         <source>&amp;Copy Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;kopieren</translation>
     </message>
     <message>
         <source>&amp;Paste Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel ei&amp;nfügen</translation>
     </message>
     <message>
         <source>Zoom &amp;In</source>
-        <translation type="unfinished"></translation>
+        <translation>Ver&amp;größern</translation>
     </message>
     <message>
         <source>Zoom in on the middle (+); the mouse wheel zooms in on the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Zur Mitte hin vergrößern (+); das Mausrad vergrößert zum Mauszeiger hin</translation>
     </message>
     <message>
         <source>Zoom &amp;Out</source>
-        <translation type="unfinished"></translation>
+        <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
         <source>Zoom out (−), to see balls that left the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Verkleinern (−), um Kugeln zu sehen, die den Kasten verlassen haben</translation>
     </message>
     <message>
         <source>Fit the &amp;Box</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kasten einpassen</translation>
     </message>
     <message>
         <source>Show the whole box, as large as it fits (0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Den ganzen Kasten zeigen, so groß wie er passt (0)</translation>
     </message>
     <message>
         <source>Fit &amp;All Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Alle Kugeln einpassen</translation>
     </message>
     <message>
         <source>Zoom so that every ball is seen, in the box or out of it (A)</source>
-        <translation type="unfinished"></translation>
+        <translation>So zoomen, dass jede Kugel zu sehen ist, im Kasten oder außerhalb (A)</translation>
     </message>
     <message>
         <source>&amp;Follow the Selected Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Der ausgewählten Kugel &amp;folgen</translation>
     </message>
     <message>
         <source>Keep the selected ball in the middle of the view as it moves (F)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte Kugel in der Mitte der Ansicht halten, während sie sich bewegt (F)</translation>
     </message>
     <message>
         <source>&amp;Open Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion &amp;öffnen …</translation>
     </message>
     <message>
         <source>Open</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen</translation>
     </message>
     <message>
         <source>Open a lesson file from disk</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Lektionsdatei vom Datenträger öffnen</translation>
     </message>
     <message>
         <source>&amp;Save Scene as Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene als Lektion &amp;speichern …</translation>
     </message>
     <message>
         <source>Save</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern</translation>
     </message>
     <message>
         <source>Save the balls as they are now and the live settings as a lesson file</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugeln, wie sie jetzt sind, und die aktuellen Einstellungen als Lektionsdatei speichern</translation>
     </message>
     <message>
         <source>Screens&amp;hot…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bildschirmfoto …</translation>
     </message>
     <message>
         <source>Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild</translation>
     </message>
     <message>
         <source>Save a picture of the canvas as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Bild der Zeichenfläche als PNG speichern</translation>
     </message>
     <message>
         <source>Re&amp;cord Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn &amp;aufzeichnen</translation>
     </message>
     <message>
         <source>Record</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufzeichnen</translation>
     </message>
     <message>
         <source>Record the path of the selected ball (or of all balls when none is selected)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Bahn der ausgewählten Kugel aufzeichnen (oder aller Kugeln, wenn keine ausgewählt ist)</translation>
     </message>
     <message>
         <source>Recording ball #%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichne Kugel #%1 auf</translation>
     </message>
     <message>
         <source>Recording every ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichne jede Kugel auf</translation>
     </message>
     <message>
         <source>&amp;Export Trajectory…</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn &amp;exportieren …</translation>
     </message>
     <message>
         <source>CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV</translation>
     </message>
     <message>
         <source>Write the recorded trajectory as CSV (time, ball, position, velocity)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aufgezeichnete Bahn als CSV schreiben (Zeit, Kugel, Position, Geschwindigkeit)</translation>
     </message>
     <message>
         <source>Export Teacher &amp;Handbook…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Handbuch für Lehrkräfte exportieren …</translation>
     </message>
     <message>
         <source>Write every lesson with its teacher notes as one printable HTML page</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Lektion mit ihren Hinweisen für Lehrkräfte als eine druckbare HTML-Seite schreiben</translation>
     </message>
     <message>
         <source>&amp;Previous Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vorherige Lektion</translation>
     </message>
     <message>
         <source>&amp;Next Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nächste Lektion</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beenden</translation>
     </message>
     <message>
         <source>&amp;Stage View (Projector)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bühnenansicht (Beamer)</translation>
     </message>
     <message>
         <source>The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Simulation füllt den Bildschirm, mit großen Bedienelementen daneben, für einen Beamer (F11; Escape beendet)</translation>
     </message>
     <message>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Bühne</translation>
     </message>
     <message>
         <source>&amp;Larger Text</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Größerer Text</translation>
     </message>
     <message>
         <source>Larger text in every panel and on the stage (Ctrl+=)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größerer Text in jeder Leiste und auf der Bühne (Ctrl+=)</translation>
     </message>
     <message>
         <source>S&amp;maller Text</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kleinerer Text</translation>
     </message>
     <message>
         <source>Smaller text in every panel and on the stage (Ctrl+−)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinerer Text in jeder Leiste und auf der Bühne (Ctrl+−)</translation>
     </message>
     <message>
         <source>&amp;Usual Text Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Ü&amp;bliche Textgröße</translation>
     </message>
     <message>
         <source>P&amp;rojector Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Bea&amp;mer-Design</translation>
     </message>
     <message>
         <source>White box, dark thick outlines, colour-blind-safe balls and larger text everywhere (always on in the stage view)</source>
-        <translation type="unfinished"></translation>
+        <translation>Weißer Kasten, dunkle dicke Umrisse, farbenblind-sichere Kugeln und überall größerer Text (in der Bühnenansicht immer an)</translation>
     </message>
     <message>
         <source>Picture at &amp;Double Size…</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in &amp;doppelter Größe …</translation>
     </message>
     <message>
         <source>Save the stage at twice the screen&apos;s resolution, for print</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Bühne in doppelter Bildschirmauflösung speichern, für den Druck</translation>
     </message>
     <message>
         <source>&amp;About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Ü&amp;ber ForceLab</translation>
     </message>
     <message>
         <source>&amp;Pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pixel</translation>
     </message>
     <message>
         <source>Show px, px/s and mass units, as the program computes them</source>
-        <translation type="unfinished"></translation>
+        <translation>px, px/s und Masseneinheiten zeigen, wie das Programm sie berechnet</translation>
     </message>
     <message>
         <source>&amp;SI (m, kg, N, J)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;SI (m, kg, N, J)</translation>
     </message>
     <message>
         <source>Show metres, kilograms, newtons and joules at the scale set below</source>
-        <translation type="unfinished"></translation>
+        <translation>Meter, Kilogramm, Newton und Joule im unten eingestellten Maßstab zeigen</translation>
     </message>
     <message>
         <source>How many pixels make a metre, and how many kilograms a mass unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele Pixel einen Meter ergeben und wie viele Kilogramm eine Masseneinheit</translation>
     </message>
     <message>
         <source>SI Scale</source>
-        <translation type="unfinished"></translation>
+        <translation>SI-Maßstab</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> px</translation>
     </message>
     <message>
         <source> kg</source>
-        <translation type="unfinished"></translation>
+        <translation> kg</translation>
     </message>
     <message>
         <source>1 m is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 m sind</translation>
     </message>
     <message>
         <source>1 mass unit is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 Masseneinheit sind</translation>
     </message>
     <message>
         <source>SI &amp;Scale: %1 px = 1 m, 1 mass unit = %2 kg…</source>
-        <translation type="unfinished"></translation>
+        <translation>SI-&amp;Maßstab: %1 px = 1 m, 1 Masseneinheit = %2 kg …</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simulation</translation>
     </message>
     <message>
         <source>&amp;Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lektion</translation>
     </message>
     <message>
         <source>&amp;Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
         <source>&amp;Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Genauigkeit</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>&amp;Units</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Einheiten</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation</translation>
     </message>
     <message>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzeigen</translation>
     </message>
     <message>
         <source>Show: what the stage draws</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzeigen: was die Bühne zeichnet</translation>
     </message>
     <message>
         <source>File</source>
-        <translation type="unfinished"></translation>
+        <translation>Datei</translation>
     </message>
     <message>
         <source>Open Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion öffnen</translation>
     </message>
     <message>
         <source>Lesson files (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionsdateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Lesson not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion nicht gespeichert: %1</translation>
     </message>
     <message numerus="yes">
         <source>Saved %n ball(s) and the settings to %1 as “%2”. %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
+        <translation><numerusform>%n Kugel und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform><numerusform>%n Kugeln und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform></translation>
     </message>
     <message>
         <source>Picture not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild nicht gespeichert: %1</translation>
     </message>
     <message>
         <source>Saved the picture to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in %1 gespeichert</translation>
     </message>
     <message>
         <source>Save Picture at Double Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in doppelter Größe speichern</translation>
     </message>
     <message>
         <source>Save Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild speichern</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
         <source>Export Teacher Handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>Handbuch für Lehrkräfte exportieren</translation>
     </message>
     <message>
         <source>HTML (*.html)</source>
-        <translation type="unfinished"></translation>
+        <translation>HTML (*.html)</translation>
     </message>
     <message>
         <source>%1
 The handbook was not written; an old file there is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.</translation>
     </message>
     <message>
         <source>Handbook written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Handbuch in %1 geschrieben</translation>
     </message>
     <message>
         <source>Nothing recorded yet: switch on Record Trajectory (Ctrl+Shift+R) first</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch nichts aufgezeichnet: Schalte zuerst „Bahn aufzeichnen“ (Ctrl+Shift+R) ein</translation>
     </message>
     <message>
         <source>Export Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn exportieren</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
         <source>Wrote %L1 rows to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 Zeilen in %2 geschrieben</translation>
     </message>
 </context>
 <context>
