@@ -978,7 +978,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message numerus="yes">
         <source>… and %n more. Show Details… lists every problem.</source>
-        <translation><numerusform>… und %n weiteres. „Details anzeigen …“ listet jedes Problem auf.</numerusform><numerusform>… und %n weitere. „Details anzeigen …“ listet jedes Problem auf.</numerusform></translation>
+        <translation><numerusform>… und %n weiteres. „Details einblenden...“ listet jedes Problem auf.</numerusform><numerusform>… und %n weitere. „Details einblenden...“ listet jedes Problem auf.</numerusform></translation>
     </message>
     <message>
         <source>%1 %2</source>
@@ -1050,7 +1050,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
-        <translation>Schritt &amp;zurück</translation>
+        <translation>Schritt zu&amp;rück</translation>
     </message>
     <message>
         <source>Pause and go back by one time step dt, to the world as it was (← or ,)</source>
@@ -1118,7 +1118,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Zoom &amp;In</source>
-        <translation>Ver&amp;größern</translation>
+        <translation>&amp;Vergrößern</translation>
     </message>
     <message>
         <source>Zoom in on the middle (+); the mouse wheel zooms in on the pointer</source>
@@ -1126,7 +1126,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Zoom &amp;Out</source>
-        <translation>Ver&amp;kleinern</translation>
+        <translation>Verklei&amp;nern</translation>
     </message>
     <message>
         <source>Zoom out (−), to see balls that left the box</source>
@@ -1134,7 +1134,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Fit the &amp;Box</source>
-        <translation>&amp;Kasten einpassen</translation>
+        <translation>Kasten ein&amp;passen</translation>
     </message>
     <message>
         <source>Show the whole box, as large as it fits (0)</source>
@@ -1142,7 +1142,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Fit &amp;All Balls</source>
-        <translation>&amp;Alle Kugeln einpassen</translation>
+        <translation>Alle K&amp;ugeln einpassen</translation>
     </message>
     <message>
         <source>Zoom so that every ball is seen, in the box or out of it (A)</source>
@@ -1182,7 +1182,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>Screens&amp;hot…</source>
-        <translation>&amp;Bildschirmfoto …</translation>
+        <translation>Bildschirm&amp;foto …</translation>
     </message>
     <message>
         <source>Picture</source>
@@ -1274,7 +1274,7 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message>
         <source>&amp;Usual Text Size</source>
-        <translation>Ü&amp;bliche Textgröße</translation>
+        <translation>Übliche &amp;Textgröße</translation>
     </message>
     <message>
         <source>P&amp;rojector Theme</source>
@@ -1467,138 +1467,138 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     <name>forcelab::OverlayActions</name>
     <message>
         <source>&amp;Show</source>
-        <translation type="unfinished"></translation>
+        <translation>An&amp;zeigen</translation>
     </message>
     <message>
         <source>&amp;Velocity arrows</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Geschwindigkeitspfeile</translation>
     </message>
     <message>
         <source>&amp;Acceleration arrows (a = F/m)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beschleunigungspfeile (a = F/m)</translation>
     </message>
     <message>
         <source>&amp;Force arrows (net force F = m a)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kraftpfeile (resultierende Kraft F = m a)</translation>
     </message>
     <message>
         <source>Forces &amp;by source (one arrow per force)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kräfte nach &amp;Ursache (ein Pfeil pro Kraft)</translation>
     </message>
     <message>
         <source>&amp;Paths</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Spuren</translation>
     </message>
     <message>
         <source>&amp;Centre of mass and its path</source>
-        <translation type="unfinished"></translation>
+        <translation>S&amp;chwerpunkt und seine Spur</translation>
     </message>
     <message>
         <source>M&amp;omenta diagram (p = m v, tip to tail)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Impulsdiagramm (p = m v, Spitze an Ende)</translation>
     </message>
     <message>
         <source>Tops of the flights, with their &amp;heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Scheitelpunkte der Flüge, mit ihren &amp;Höhen</translation>
     </message>
     <message>
         <source>&amp;Readout of the selected ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Werte der ausgewählten Kugel</translation>
     </message>
     <message>
         <source>&amp;Totals: energy and momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Su&amp;mmen: Energie und Impuls</translation>
     </message>
     <message>
         <source>&amp;Mark touching balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Sich berührende Kugeln &amp;markieren</translation>
     </message>
     <message>
         <source>&amp;Grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Gitte&amp;r</translation>
     </message>
     <message>
         <source>&amp;Markers (centres, anchors, homes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mark&amp;ierungen (Mittelpunkte, Anker, Ruhelagen)</translation>
     </message>
     <message>
         <source>Arrow &amp;length</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeil&amp;länge</translation>
     </message>
     <message>
         <source>&amp;Auto: readable (about 45 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Automatisch: lesbar (etwa 45 px)</translation>
     </message>
     <message>
         <source>The lesson&apos;s scale (×1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maßstab der Lektion (×1)</translation>
     </message>
     <message>
         <source>×%1 the lesson&apos;s scale</source>
-        <translation type="unfinished"></translation>
+        <translation>×%1 Maßstab der Lektion</translation>
     </message>
     <message>
         <source>Arrow scale ×&amp;2</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab ×&amp;2</translation>
     </message>
     <message>
         <source>Arrow scale ÷2</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab ÷2</translation>
     </message>
     <message>
         <source>Arrow scale &amp;from now</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab &amp;ab jetzt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ParameterPanel</name>
     <message>
         <source>Show all parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Parameter zeigen</translation>
     </message>
     <message>
         <source>Besides the lesson&apos;s own controls, show every setting of the world</source>
-        <translation type="unfinished"></translation>
+        <translation>Neben den Reglern der Lektion jede Einstellung der Welt zeigen</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwerkraft</translation>
     </message>
     <message>
         <source>Box and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kasten und Wände</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation>Luftwiderstand</translation>
     </message>
     <message>
         <source>Wind</source>
-        <translation type="unfinished"></translation>
+        <translation>Wind</translation>
     </message>
     <message>
         <source>Random acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallsbeschleunigung</translation>
     </message>
     <message>
         <source>Point force</source>
-        <translation type="unfinished"></translation>
+        <translation>Punktkraft</translation>
     </message>
     <message>
         <source>Spring</source>
-        <translation type="unfinished"></translation>
+        <translation>Feder</translation>
     </message>
     <message>
         <source>Gravity between balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravitation zwischen Kugeln</translation>
     </message>
     <message>
         <source>Homing</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückholkraft</translation>
     </message>
     <message>
         <source>Pointer force</source>
-        <translation type="unfinished"></translation>
+        <translation>Mauszeiger-Kraft</translation>
     </message>
     <message>
         <source>Speed limit</source>
@@ -1606,11 +1606,11 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Stöße</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit</translation>
     </message>
     <message>
         <source>Balls</source>
@@ -1618,132 +1618,126 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message numerus="yes">
         <source>%n more setting(s) under &quot;Show all parameters&quot;.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
+        <translation><numerusform>%n weitere Einstellung unter „Alle Parameter zeigen“.</numerusform><numerusform>%n weitere Einstellungen unter „Alle Parameter zeigen“.</numerusform></translation>
     </message>
     <message>
         <source>Change %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ändern</translation>
     </message>
     <message>
         <source>Tick to switch %1 on</source>
-        <translation type="unfinished"></translation>
+        <translation>Ankreuzen, um %1 einzuschalten</translation>
     </message>
     <message>
         <source>%1, slider</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Schieberegler</translation>
     </message>
     <message>
         <source>%1, value</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Wert</translation>
     </message>
     <message>
         <source>%1 to %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bis %2%3</translation>
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished"></translation>
+        <translation>links</translation>
     </message>
     <message>
         <source>right</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts</translation>
     </message>
     <message>
         <source>top</source>
-        <translation type="unfinished"></translation>
+        <translation>oben</translation>
     </message>
     <message>
         <source>bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>unten</translation>
     </message>
     <message>
         <source>Walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände</translation>
     </message>
     <message>
         <source>A wall that is not ticked is open</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine nicht angekreuzte Wand ist offen</translation>
     </message>
     <message>
         <source>time.seed: &quot;%1&quot; is not a whole number from 0 to 18446744073709551615</source>
-        <translation type="unfinished"></translation>
+        <translation>time.seed: „%1“ ist keine ganze Zahl von 0 bis 18446744073709551615</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert</translation>
     </message>
     <message>
         <source>Random numbers (wind, random acceleration) start from this seed when the balls are placed again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallszahlen (Wind, Zufallsbeschleunigung) beginnen bei diesem Startwert, wenn die Kugeln neu platziert werden</translation>
     </message>
     <message numerus="yes">
         <source>Place %n random ball(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
+        <translation><numerusform>%n Zufallskugel platzieren</numerusform><numerusform>%n Zufallskugeln platzieren</numerusform></translation>
     </message>
     <message>
         <source>Place random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln platzieren</translation>
     </message>
     <message>
         <source>Random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln</translation>
     </message>
     <message>
         <source>How many balls are placed at random (besides the lesson&apos;s own); changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele Kugeln zufällig platziert werden (neben denen der Lektion); eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at least this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln starten mit mindestens diesem Tempo; eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at most this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln starten mit höchstens diesem Tempo; eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln ganz innen platzieren</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln teilweise außen starten lassen</translation>
     </message>
     <message>
         <source>Start fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganz innen starten</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall (stage 4&apos;s bug). Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus: Der Mittelpunkt einer Kugel darf überall im Kasten liegen, sie kann also teilweise außerhalb einer Wand starten (der Fehler aus Stufe 4). Eine Änderung platziert die Kugeln neu</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo</translation>
     </message>
     <message>
         <source>Simulated seconds per real second: below 1 is slow motion (%1× to %2×)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde: unter 1 ist Zeitlupe (%1× bis %2×)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PlotsDock</name>
     <message>
         <source>Plots</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme</translation>
     </message>
     <message>
         <source>kinetic</source>
@@ -1759,94 +1753,94 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>|p|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p|</translation>
     </message>
     <message>
         <source>p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>p_x</translation>
     </message>
     <message>
         <source>p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>p_y</translation>
     </message>
     <message>
         <source>one step</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Schritt</translation>
     </message>
     <message>
         <source>Plots of energy, momentum and step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme von Energie, Impuls und Schrittaufwand</translation>
     </message>
     <message>
         <source>Energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie</translation>
     </message>
     <message>
         <source>Energy bars</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiebalken</translation>
     </message>
     <message>
         <source>Graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Graph</translation>
     </message>
     <message>
         <source>Momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls</translation>
     </message>
     <message>
         <source>Cost of a step</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand eines Schritts</translation>
     </message>
     <message>
         <source>Step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Schrittaufwand</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>Momentum (×10¹² mass·px²/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls (×10¹² Masse·px²/s²)</translation>
     </message>
     <message>
         <source>Speeds</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeiten</translation>
     </message>
     <message>
         <source>Computer time per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechenzeit pro Schritt</translation>
     </message>
     <message>
         <source>µs</source>
-        <translation type="unfinished"></translation>
+        <translation>µs</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PredictDock</name>
     <message>
         <source>Predict</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersage</translation>
     </message>
     <message>
         <source>Your prediction</source>
-        <translation type="unfinished"></translation>
+        <translation>Deine Vorhersage</translation>
     </message>
     <message>
         <source>your guess</source>
-        <translation type="unfinished"></translation>
+        <translation>deine Schätzung</translation>
     </message>
     <message>
         <source>Lock in and run</source>
-        <translation type="unfinished"></translation>
+        <translation>Festlegen und starten</translation>
     </message>
     <message>
         <source>Show the answer now</source>
-        <translation type="unfinished"></translation>
+        <translation>Antwort jetzt zeigen</translation>
     </message>
     <message>
         <source>Next question</source>
-        <translation type="unfinished"></translation>
+        <translation>Nächste Frage</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -1854,202 +1848,202 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>This lesson asks no question before it runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Lektion stellt keine Frage, bevor sie läuft.</translation>
     </message>
     <message>
         <source>Make your prediction while the lesson waits at t = 0, then run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mach deine Vorhersage, während die Lektion bei t = 0 wartet, und starte sie dann.</translation>
     </message>
     <message>
         <source>Type a number first (for example 200).</source>
-        <translation type="unfinished"></translation>
+        <translation>Gib zuerst eine Zahl ein (zum Beispiel 200).</translation>
     </message>
     <message>
         <source>Pick an answer first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wähle zuerst eine Antwort.</translation>
     </message>
     <message>
         <source>Still stopping the last measurement; try again in a moment.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die letzte Messung wird noch beendet; versuch es gleich noch einmal.</translation>
     </message>
     <message>
         <source>Locked in. Working out the answer…</source>
-        <translation type="unfinished"></translation>
+        <translation>Festgelegt. Die Antwort wird ermittelt …</translation>
     </message>
     <message>
         <source>Cancelled. Change your answer or lock it in again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgebrochen. Ändere deine Antwort oder lege sie erneut fest.</translation>
     </message>
     <message>
         <source>Locked in. Watch: the answer comes at t = %1 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Festgelegt. Pass auf: Die Antwort kommt bei t = %1 s.</translation>
     </message>
     <message>
         <source>It could not be measured in this run (the lesson&apos;s sentence “%1”). Did a setting change it?</source>
-        <translation type="unfinished"></translation>
+        <translation>Es ließ sich in diesem Lauf nicht messen (der Satz der Lektion „%1“). Hat eine Einstellung es verändert?</translation>
     </message>
     <message>
         <source>You chose &lt;b&gt;%1&lt;/b&gt;. Measured: &lt;b&gt;%2 %3&lt;/b&gt;, so the answer is &lt;b&gt;%4&lt;/b&gt;. %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Du hast &lt;b&gt;%1&lt;/b&gt; gewählt. Gemessen: &lt;b&gt;%2 %3&lt;/b&gt;, also ist die Antwort &lt;b&gt;%4&lt;/b&gt;. %5</translation>
     </message>
     <message>
         <source>Well predicted!</source>
-        <translation type="unfinished"></translation>
+        <translation>Gut vorhergesagt!</translation>
     </message>
     <message>
         <source>Why was it different?</source>
-        <translation type="unfinished"></translation>
+        <translation>Warum war es anders?</translation>
     </message>
     <message>
         <source> (%1%)</source>
-        <translation type="unfinished"></translation>
+        <translation> (%1 %)</translation>
     </message>
     <message>
         <source>You said &lt;b&gt;%1 %2&lt;/b&gt;. Measured: &lt;b&gt;%3 %2&lt;/b&gt;. You were %4 %2 off%5.</source>
-        <translation type="unfinished"></translation>
+        <translation>Du hast &lt;b&gt;%1 %2&lt;/b&gt; gesagt. Gemessen: &lt;b&gt;%3 %2&lt;/b&gt;. Du lagst %4 %2 daneben%5.</translation>
     </message>
     <message>
         <source>&lt;br&gt;&lt;small&gt;The run measured what the lesson says: “%1”.&lt;/small&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;br&gt;&lt;small&gt;Der Lauf hat gemessen, was die Lektion sagt: „%1“.&lt;/small&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::QuantityGraph</name>
     <message>
         <source>x position</source>
-        <translation type="unfinished"></translation>
+        <translation>x-Position</translation>
     </message>
     <message>
         <source>y position</source>
-        <translation type="unfinished"></translation>
+        <translation>y-Position</translation>
     </message>
     <message>
         <source>velocity v_x</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v_x</translation>
     </message>
     <message>
         <source>velocity v_y</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v_y</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo</translation>
     </message>
     <message>
         <source>kinetic energy</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetische Energie</translation>
     </message>
     <message>
         <source>potential energy</source>
-        <translation type="unfinished"></translation>
+        <translation>potenzielle Energie</translation>
     </message>
     <message>
         <source>total energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Gesamtenergie</translation>
     </message>
     <message>
         <source>momentum p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls p_x</translation>
     </message>
     <message>
         <source>momentum p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls p_y</translation>
     </message>
     <message>
         <source>Quantity to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Darzustellende Größe</translation>
     </message>
     <message>
         <source>Ball to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Darzustellende Kugel</translation>
     </message>
     <message>
         <source>of</source>
-        <translation type="unfinished"></translation>
+        <translation>von</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>gemessen</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>alle Kugeln</translation>
     </message>
     <message>
         <source>ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>theory: E₀, nothing takes energy away</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: E₀, nichts entzieht Energie</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: x₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: x₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: y₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: y₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: v₀ + gt</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: v₀ + gt</translation>
     </message>
     <message>
         <source>theory: v₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: v₀, konstant</translation>
     </message>
     <message>
         <source>theory: |v₀ + gt|</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: |v₀ + gt|</translation>
     </message>
     <message>
         <source>theory: |v₀|, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: |v₀|, konstant</translation>
     </message>
     <message>
         <source>theory: ½m|v₀ + gt|²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: ½m|v₀ + gt|²</translation>
     </message>
     <message>
         <source>theory: ½m|v₀|², constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: ½m|v₀|², konstant</translation>
     </message>
     <message>
         <source>theory: mgh, h of the flight</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: mgh, h der Flugbahn</translation>
     </message>
     <message>
         <source>theory: 0, no gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: 0, keine Schwerkraft</translation>
     </message>
     <message>
         <source>theory: E₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: E₀, konstant</translation>
     </message>
     <message>
         <source>theory: m(v₀ + gt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: m(v₀ + gt)</translation>
     </message>
     <message>
         <source>theory: mv₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: mv₀, konstant</translation>
     </message>
     <message>
         <source>%1 of %2 (%3%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 (%3%4)</translation>
     </message>
 </context>
 <context>
@@ -2228,19 +2222,19 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln ganz innen platzieren</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln teilweise außen starten lassen</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel</translation>
     </message>
     <message>
         <source>Walls: &lt;b&gt;%1&lt;/b&gt;</source>
