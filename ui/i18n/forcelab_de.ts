@@ -1507,7 +1507,7 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>&amp;Totals: energy and momentum</source>
-        <translation>Su&amp;mmen: Energie und Impuls</translation>
+        <translation>Summen: Energie und Im&amp;puls</translation>
     </message>
     <message>
         <source>&amp;Mark touching balls</source>
@@ -1519,7 +1519,7 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>&amp;Markers (centres, anchors, homes)</source>
-        <translation>Mark&amp;ierungen (Mittelpunkte, Anker, Ruhelagen)</translation>
+        <translation>Markierunge&amp;n (Mittelpunkte, Anker, Ruhelagen)</translation>
     </message>
     <message>
         <source>Arrow &amp;length</source>
@@ -1547,7 +1547,7 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Arrow scale &amp;from now</source>
-        <translation>Pfeilmaßstab &amp;ab jetzt</translation>
+        <translation>Pfeilmaßstab a&amp;b jetzt</translation>
     </message>
 </context>
 <context>
@@ -2050,175 +2050,175 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     <name>forcelab::SaveLessonDialog</name>
     <message>
         <source>Save Scene as Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene als Lektion speichern</translation>
     </message>
     <message>
         <source>The scene is saved as a new lesson with your title and text. Of the claims and questions of “%1”, only those that still hold in this scene are kept; the others are listed after saving.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Szene wird als neue Lektion mit deinem Titel und Text gespeichert. Von den Aussagen und Fragen aus „%1“ bleiben nur die erhalten, die in dieser Szene noch gelten; die anderen werden nach dem Speichern aufgelistet.</translation>
     </message>
     <message>
         <source>Plain text; an empty line starts a new paragraph.</source>
-        <translation type="unfinished"></translation>
+        <translation>Einfacher Text; eine Leerzeile beginnt einen neuen Absatz.</translation>
     </message>
     <message>
         <source>&amp;Keep the teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hinweise für Lehrkräfte behalten</translation>
     </message>
     <message>
         <source>The goal, the minutes and the misconceptions. The answers to the challenges are never kept: the new lesson has no challenges.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Ziel, die Minuten und die Fehlvorstellungen. Die Antworten zu den Aufgaben werden nie übernommen: Die neue Lektion hat keine Aufgaben.</translation>
     </message>
     <message>
         <source>C&amp;hoose…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wählen …</translation>
     </message>
     <message>
         <source>&amp;Title:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Titel:</translation>
     </message>
     <message>
         <source>Te&amp;xt:</source>
-        <translation type="unfinished"></translation>
+        <translation>Te&amp;xt:</translation>
     </message>
     <message>
         <source>&amp;File:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei:</translation>
     </message>
     <message>
         <source>Lesson files (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionsdateien (*.json)</translation>
     </message>
     <message>
         <source>The lesson needs a title.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion braucht einen Titel.</translation>
     </message>
     <message>
         <source>“%1” has a number or a comparison (“%2”) that nothing measures on this scene, and a lesson must not say what it does not check. Write it without, or add a claim to the file later.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ enthält eine Zahl oder einen Vergleich („%2“), den in dieser Szene nichts misst, und eine Lektion darf nichts behaupten, was sie nicht prüft. Schreib es ohne, oder füge später eine Aussage in die Datei ein.</translation>
     </message>
     <message>
         <source>Choose the file to save to.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wähle die Datei zum Speichern.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SettingsEditor</name>
     <message>
         <source>Random balls from %1 to %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln von %1 bis %2 px/s</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>mass: %1 is outside %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse: %1 liegt außerhalb von %2</translation>
     </message>
     <message>
         <source>Not placed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht platziert: %1</translation>
     </message>
     <message>
         <source>Moved to (%1, %2) px, touching, so it does not overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach (%1, %2) px verschoben, berührend, damit sie nicht überlappt</translation>
     </message>
     <message>
         <source>Not added: the world holds at most %1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht hinzugefügt: Die Welt fasst höchstens %1 Kugeln</translation>
     </message>
     <message>
         <source>Delete ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 löschen</translation>
     </message>
     <message>
         <source>Duplicate ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 duplizieren</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SimulationController</name>
     <message>
         <source>%1 pane: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich %1: %2</translation>
     </message>
     <message>
         <source>your code</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code</translation>
     </message>
     <message>
         <source>spawn.count: %1 listed + %2 random balls is more than the limit of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>spawn.count: %1 aufgeführte + %2 Zufallskugeln sind mehr als die Grenze von %3</translation>
     </message>
     <message>
         <source>time scale: %1 is outside %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitmaßstab: %1 liegt außerhalb von %2 bis %3</translation>
     </message>
     <message>
         <source>ghost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SpeedHistogram</name>
     <message>
         <source>Histogram of the balls&apos; speeds with the Maxwell–Boltzmann curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Histogramm der Kugeltempos mit der Maxwell-Boltzmann-Kurve</translation>
     </message>
     <message>
         <source>balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Maxwell–Boltzmann (2D), same energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Maxwell-Boltzmann (2D), gleiche Energie</translation>
     </message>
     <message>
         <source>speed (px/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo (px/s)</translation>
     </message>
     <message>
         <source>speed (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo (%1)</translation>
     </message>
     <message>
         <source>%1balls per %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1Kugeln pro %2 %3</translation>
     </message>
     <message>
         <source>Speeds of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempos von %1</translation>
     </message>
     <message>
         <source>ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageSliders</name>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts</translation>
     </message>
     <message>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>Oben</translation>
     </message>
     <message>
         <source>Bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>Unten</translation>
     </message>
     <message>
         <source>A wall whose button is not pressed is open: a ball leaves through it</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand, deren Knopf nicht gedrückt ist, ist offen: Eine Kugel verlässt den Kasten durch sie</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall. Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus: Der Mittelpunkt einer Kugel darf überall im Kasten liegen, sie kann also teilweise außerhalb einer Wand starten. Eine Änderung platziert die Kugeln neu</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
@@ -2238,31 +2238,31 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Walls: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keine</translation>
     </message>
     <message>
         <source>Slowest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Fastest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Switch off</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausschalten</translation>
     </message>
     <message>
         <source>Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>Einschalten</translation>
     </message>
     <message>
         <source>Start fully inside: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganz innen starten: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>on</source>
@@ -2277,18 +2277,18 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     <name>forcelab::StageToolTitle</name>
     <message>
         <source>Close (the tool&apos;s key again)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen (erneut die Taste des Werkzeugs)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageView</name>
     <message>
         <source>Sliders</source>
-        <translation type="unfinished"></translation>
+        <translation>Regler</translation>
     </message>
     <message>
         <source>Show the lesson&apos;s sliders under the box in the stage view (S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Regler der Lektion in der Bühnenansicht unter dem Kasten zeigen (S)</translation>
     </message>
     <message>
         <source>Balls</source>
@@ -2296,229 +2296,229 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Show every ball&apos;s numbers under the box, to type new ones (T)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zahlen jeder Kugel unter dem Kasten zeigen, um neue einzugeben (T)</translation>
     </message>
     <message>
         <source>&lt;b&gt;Stopped:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Angehalten:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>t = %1 s   %2× speed</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s   %2× Tempo</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StepApartDock</name>
     <message>
         <source>One Step Apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt zerlegt</translation>
     </message>
     <message>
         <source>all</source>
-        <translation type="unfinished"></translation>
+        <translation>alle</translation>
     </message>
     <message>
         <source>Sub-step shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigter Teilschritt</translation>
     </message>
     <message>
         <source>Sub-step shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigter Teilschritt:</translation>
     </message>
     <message>
         <source>◀ Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Schritt zurück</translation>
     </message>
     <message>
         <source>Step ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt ▶</translation>
     </message>
     <message>
         <source>Pause to take a step apart: it is worked out for one step at a time, not for every frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>Halte an, um einen Schritt zu zerlegen: Er wird jeweils für einen Schritt berechnet, nicht für jedes Bild.</translation>
     </message>
     <message>
         <source>There is no ball to follow.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt keine Kugel zum Verfolgen.</translation>
     </message>
     <message>
         <source>Sub-step %1 of %2: h = %3 s, starting at</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilschritt %1 von %2: h = %3 s, beginnend bei</translation>
     </message>
     <message>
         <source>The step starts: h = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schritt beginnt: h = %1 s</translation>
     </message>
     <message>
         <source>Force: %1 adds its acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraft: %1 addiert ihre Beschleunigung</translation>
     </message>
     <message>
         <source>its own part: (%1, %2) px/s²</source>
-        <translation type="unfinished"></translation>
+        <translation>ihr eigener Anteil: (%1, %2) px/s²</translation>
     </message>
     <message>
         <source>Acceleration: all the forces added up</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung: alle Kräfte zusammengezählt</translation>
     </message>
     <message>
         <source>Acceleration k%1, at a trial state (Runge-Kutta)</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung k%1, in einem Probezustand (Runge-Kutta)</translation>
     </message>
     <message>
         <source>no force is switched on: the acceleration stays 0</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kraft ist eingeschaltet: Die Beschleunigung bleibt 0</translation>
     </message>
     <message>
         <source>Velocity changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit ändert sich</translation>
     </message>
     <message>
         <source>Position moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Position verschiebt sich</translation>
     </message>
     <message>
         <source>with the %1 accelerations above, weighted 1, 2, 2, 1</source>
-        <translation type="unfinished"></translation>
+        <translation>mit den %1 Beschleunigungen oben, gewichtet 1, 2, 2, 1</translation>
     </message>
     <message>
         <source>no wall touched: nothing changed</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Wand berührt: nichts geändert</translation>
     </message>
     <message>
         <source>nothing changed for this ball</source>
-        <translation type="unfinished"></translation>
+        <translation>für diese Kugel hat sich nichts geändert</translation>
     </message>
     <message>
         <source>Detection: which balls touch?</source>
-        <translation type="unfinished"></translation>
+        <translation>Erkennung: Welche Kugeln berühren sich?</translation>
     </message>
     <message>
         <source>ball %1 and ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 und Kugel %2</translation>
     </message>
     <message>
         <source>no ball touches ball %1 (%2 touching pairs in all)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kugel berührt Kugel %1 (insgesamt %2 sich berührende Paare)</translation>
     </message>
     <message>
         <source>touching: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>berührend: %1</translation>
     </message>
     <message>
         <source>Response with ball %1: the velocities change</source>
-        <translation type="unfinished"></translation>
+        <translation>Reaktion mit Kugel %1: Die Geschwindigkeiten ändern sich</translation>
     </message>
     <message>
         <source>they are moving apart already: no change</source>
-        <translation type="unfinished"></translation>
+        <translation>sie bewegen sich schon auseinander: keine Änderung</translation>
     </message>
     <message>
         <source>Δvx = %1 px/s, Δvy = %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Δvx = %1 px/s, Δvy = %2 px/s</translation>
     </message>
     <message>
         <source>Push-apart from ball %1: out of each other</source>
-        <translation type="unfinished"></translation>
+        <translation>Auseinanderschieben von Kugel %1: aus einander heraus</translation>
     </message>
     <message>
         <source>overlap %1 px; Δx = %2 px, Δy = %3 px</source>
-        <translation type="unfinished"></translation>
+        <translation>Überlappung %1 px; Δx = %2 px, Δy = %3 px</translation>
     </message>
     <message>
         <source>Check: the script&apos;s step against the engine&apos;s (C++)</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfung: der Schritt des Skripts gegen den der Engine (C++)</translation>
     </message>
     <message>
         <source>matches the engine bit for bit</source>
-        <translation type="unfinished"></translation>
+        <translation>stimmt Bit für Bit mit der Engine überein</translation>
     </message>
     <message>
         <source>differs from the engine by Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>weicht von der Engine ab um Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</translation>
     </message>
     <message>
         <source>One step, taken apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt, zerlegt</translation>
     </message>
     <message>
         <source>Ball %1, step %2 → %3, in the order the JavaScript runs it. Changed values are highlighted.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1, Schritt %2 → %3, in der Reihenfolge, in der das JavaScript ihn ausführt. Geänderte Werte sind hervorgehoben.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StopwatchDock</name>
     <message>
         <source>Stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr</translation>
     </message>
     <message>
         <source>by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>von Hand</translation>
     </message>
     <message>
         <source>on the event</source>
-        <translation type="unfinished"></translation>
+        <translation>beim Ereignis</translation>
     </message>
     <message>
         <source>Start the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr starten</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Start</translation>
     </message>
     <message>
         <source>after events:</source>
-        <translation type="unfinished"></translation>
+        <translation>nach Ereignissen:</translation>
     </message>
     <message>
         <source>Stop the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr anhalten</translation>
     </message>
     <message>
         <source>Events before the stopwatch stops</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignisse, bevor die Stoppuhr anhält</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>a bounce (moving down, then up)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Aufprall (erst nach unten, dann nach oben)</translation>
     </message>
     <message>
         <source>the top of a flight</source>
-        <translation type="unfinished"></translation>
+        <translation>der höchste Punkt eines Flugs</translation>
     </message>
     <message>
         <source>crossing the line x =</source>
-        <translation type="unfinished"></translation>
+        <translation>Überqueren der Linie x =</translation>
     </message>
     <message>
         <source>crossing the line y =</source>
-        <translation type="unfinished"></translation>
+        <translation>Überqueren der Linie y =</translation>
     </message>
     <message>
         <source>a full turn round the centre</source>
-        <translation type="unfinished"></translation>
+        <translation>eine volle Runde um den Mittelpunkt</translation>
     </message>
     <message>
         <source>Event</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignis</translation>
     </message>
     <message>
         <source>Line position</source>
-        <translation type="unfinished"></translation>
+        <translation>Position der Linie</translation>
     </message>
     <message>
         <source>Line at</source>
-        <translation type="unfinished"></translation>
+        <translation>Linie bei</translation>
     </message>
     <message>
         <source>Ball watched</source>
-        <translation type="unfinished"></translation>
+        <translation>Beobachtete Kugel</translation>
     </message>
     <message>
         <source>Ball</source>
@@ -2526,192 +2526,192 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <source>Arm</source>
-        <translation type="unfinished"></translation>
+        <translation>Scharf schalten</translation>
     </message>
     <message>
         <source>Waiting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Warte …</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu starten</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Last times: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Letzte Zeiten: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StudentCodeDock</name>
     <message>
         <source>Your Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein Code</translation>
     </message>
     <message>
         <source>Rewrite:</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu schreiben:</translation>
     </message>
     <message>
         <source>JavaScript file to rewrite</source>
-        <translation type="unfinished"></translation>
+        <translation>JavaScript-Datei zum Neuschreiben</translation>
     </message>
     <message>
         <source>The stage&apos;s code, one file per rule. Pick one and write your own version.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Code der Stufe, eine Datei pro Regel. Wähle eine aus und schreibe deine eigene Version.</translation>
     </message>
     <message>
         <source>Your JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein JavaScript</translation>
     </message>
     <message>
         <source>Run beside the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Neben der Referenz ausführen</translation>
     </message>
     <message>
         <source>Runs your version in place of the course&apos;s, beside the reference (Ctrl+Return)</source>
-        <translation type="unfinished"></translation>
+        <translation>Führt deine Version anstelle der des Kurses aus, neben der Referenz (Ctrl+Return)</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>Takes your code off the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Nimmt deinen Code von der Zeichenfläche</translation>
     </message>
     <message>
         <source>Back to the course&apos;s file</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurück zur Datei des Kurses</translation>
     </message>
     <message>
         <source>Throws away your changes to this file</source>
-        <translation type="unfinished"></translation>
+        <translation>Verwirft deine Änderungen an dieser Datei</translation>
     </message>
     <message>
         <source>%1 (yours)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (deine)</translation>
     </message>
     <message>
         <source>Change the code above, then press Run: your version runs beside the course&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ändere den Code oben und drücke dann auf Ausführen: Deine Version läuft neben der des Kurses.</translation>
     </message>
     <message>
         <source>Your changes: %1. Press Run to see them beside the reference.</source>
-        <translation type="unfinished"></translation>
+        <translation>Deine Änderungen: %1. Drücke auf Ausführen, um sie neben der Referenz zu sehen.</translation>
     </message>
     <message>
         <source>Your code stopped. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein Code wurde angehalten. %1</translation>
     </message>
     <message>
         <source>Departs at step %1: your code has %2 balls, the reference %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Weicht ab bei Schritt %1: Dein Code hat %2 Kugeln, die Referenz %3.</translation>
     </message>
     <message>
         <source>Departs at step %1 (t = %2 s), ball %3: %4 is %5 in your code and %6 in the reference, %7 apart. Now the balls are up to %8 apart.</source>
-        <translation type="unfinished"></translation>
+        <translation>Weicht ab bei Schritt %1 (t = %2 s), Kugel %3: %4 ist %5 in deinem Code und %6 in der Referenz, %7 Unterschied. Jetzt liegen die Kugeln bis zu %8 auseinander.</translation>
     </message>
     <message>
         <source>Agrees with the reference for all %1 steps so far (x, y, vx and vy to 9 significant digits).</source>
-        <translation type="unfinished"></translation>
+        <translation>Stimmt bisher in allen %1 Schritten mit der Referenz überein (x, y, vx und vy auf 9 signifikante Stellen).</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TimelineBar</name>
     <message>
         <source>Step back: pause and show the world one step dt earlier</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt zurück: anhalten und die Welt einen Schritt dt früher zeigen</translation>
     </message>
     <message>
         <source>Step: re-run the next recorded step, or take a new one at the latest</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt: den nächsten aufgezeichneten Schritt erneut ausführen oder am Ende einen neuen machen</translation>
     </message>
     <message>
         <source>The recorded past: drag to see the world at any step of it</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aufgezeichnete Vergangenheit: ziehen, um die Welt bei jedem ihrer Schritte zu sehen</translation>
     </message>
     <message>
         <source>Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt zurück</translation>
     </message>
     <message>
         <source>Step forward</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt vor</translation>
     </message>
     <message>
         <source>Timeline: the recorded steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitleiste: die aufgezeichneten Schritte</translation>
     </message>
     <message>
         <source>Time shown, of the time recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigte Zeit von der aufgezeichneten Zeit</translation>
     </message>
     <message>
         <source>t = %1 s of %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s von %2 s</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TraceCheck</name>
     <message>
         <source>Check a Student&apos;s &amp;Trace…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Spur eines Schülers prüfen …</translation>
     </message>
     <message>
         <source>Check a trace a student&apos;s own program wrote (CSV or JSON: step, ball, x, y, vx, vy) against this run: where it first departs, and why</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Spur, die das eigene Programm eines Schülers geschrieben hat (CSV oder JSON: step, ball, x, y, vx, vy), mit diesem Lauf vergleichen: wo sie zuerst abweicht und warum</translation>
     </message>
     <message>
         <source>Check a Student&apos;s Trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur eines Schülers prüfen</translation>
     </message>
     <message>
         <source>Traces (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Spuren (*.csv *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>%1: a trace is still being checked; wait for its result</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Eine Spur wird noch geprüft; warte auf ihr Ergebnis</translation>
     </message>
     <message>
         <source>%1 cannot be checked: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geprüft werden: %2</translation>
     </message>
     <message>
         <source>%1 agrees with the run at every one of its %2 rows (to step %3, t = %4 s): the largest difference is %5.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 stimmt in jeder seiner %2 Zeilen mit dem Lauf überein (bis Schritt %3, t = %4 s): Die größte Abweichung ist %5.</translation>
     </message>
     <message>
         <source>%1 departs from the run at step %2 (t = %3 s), ball %4: %5 is %6 where the run has %7, off by %8.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 weicht bei Schritt %2 (t = %3 s) vom Lauf ab, Kugel %4: %5 ist %6, wo der Lauf %7 hat, Abweichung %8.</translation>
     </message>
     <message>
         <source>Likely cause: %1. The numbers follow the run with %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Wahrscheinliche Ursache: %1. Die Zahlen folgen dem Lauf mit %2: %3</translation>
     </message>
     <message>
         <source>No known mistake explains it: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein bekannter Fehler erklärt es: %1</translation>
     </message>
     <message>
         <source>The canvas does not go there: step %1 is past the %2 steps it runs to at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zeichenfläche geht nicht dorthin: Schritt %1 liegt hinter den %2 Schritten, die sie auf einmal läuft.</translation>
     </message>
     <message>
         <source>Student&apos;s trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur des Schülers</translation>
     </message>
     <message>
         <source>student&apos;s ball %1, step %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 des Schülers, Schritt %2</translation>
     </message>
 </context>
 </TS>
