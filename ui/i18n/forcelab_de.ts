@@ -80,7 +80,7 @@
     </message>
     <message>
         <source>Showcase</source>
-        <translation>Schaukasten</translation>
+        <translation>Vorführung</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
@@ -2601,11 +2601,11 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Change the code above, then press Run: your version runs beside the course&apos;s.</source>
-        <translation>Ändere den Code oben und drücke dann auf Ausführen: Deine Version läuft neben der des Kurses.</translation>
+        <translation>Ändere den Code oben und drücke dann „Neben der Referenz ausführen“: Deine Version läuft neben der des Kurses.</translation>
     </message>
     <message>
         <source>Your changes: %1. Press Run to see them beside the reference.</source>
-        <translation>Deine Änderungen: %1. Drücke auf Ausführen, um sie neben der Referenz zu sehen.</translation>
+        <translation>Deine Änderungen: %1. Drücke „Neben der Referenz ausführen“, um sie neben der Referenz zu sehen.</translation>
     </message>
     <message>
         <source>Your code stopped. %1</source>
@@ -2663,23 +2663,23 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     <name>forcelab::TraceCheck</name>
     <message>
         <source>Check a Student&apos;s &amp;Trace…</source>
-        <translation>&amp;Spur eines Schülers prüfen …</translation>
+        <translation>Schülerprotokoll &amp;prüfen …</translation>
     </message>
     <message>
         <source>Check a trace a student&apos;s own program wrote (CSV or JSON: step, ball, x, y, vx, vy) against this run: where it first departs, and why</source>
-        <translation>Eine Spur, die das eigene Programm eines Schülers geschrieben hat (CSV oder JSON: step, ball, x, y, vx, vy), mit diesem Lauf vergleichen: wo sie zuerst abweicht und warum</translation>
+        <translation>Ein Protokoll, das das eigene Programm eines Schülers geschrieben hat (CSV oder JSON: step, ball, x, y, vx, vy), mit diesem Lauf vergleichen: wo es zuerst abweicht und warum</translation>
     </message>
     <message>
         <source>Check a Student&apos;s Trace</source>
-        <translation>Spur eines Schülers prüfen</translation>
+        <translation>Schülerprotokoll prüfen</translation>
     </message>
     <message>
         <source>Traces (*.csv *.json);;All files (*)</source>
-        <translation>Spuren (*.csv *.json);;Alle Dateien (*)</translation>
+        <translation>Protokolle (*.csv *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>%1: a trace is still being checked; wait for its result</source>
-        <translation>%1: Eine Spur wird noch geprüft; warte auf ihr Ergebnis</translation>
+        <translation>%1: Ein Protokoll wird noch geprüft; warte auf sein Ergebnis</translation>
     </message>
     <message>
         <source>%1 cannot be checked: %2</source>
@@ -2707,7 +2707,7 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>Student&apos;s trace</source>
-        <translation>Spur des Schülers</translation>
+        <translation>Schülerprotokoll</translation>
     </message>
     <message>
         <source>student&apos;s ball %1, step %2</source>
