@@ -435,7 +435,7 @@
     </message>
     <message>
         <source>%1 at %2°</source>
-        <translation>%1 bei %2°</translation>
+        <translation>%1 unter %2°</translation>
     </message>
     <message>
         <source>%1°</source>
@@ -978,7 +978,10 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message numerus="yes">
         <source>… and %n more. Show Details… lists every problem.</source>
-        <translation><numerusform>… und %n weiteres. „Details einblenden...“ listet jedes Problem auf.</numerusform><numerusform>… und %n weitere. „Details einblenden...“ listet jedes Problem auf.</numerusform></translation>
+        <translation>
+            <numerusform>… und %n weiteres. „Details einblenden...“ listet jedes Problem auf.</numerusform>
+            <numerusform>… und %n weitere. „Details einblenden...“ listet jedes Problem auf.</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 %2</source>
@@ -1406,7 +1409,10 @@ In deinem Webbrowser öffnen?</translation>
     </message>
     <message numerus="yes">
         <source>Saved %n ball(s) and the settings to %1 as “%2”. %3</source>
-        <translation><numerusform>%n Kugel und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform><numerusform>%n Kugeln und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform></translation>
+        <translation>
+            <numerusform>%n Kugel und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform>
+            <numerusform>%n Kugeln und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform>
+        </translation>
     </message>
     <message>
         <source>Picture not saved: %1</source>
@@ -1618,7 +1624,10 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message numerus="yes">
         <source>%n more setting(s) under &quot;Show all parameters&quot;.</source>
-        <translation><numerusform>%n weitere Einstellung unter „Alle Parameter zeigen“.</numerusform><numerusform>%n weitere Einstellungen unter „Alle Parameter zeigen“.</numerusform></translation>
+        <translation>
+            <numerusform>%n weitere Einstellung unter „Alle Parameter zeigen“.</numerusform>
+            <numerusform>%n weitere Einstellungen unter „Alle Parameter zeigen“.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Change %1</source>
@@ -1678,7 +1687,10 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message numerus="yes">
         <source>Place %n random ball(s)</source>
-        <translation><numerusform>%n Zufallskugel platzieren</numerusform><numerusform>%n Zufallskugeln platzieren</numerusform></translation>
+        <translation>
+            <numerusform>%n Zufallskugel platzieren</numerusform>
+            <numerusform>%n Zufallskugeln platzieren</numerusform>
+        </translation>
     </message>
     <message>
         <source>Place random balls</source>
