@@ -5,31 +5,31 @@
     <name>BallClipboard</name>
     <message>
         <source>the clipboard holds %1 characters, more than a ball&apos;s %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zwischenablage enthält %1 Zeichen, mehr als die %2 einer Kugel</translation>
     </message>
     <message>
         <source>the clipboard does not hold a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zwischenablage enthält keine Kugel</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has an unknown field &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat ein unbekanntes Feld „%1“</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no number &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat keine Zahl „%1“</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has &quot;pinned&quot; that is not true or false</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat ein „pinned“, das weder true noch false ist</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has a restitution that is not a number from 0 to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat eine Stoßzahl, die keine Zahl von 0 bis 1 ist</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no valid colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugel in der Zwischenablage hat keine gültige Farbe</translation>
     </message>
 </context>
 <context>
@@ -100,7 +100,7 @@
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Schwerkraft</translation>
     </message>
     <message>
         <source>g x (right)</source>
@@ -112,7 +112,7 @@
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Luftwiderstand</translation>
     </message>
     <message>
         <source>Drag law</source>
@@ -128,7 +128,7 @@
     </message>
     <message>
         <source>Wind</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Wind</translation>
     </message>
     <message>
         <source>Wind strength</source>
@@ -152,7 +152,7 @@
     </message>
     <message>
         <source>Random acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Zufallsbeschleunigung</translation>
     </message>
     <message>
         <source>One value per ball</source>
@@ -168,7 +168,7 @@
     </message>
     <message>
         <source>Point force</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Punktkraft</translation>
     </message>
     <message>
         <source>Point kind</source>
@@ -200,7 +200,7 @@
     </message>
     <message>
         <source>Spring</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Feder</translation>
     </message>
     <message>
         <source>Anchor x</source>
@@ -216,7 +216,7 @@
     </message>
     <message>
         <source>Gravity between balls</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Gravitation zwischen Kugeln</translation>
     </message>
     <message>
         <source>G</source>
@@ -228,7 +228,7 @@
     </message>
     <message>
         <source>Homing</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Rückholkraft</translation>
     </message>
     <message>
         <source>Homing strength</source>
@@ -236,7 +236,7 @@
     </message>
     <message>
         <source>Pointer force</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Mauszeiger-Kraft</translation>
     </message>
     <message>
         <source>Pointer strength</source>
@@ -264,7 +264,7 @@
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Tempolimit</translation>
     </message>
     <message>
         <source>Largest speed</source>
@@ -295,74 +295,74 @@
     <name>QObject</name>
     <message>
         <source>Change speed to %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo auf %1× ändern</translation>
     </message>
     <message>
         <source>Walls: is the ball outside the box?</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände: Ist die Kugel außerhalb des Kastens?</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempolimit</translation>
     </message>
     <message>
         <source>Rule %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Regel %1</translation>
     </message>
     <message>
         <source>Goal:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziel:</translation>
     </message>
     <message>
         <source>about %1 minutes</source>
-        <translation type="unfinished"></translation>
+        <translation>etwa %1 Minuten</translation>
     </message>
     <message>
         <source>Expected answers</source>
-        <translation type="unfinished"></translation>
+        <translation>Erwartete Antworten</translation>
     </message>
     <message>
         <source>Common misconceptions</source>
-        <translation type="unfinished"></translation>
+        <translation>Häufige Fehlvorstellungen</translation>
     </message>
     <message>
         <source>What the scene is checked to show</source>
-        <translation type="unfinished"></translation>
+        <translation>Was die Szene nachweislich zeigt</translation>
     </message>
     <message>
         <source>ForceLab: teacher&apos;s handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab: Handbuch für Lehrkräfte</translation>
     </message>
     <message>
         <source>One section per lesson: the goal, the time it takes, the text students read, the challenges with their expected answers, the misconceptions to expect, and what the scene is checked to show (forcelab-cli check).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Abschnitt pro Lektion: das Ziel, die benötigte Zeit, der Text für die Schülerinnen und Schüler, die Aufgaben mit den erwarteten Antworten, die zu erwartenden Fehlvorstellungen und was die Szene nachweislich zeigt (forcelab-cli check).</translation>
     </message>
     <message>
         <source>Showcase</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorführung</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufe %1 von 29</translation>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus</translation>
     </message>
     <message>
         <source>Challenges</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufgaben</translation>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Für die Lehrkraft</translation>
     </message>
 </context>
 <context>
     <name>SceneDescription</name>
     <message>
         <source>right</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">rechts</translation>
     </message>
     <message>
         <source>up and to the right</source>
@@ -378,7 +378,7 @@
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">links</translation>
     </message>
     <message>
         <source>down and to the left</source>
@@ -426,7 +426,7 @@
     </message>
     <message>
         <source>Ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">Kugel %1</translation>
     </message>
     <message>
         <source>Ball %1 (%2)</source>
@@ -469,1366 +469,1370 @@
     <name>forcelab::AccuracyDock</name>
     <message>
         <source>Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>Genauigkeit</translation>
     </message>
     <message>
         <source>Drift</source>
-        <translation type="unfinished"></translation>
+        <translation>Drift</translation>
     </message>
     <message>
         <source>Ghost</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist</translation>
     </message>
     <message>
         <source>Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>Abwägung</translation>
     </message>
     <message>
         <source>Off</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus</translation>
     </message>
     <message>
         <source>Compare with another integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit einem anderen Integrator vergleichen</translation>
     </message>
     <message>
         <source>Sensitivity twin (moved 1e-10 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Empfindlichkeits-Zwilling (um 1e-10 px verschoben)</translation>
     </message>
     <message>
         <source>dt (same)</source>
-        <translation type="unfinished"></translation>
+        <translation>dt (gleich)</translation>
     </message>
     <message>
         <source>dt / %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dt / %1</translation>
     </message>
     <message>
         <source>Draw the ghost on the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Geist auf der Zeichenfläche zeigen</translation>
     </message>
     <message>
         <source>Ghost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist:</translation>
     </message>
     <message>
         <source>Its integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sein Integrator:</translation>
     </message>
     <message>
         <source>Its step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sein Schritt:</translation>
     </message>
     <message>
         <source>Separation:</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand:</translation>
     </message>
     <message>
         <source>t, s</source>
-        <translation type="unfinished"></translation>
+        <translation>t, s</translation>
     </message>
     <message>
         <source>px</source>
-        <translation type="unfinished"></translation>
+        <translation>px</translation>
     </message>
     <message>
         <source>Measure the &amp;Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abwägung messen</translation>
     </message>
     <message>
         <source>Run the current scene with every integrator at several steps and plot error against cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aktuelle Szene mit jedem Integrator bei mehreren Schrittweiten laufen lassen und den Fehler gegen den Aufwand auftragen</translation>
     </message>
     <message>
         <source>Check &amp;Convergence</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Konvergenz prüfen</translation>
     </message>
     <message>
         <source>Rerun the current scene at dt, dt/2, dt/4, dt/8 and fit the order</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aktuelle Szene mit dt, dt/2, dt/4, dt/8 erneut laufen lassen und die Ordnung anpassen</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>Runs the lesson&apos;s scene for %1 s with each integrator.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lässt die Szene der Lektion %1 s lang mit jedem Integrator laufen.</translation>
     </message>
     <message>
         <source>Error against cost, both on log scales: lower left is better</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler gegen Aufwand, beide logarithmisch: unten links ist besser</translation>
     </message>
     <message>
         <source>(E now − E at the start − energy added or removed on purpose) / |E at the start|: the integrator&apos;s own error</source>
-        <translation type="unfinished"></translation>
+        <translation>(E jetzt − E am Anfang − absichtlich zugeführte oder entzogene Energie) / |E am Anfang|: der eigene Fehler des Integrators</translation>
     </message>
     <message>
         <source>Energy added (+) or removed (−) on purpose by drag, wind, walls, collisions, the pointer and edits, relative to |E at the start|</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie, die absichtlich durch Luftwiderstand, Wind, Wände, Stöße, den Mauszeiger und Änderungen zugeführt (+) oder entzogen (−) wurde, relativ zu |E am Anfang|</translation>
     </message>
     <message>
         <source>|p now − p at the start − impulse of the outside forces|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p jetzt − p am Anfang − Kraftstoß der äußeren Kräfte|</translation>
     </message>
     <message>
         <source>Energy drift ΔE/|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiedrift ΔE/|E₀|:</translation>
     </message>
     <message>
         <source>Booked on purpose /|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Absichtlich verbucht /|E₀|:</translation>
     </message>
     <message>
         <source>Momentum drift |Δp|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Impulsdrift |Δp|:</translation>
     </message>
     <message>
         <source>Force evaluations per simulated s:</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnungen pro simulierter s:</translation>
     </message>
     <message>
         <source>Step cost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand pro Schritt:</translation>
     </message>
     <message>
         <source>Energy added or taken away on purpose (drag, wind, walls, collisions, your pointer, edits) is booked apart. What is left should be zero: it is the integrator&apos;s own error.</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie, die absichtlich zugeführt oder entzogen wird (Luftwiderstand, Wind, Wände, Stöße, dein Mauszeiger, Änderungen), wird getrennt verbucht. Was übrig bleibt, sollte null sein: Es ist der eigene Fehler des Integrators.</translation>
     </message>
     <message>
         <source>Start Counting Again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu zählen</translation>
     </message>
     <message>
         <source>%1 ms, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms, %2</translation>
     </message>
     <message>
         <source>force evaluation</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnung</translation>
     </message>
     <message>
         <source>force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraftberechnungen</translation>
     </message>
     <message>
         <source>Measuring %1 runs of %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>Messe %1 Läufe zu je %2 s …</translation>
     </message>
     <message>
         <source>Running %1 at dt, dt/2, dt/4, dt/8 for %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 läuft mit dt, dt/2, dt/4, dt/8 für %2 s …</translation>
     </message>
     <message>
         <source>Could not measure: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Messung nicht möglich: %1</translation>
     </message>
     <message>
         <source>Cancelled after %1 runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach %1 Läufen abgebrochen.</translation>
     </message>
     <message>
         <source>Done: %1 runs against ias15 at dt/8. Each dot is one run; a steeper line is a higher order. Fitted orders: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fertig: %1 Läufe gegen ias15 bei dt/8. Jeder Punkt ist ein Lauf; eine steilere Linie bedeutet eine höhere Ordnung. Angepasste Ordnungen: %2.</translation>
     </message>
     <message>
         <source>%1 cannot run this scene: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann diese Szene nicht ausführen: %2</translation>
     </message>
     <message>
         <source>dt = %1 s: error %2</source>
-        <translation type="unfinished"></translation>
+        <translation>dt = %1 s: Fehler %2</translation>
     </message>
     <message>
         <source>%1: fitted order %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: angepasste Ordnung %2</translation>
     </message>
     <message>
         <source> (theory: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Theorie: %1)</translation>
     </message>
     <message>
         <source>cost: force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand: Kraftberechnungen</translation>
     </message>
     <message>
         <source>error, px</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler, px</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ArrowLegendView</name>
     <message>
         <source>An arrow this long stands for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein so langer Pfeil steht für %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTable</name>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Double-click a number to type a new one. Undo (Ctrl+Z) takes it back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelklicke auf eine Zahl, um eine neue einzugeben. Rückgängig (Ctrl+Z) nimmt es zurück.</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTableModel</name>
     <message>
         <source>world</source>
-        <translation type="unfinished"></translation>
+        <translation>Welt</translation>
     </message>
     <message>
         <source>Radius. A new radius keeps the density: twice as big is 8 times the mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Radius. Ein neuer Radius behält die Dichte bei: doppelt so groß heißt 8-fache Masse.</translation>
     </message>
     <message>
         <source>Mass, in the mass units of the lesson (a 10 px ball of density 1 has 4189). Independent of the size: a small ball can be heavy.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse, in den Masseneinheiten der Lektion (eine 10-px-Kugel mit Dichte 1 hat 4189). Unabhängig von der Größe: Eine kleine Kugel kann schwer sein.</translation>
     </message>
     <message>
         <source>Mass per volume of a sphere: 1 is the density of every ball a lesson does not give a mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse pro Volumen einer Kugel: 1 ist die Dichte jeder Kugel, der eine Lektion keine Masse gibt.</translation>
     </message>
     <message>
         <source>What a magnetic field acts on (1: like the 10 px reference ball).</source>
-        <translation type="unfinished"></translation>
+        <translation>Worauf ein Magnetfeld wirkt (1: wie die 10-px-Referenzkugel).</translation>
     </message>
     <message>
         <source>How much of its speed this ball keeps in a bounce: 0 stops it dead, 1 keeps it all. &quot;world&quot;: the scene&apos;s value. When two balls hit, the smaller value counts. Clear the cell to go back to the world&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viel ihres Tempos diese Kugel beim Aufprall behält: 0 stoppt sie ganz, 1 behält alles. „Welt“: der Wert der Szene. Stoßen zwei Kugeln zusammen, zählt der kleinere Wert. Leere die Zelle, um zum Wert der Welt zurückzukehren.</translation>
     </message>
     <message>
         <source>A pinned ball never moves: other balls bounce off it as off a ball too heavy to push.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine festgehaltene Kugel bewegt sich nie: Andere Kugeln prallen von ihr ab wie von einer Kugel, die zu schwer zum Schieben ist.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>x (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>x (%1)</translation>
     </message>
     <message>
         <source>y (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>y (%1)</translation>
     </message>
     <message>
         <source>vx (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vx (%1)</translation>
     </message>
     <message>
         <source>vy (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vy (%1)</translation>
     </message>
     <message>
         <source>r (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>r (%1)</translation>
     </message>
     <message>
         <source>mass (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse (%1)</translation>
     </message>
     <message>
         <source>mass</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse</translation>
     </message>
     <message>
         <source>density</source>
-        <translation type="unfinished"></translation>
+        <translation>Dichte</translation>
     </message>
     <message>
         <source>charge</source>
-        <translation type="unfinished"></translation>
+        <translation>Ladung</translation>
     </message>
     <message>
         <source>colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe</translation>
     </message>
     <message>
         <source>restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl</translation>
     </message>
     <message>
         <source>pinned</source>
-        <translation type="unfinished"></translation>
+        <translation>fest</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 festhalten</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 freigeben</translation>
     </message>
     <message>
         <source>Give ball %1 the world&apos;s restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 die Stoßzahl der Welt geben</translation>
     </message>
     <message>
         <source>colour: &quot;%1&quot; is not a colour; type a name like red or #e05050</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe: „%1“ ist keine Farbe; gib einen Namen wie red oder #e05050 ein</translation>
     </message>
     <message>
         <source>Colour of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe von Kugel %1</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine Zahl</translation>
     </message>
     <message>
         <source>Set %1 of ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von Kugel %2 setzen</translation>
     </message>
     <message>
         <source>restitution: %1 is outside %2; leave it empty for the world&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl: %1 liegt außerhalb von %2; lass das Feld leer für den Wert der Welt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::Canvas</name>
     <message>
         <source>Simulation stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulationsbühne</translation>
     </message>
     <message>
         <source>%1 at %2°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 unter %2°</translation>
     </message>
     <message>
         <source>%1°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1°</translation>
     </message>
     <message>
         <source>reference (the course&apos;s code) · energy %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenz (Code des Kurses) · Energie %1</translation>
     </message>
     <message>
         <source>your code stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code wurde angehalten: %1</translation>
     </message>
     <message>
         <source>your code departs at step %1: %2 balls, the reference has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code weicht ab bei Schritt %1: %2 Kugeln, die Referenz hat %3</translation>
     </message>
     <message>
         <source>your code departs at step %1 (ball %2, %3 off by %4) · energy %5</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code weicht ab bei Schritt %1 (Kugel %2, %3 um %4 daneben) · Energie %5</translation>
     </message>
     <message>
         <source>your code · agrees for %1 steps · energy %2</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code · stimmt seit %1 Schritten überein · Energie %2</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
     <message>
         <source>your run: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Lauf: %1</translation>
     </message>
     <message>
         <source>departs here, step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>weicht hier ab, Schritt %1</translation>
     </message>
     <message>
         <source>Paused at t = 0 · press Space to run</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausiert bei t = 0 · drücke die Leertaste zum Starten</translation>
     </message>
     <message>
         <source>Tools: press %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeuge: drücke %1</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>Set the velocity of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit von Kugel %1 setzen</translation>
     </message>
     <message>
         <source>Move ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 verschieben</translation>
     </message>
     <message>
         <source>Add a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel hinzufügen</translation>
     </message>
     <message>
         <source>Nothing to paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nichts einzufügen: %1</translation>
     </message>
     <message>
         <source>Paste a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel einfügen</translation>
     </message>
     <message>
         <source>Ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>Edit its numbers…</source>
-        <translation type="unfinished"></translation>
+        <translation>Zahlen bearbeiten …</translation>
     </message>
     <message>
         <source>Stop it (v = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten (v = 0)</translation>
     </message>
     <message>
         <source>Stop ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 anhalten</translation>
     </message>
     <message>
         <source>Pin</source>
-        <translation type="unfinished"></translation>
+        <translation>Festhalten</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 festhalten</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 freigeben</translation>
     </message>
     <message>
         <source>Duplicate</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplizieren</translation>
     </message>
     <message>
         <source>Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopieren</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Löschen</translation>
     </message>
     <message>
         <source>Follow it</source>
-        <translation type="unfinished"></translation>
+        <translation>Ihr folgen</translation>
     </message>
     <message>
         <source>Add a ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier eine Kugel hinzufügen</translation>
     </message>
     <message>
         <source>Paste the copied ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopierte Kugel hier einfügen</translation>
     </message>
     <message>
         <source>Zoom in here</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier vergrößern</translation>
     </message>
     <message>
         <source>Zoom out</source>
-        <translation type="unfinished"></translation>
+        <translation>Verkleinern</translation>
     </message>
     <message>
         <source>Fit the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Kasten einpassen</translation>
     </message>
     <message>
         <source>Fit all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Kugeln einpassen</translation>
     </message>
 </context>
 <context>
     <name>forcelab::CodeDock</name>
     <message>
         <source>Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Code</translation>
     </message>
     <message>
         <source>The simulation code of this stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Simulationscode dieser Stufe</translation>
     </message>
     <message>
         <source>C++</source>
-        <translation type="unfinished"></translation>
+        <translation>C++</translation>
     </message>
     <message>
         <source>The engine&apos;s own code (sim/)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der eigene Code der Engine (sim/)</translation>
     </message>
     <message>
         <source>JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>JavaScript</translation>
     </message>
     <message>
         <source>The code students write in the programming course (lessons/code/)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Code, den Schülerinnen und Schüler im Programmierkurs schreiben (lessons/code/)</translation>
     </message>
     <message>
         <source>&lt;p&gt;This stage runs no marked code.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Diese Stufe führt keinen markierten Code aus.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>, runs when %1 = %2</source>
-        <translation type="unfinished"></translation>
+        <translation>, läuft, wenn %1 = %2</translation>
     </message>
     <message>
         <source>&lt;p&gt;The code of this stage in JavaScript, as students write it. It runs beside the engine and moves the balls the same, to the last bit (test_script_reference).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Der Code dieser Stufe in JavaScript, so wie Schülerinnen und Schüler ihn schreiben. Er läuft neben der Engine und bewegt die Kugeln genauso, bis aufs letzte Bit (test_script_reference).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p class=&apos;missing&apos;&gt;Not written in JavaScript yet: %1.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p class=&apos;missing&apos;&gt;Noch nicht in JavaScript geschrieben: %1.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::EnergyBars</name>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potenziell</translation>
     </message>
     <message>
         <source>lost</source>
-        <translation type="unfinished"></translation>
+        <translation>verloren</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>Energy bars: kinetic, potential, lost and total energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiebalken: kinetische, potenzielle, verlorene und gesamte Energie jetzt</translation>
     </message>
     <message>
         <source>Energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie jetzt</translation>
     </message>
     <message>
         <source>Lost: energy taken out by drag, bumpy collisions and walls since the bars were shown or the lesson restarted. Energy put in (wind, your hand, an edit) counts as negative lost energy, so the total stays the same unless the computer&apos;s steps are inaccurate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Verloren: Energie, die seit dem Einblenden der Balken oder dem Neustart der Lektion durch Luftwiderstand, unelastische Stöße und Wände entzogen wurde. Zugeführte Energie (Wind, deine Hand, eine Änderung) zählt als negative verlorene Energie, daher bleibt die Summe gleich, außer die Schritte des Computers sind ungenau.</translation>
     </message>
     <message>
         <source>energy (%1%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie (%1%2)</translation>
     </message>
     <message>
         <source>not counted</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht gezählt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ForceEditorDock</name>
     <message>
         <source>Force editor</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraft-Editor</translation>
     </message>
     <message>
         <source>Write your own force law. Use x, y (px), vx, vy (px/s), m, r, q, the time t, the box W and H, pi, functions such as sqrt, sin, exp, and your constants.</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreibe dein eigenes Kraftgesetz. Verwende x, y (px), vx, vy (px/s), m, r, q, die Zeit t, den Kasten W und H, pi, Funktionen wie sqrt, sin, exp und deine Konstanten.</translation>
     </message>
     <message>
         <source>Custom force on</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Kraft an</translation>
     </message>
     <message>
         <source>the formulas give the force F (divided by m)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formeln ergeben die Kraft F (geteilt durch m)</translation>
     </message>
     <message>
         <source>the formulas give the acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>die Formeln ergeben die Beschleunigung a</translation>
     </message>
     <message>
         <source>What the formulas give</source>
-        <translation type="unfinished"></translation>
+        <translation>Was die Formeln ergeben</translation>
     </message>
     <message>
         <source>F_x =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_x =</translation>
     </message>
     <message>
         <source>The x part of the force (or acceleration)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der x-Anteil der Kraft (oder Beschleunigung)</translation>
     </message>
     <message>
         <source>F_y =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y =</translation>
     </message>
     <message>
         <source>The y part; y points down</source>
-        <translation type="unfinished"></translation>
+        <translation>Der y-Anteil; y zeigt nach unten</translation>
     </message>
     <message>
         <source>U =</source>
-        <translation type="unfinished"></translation>
+        <translation>U =</translation>
     </message>
     <message>
         <source>Optional: the potential energy of a conservative law, with F = −∇U</source>
-        <translation type="unfinished"></translation>
+        <translation>Optional: die potenzielle Energie eines konservativen Gesetzes, mit F = −∇U</translation>
     </message>
     <message>
         <source>&lt;b&gt;Constants&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Konstanten&lt;/b&gt;</translation>
     </message>
     <message>
         <source>name, e.g. k</source>
-        <translation type="unfinished"></translation>
+        <translation>Name, z. B. k</translation>
     </message>
     <message>
         <source>New constant&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>Name der neuen Konstante</translation>
     </message>
     <message>
         <source>Add constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante hinzufügen</translation>
     </message>
     <message>
         <source>Constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante %1</translation>
     </message>
     <message>
         <source>Add constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstante %1 hinzufügen</translation>
     </message>
     <message>
         <source>Custom force: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Kraft: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::InspectorDock</name>
     <message>
         <source>Inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>Inspektor</translation>
     </message>
     <message>
         <source>Click a ball to see its numbers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicke auf eine Kugel, um ihre Zahlen zu sehen.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>Position x</source>
-        <translation type="unfinished"></translation>
+        <translation>Position x</translation>
     </message>
     <message>
         <source>Velocity v</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v</translation>
     </message>
     <message>
         <source>Acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung a</translation>
     </message>
     <message>
         <source>Mass, radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse, Radius</translation>
     </message>
     <message>
         <source>Draw its trail</source>
-        <translation type="unfinished"></translation>
+        <translation>Spur zeichnen</translation>
     </message>
     <message>
         <source>#%1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>#%1 von %2</translation>
     </message>
     <message>
         <source>m = %1 %2, r = %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1 %2, r = %3 %4</translation>
     </message>
     <message>
         <source>m = %1, r = %2 px</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1, r = %2 px</translation>
     </message>
     <message>
         <source>Forces F = m a</source>
-        <translation type="unfinished"></translation>
+        <translation>Kräfte F = m a</translation>
     </message>
     <message>
         <source>no force acts</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kraft wirkt</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>in %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::LessonTextView</name>
     <message>
         <source>Open a web page?</source>
-        <translation type="unfinished"></translation>
+        <translation>Webseite öffnen?</translation>
     </message>
     <message>
         <source>The lesson links to
 %1
 
 Open it in your web browser?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion verweist auf
+%1
+
+In deinem Webbrowser öffnen?</translation>
     </message>
 </context>
 <context>
     <name>forcelab::LessonsDock</name>
     <message>
         <source>Lessons</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionen</translation>
     </message>
     <message>
         <source>Teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinweise für Lehrkräfte</translation>
     </message>
     <message>
         <source>Show the goal, expected answers and misconceptions under the lesson text</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziel, erwartete Antworten und Fehlvorstellungen unter dem Lektionstext zeigen</translation>
     </message>
     <message>
         <source>Part A · Motion and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil A · Bewegung und Wände</translation>
     </message>
     <message>
         <source>Part B · Forces</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil B · Kräfte</translation>
     </message>
     <message>
         <source>Part C · Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Teil C · Stöße</translation>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Stufe %1 von 29</translation>
     </message>
     <message>
         <source>Beyond the course · %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Über den Kurs hinaus · %1</translation>
     </message>
     <message>
         <source>Try this</source>
-        <translation type="unfinished"></translation>
+        <translation>Probier das aus</translation>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Für die Lehrkraft</translation>
     </message>
     <message>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Diese Lektion hat keine Hinweise für Lehrkräfte.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::MainWindow</name>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederholen</translation>
     </message>
     <message>
         <source>The computer could not keep up: simulated time was skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Computer kam nicht hinterher: Simulierte Zeit wurde übersprungen</translation>
     </message>
     <message>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Zeit</translation>
     </message>
     <message>
         <source>Simulated seconds per real second ([ slower, ] faster)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde ([ langsamer, ] schneller)</translation>
     </message>
     <message>
         <source>Frames drawn per second, and the time to draw one</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeichnete Bilder pro Sekunde und die Zeit für eines</translation>
     </message>
     <message>
         <source>Wall-clock time of the last simulation step</source>
-        <translation type="unfinished"></translation>
+        <translation>Echte Dauer des letzten Simulationsschritts</translation>
     </message>
     <message>
         <source>Number of balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzahl der Kugeln</translation>
     </message>
     <message>
         <source>Ball pairs tested for contact in the last step, and the contacts found</source>
-        <translation type="unfinished"></translation>
+        <translation>Im letzten Schritt auf Berührung geprüfte Kugelpaare und die gefundenen Berührungen</translation>
     </message>
     <message>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3</translation>
     </message>
     <message>
         <source>not a saved window geometry; using the default size</source>
-        <translation type="unfinished"></translation>
+        <translation>keine gespeicherte Fenstergeometrie; Standardgröße wird verwendet</translation>
     </message>
     <message>
         <source>not a saved layout of the docks; using the default layout</source>
-        <translation type="unfinished"></translation>
+        <translation>keine gespeicherte Anordnung der Leisten; Standardanordnung wird verwendet</translation>
     </message>
     <message>
         <source>%1 is not a folder; using the home folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist kein Ordner; der persönliche Ordner wird verwendet</translation>
     </message>
     <message>
         <source>not true or false; using the plain theme</source>
-        <translation type="unfinished"></translation>
+        <translation>weder true noch false; das normale Design wird verwendet</translation>
     </message>
     <message>
         <source>not a text size from %1 to %2; using the usual size</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Textgröße von %1 bis %2; die übliche Größe wird verwendet</translation>
     </message>
     <message>
         <source>%1: %2: %3; opened the first lesson instead</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3; stattdessen wurde die erste Lektion geöffnet</translation>
     </message>
     <message>
         <source>no built-in lessons were found</source>
-        <translation type="unfinished"></translation>
+        <translation>keine eingebauten Lektionen gefunden</translation>
     </message>
     <message>
         <source>ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab</translation>
     </message>
     <message>
         <source>%1 — ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — ForceLab</translation>
     </message>
     <message>
         <source>Already the slowest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Schon das langsamste Tempo, %1×</translation>
     </message>
     <message>
         <source>Already the fastest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Schon das schnellste Tempo, %1×</translation>
     </message>
     <message>
         <source>Speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo %1×</translation>
     </message>
     <message>
         <source>Cannot open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion kann nicht geöffnet werden</translation>
     </message>
     <message>
         <source>The lesson could not be opened; the running lesson goes on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion konnte nicht geöffnet werden; die laufende Lektion geht weiter.</translation>
     </message>
     <message numerus="yes">
         <source>… and %n more. Show Details… lists every problem.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>… und %n weiteres. „Details einblenden...“ listet jedes Problem auf.</numerusform>
+            <numerusform>… und %n weitere. „Details einblenden...“ listet jedes Problem auf.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>Text at %1% of its usual size (Ctrl+= larger, Ctrl+− smaller, Ctrl+0 usual)</source>
-        <translation type="unfinished"></translation>
+        <translation>Text bei %1 % der üblichen Größe (Ctrl+= größer, Ctrl+− kleiner, Ctrl+0 üblich)</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo %1×</translation>
     </message>
     <message>
         <source>%1 fps · draw %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fps · Zeichnen %2 ms</translation>
     </message>
     <message>
         <source>step %1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt %1 µs</translation>
     </message>
     <message>
         <source>1 ball</source>
-        <translation type="unfinished"></translation>
+        <translation>1 Kugel</translation>
     </message>
     <message>
         <source>%L1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 Kugeln</translation>
     </message>
     <message>
         <source>pairs tested %L1 · contacts %L2</source>
-        <translation type="unfinished"></translation>
+        <translation>geprüfte Paare %L1 · Berührungen %L2</translation>
     </message>
     <message>
         <source>&amp;Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pause</translation>
     </message>
     <message>
         <source>&amp;Play</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Start</translation>
     </message>
     <message>
         <source>Pause the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation anhalten (Space)</translation>
     </message>
     <message>
         <source>Run the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation starten (Space)</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>behind: %1 ms skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>im Rückstand: %1 ms übersprungen</translation>
     </message>
     <message>
         <source>About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Über ForceLab</translation>
     </message>
     <message>
         <source>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;A workbench for forces and collisions of balls in two dimensions.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;Eine Werkbank für Kräfte und Stöße von Kugeln in zwei Dimensionen.</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt zu&amp;rück</translation>
     </message>
     <message>
         <source>Pause and go back by one time step dt, to the world as it was (← or ,)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten und um einen Zeitschritt dt zurückgehen, zur Welt, wie sie war (← oder ,)</translation>
     </message>
     <message>
         <source>Timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitleiste</translation>
     </message>
     <message>
         <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schritt</translation>
     </message>
     <message>
         <source>Pause and advance by one time step dt (→ or .)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anhalten und um einen Zeitschritt dt weitergehen (→ oder .)</translation>
     </message>
     <message>
         <source>&amp;Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
         <source>Start the lesson again with its own values (R)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion mit ihren eigenen Werten neu starten (R)</translation>
     </message>
     <message>
         <source>S&amp;lower</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Langsamer</translation>
     </message>
     <message>
         <source>Half the speed: slow motion down to 1/16× ([)</source>
-        <translation type="unfinished"></translation>
+        <translation>Halbes Tempo: Zeitlupe bis zu 1/16× ([)</translation>
     </message>
     <message>
         <source>&amp;Faster</source>
-        <translation type="unfinished"></translation>
+        <translation>Sc&amp;hneller</translation>
     </message>
     <message>
         <source>Double the speed, up to %1× (])</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppeltes Tempo, bis zu %1× (])</translation>
     </message>
     <message>
         <source>&amp;Add Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;hinzufügen</translation>
     </message>
     <message>
         <source>Add a ball in the middle of the box (B). Right-click the stage to add one where you click.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Kugel in der Mitte des Kastens hinzufügen (B). Rechtsklicke auf die Bühne, um eine dort hinzuzufügen, wo du klickst.</translation>
     </message>
     <message>
         <source>&amp;Delete Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;löschen</translation>
     </message>
     <message>
         <source>D&amp;uplicate Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel d&amp;uplizieren</translation>
     </message>
     <message>
         <source>&amp;Copy Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel &amp;kopieren</translation>
     </message>
     <message>
         <source>&amp;Paste Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel ei&amp;nfügen</translation>
     </message>
     <message>
         <source>Zoom &amp;In</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vergrößern</translation>
     </message>
     <message>
         <source>Zoom in on the middle (+); the mouse wheel zooms in on the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Zur Mitte hin vergrößern (+); das Mausrad vergrößert zum Mauszeiger hin</translation>
     </message>
     <message>
         <source>Zoom &amp;Out</source>
-        <translation type="unfinished"></translation>
+        <translation>Verklei&amp;nern</translation>
     </message>
     <message>
         <source>Zoom out (−), to see balls that left the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Verkleinern (−), um Kugeln zu sehen, die den Kasten verlassen haben</translation>
     </message>
     <message>
         <source>Fit the &amp;Box</source>
-        <translation type="unfinished"></translation>
+        <translation>Kasten ein&amp;passen</translation>
     </message>
     <message>
         <source>Show the whole box, as large as it fits (0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Den ganzen Kasten zeigen, so groß wie er passt (0)</translation>
     </message>
     <message>
         <source>Fit &amp;All Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle K&amp;ugeln einpassen</translation>
     </message>
     <message>
         <source>Zoom so that every ball is seen, in the box or out of it (A)</source>
-        <translation type="unfinished"></translation>
+        <translation>So zoomen, dass jede Kugel zu sehen ist, im Kasten oder außerhalb (A)</translation>
     </message>
     <message>
         <source>&amp;Follow the Selected Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Der ausgewählten Kugel &amp;folgen</translation>
     </message>
     <message>
         <source>Keep the selected ball in the middle of the view as it moves (F)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ausgewählte Kugel in der Mitte der Ansicht halten, während sie sich bewegt (F)</translation>
     </message>
     <message>
         <source>&amp;Open Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion &amp;öffnen …</translation>
     </message>
     <message>
         <source>Open</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen</translation>
     </message>
     <message>
         <source>Open a lesson file from disk</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Lektionsdatei vom Datenträger öffnen</translation>
     </message>
     <message>
         <source>&amp;Save Scene as Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene als Lektion &amp;speichern …</translation>
     </message>
     <message>
         <source>Save</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern</translation>
     </message>
     <message>
         <source>Save the balls as they are now and the live settings as a lesson file</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kugeln, wie sie jetzt sind, und die aktuellen Einstellungen als Lektionsdatei speichern</translation>
     </message>
     <message>
         <source>Screens&amp;hot…</source>
-        <translation type="unfinished"></translation>
+        <translation>Bildschirm&amp;foto …</translation>
     </message>
     <message>
         <source>Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild</translation>
     </message>
     <message>
         <source>Save a picture of the canvas as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Bild der Zeichenfläche als PNG speichern</translation>
     </message>
     <message>
         <source>Re&amp;cord Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn &amp;aufzeichnen</translation>
     </message>
     <message>
         <source>Record</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufzeichnen</translation>
     </message>
     <message>
         <source>Record the path of the selected ball (or of all balls when none is selected)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Bahn der ausgewählten Kugel aufzeichnen (oder aller Kugeln, wenn keine ausgewählt ist)</translation>
     </message>
     <message>
         <source>Recording ball #%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichne Kugel #%1 auf</translation>
     </message>
     <message>
         <source>Recording every ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichne jede Kugel auf</translation>
     </message>
     <message>
         <source>&amp;Export Trajectory…</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn &amp;exportieren …</translation>
     </message>
     <message>
         <source>CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV</translation>
     </message>
     <message>
         <source>Write the recorded trajectory as CSV (time, ball, position, velocity)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aufgezeichnete Bahn als CSV schreiben (Zeit, Kugel, Position, Geschwindigkeit)</translation>
     </message>
     <message>
         <source>Export Teacher &amp;Handbook…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Handbuch für Lehrkräfte exportieren …</translation>
     </message>
     <message>
         <source>Write every lesson with its teacher notes as one printable HTML page</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Lektion mit ihren Hinweisen für Lehrkräfte als eine druckbare HTML-Seite schreiben</translation>
     </message>
     <message>
         <source>&amp;Previous Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vorherige Lektion</translation>
     </message>
     <message>
         <source>&amp;Next Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nächste Lektion</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beenden</translation>
     </message>
     <message>
         <source>&amp;Stage View (Projector)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bühnenansicht (Beamer)</translation>
     </message>
     <message>
         <source>The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Simulation füllt den Bildschirm, mit großen Bedienelementen daneben, für einen Beamer (F11; Escape beendet)</translation>
     </message>
     <message>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Bühne</translation>
     </message>
     <message>
         <source>&amp;Larger Text</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Größerer Text</translation>
     </message>
     <message>
         <source>Larger text in every panel and on the stage (Ctrl+=)</source>
-        <translation type="unfinished"></translation>
+        <translation>Größerer Text in jeder Leiste und auf der Bühne (Ctrl+=)</translation>
     </message>
     <message>
         <source>S&amp;maller Text</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kleinerer Text</translation>
     </message>
     <message>
         <source>Smaller text in every panel and on the stage (Ctrl+−)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleinerer Text in jeder Leiste und auf der Bühne (Ctrl+−)</translation>
     </message>
     <message>
         <source>&amp;Usual Text Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Übliche &amp;Textgröße</translation>
     </message>
     <message>
         <source>P&amp;rojector Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Bea&amp;mer-Design</translation>
     </message>
     <message>
         <source>White box, dark thick outlines, colour-blind-safe balls and larger text everywhere (always on in the stage view)</source>
-        <translation type="unfinished"></translation>
+        <translation>Weißer Kasten, dunkle dicke Umrisse, farbenblind-sichere Kugeln und überall größerer Text (in der Bühnenansicht immer an)</translation>
     </message>
     <message>
         <source>Picture at &amp;Double Size…</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in &amp;doppelter Größe …</translation>
     </message>
     <message>
         <source>Save the stage at twice the screen&apos;s resolution, for print</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Bühne in doppelter Bildschirmauflösung speichern, für den Druck</translation>
     </message>
     <message>
         <source>&amp;About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Ü&amp;ber ForceLab</translation>
     </message>
     <message>
         <source>&amp;Pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pixel</translation>
     </message>
     <message>
         <source>Show px, px/s and mass units, as the program computes them</source>
-        <translation type="unfinished"></translation>
+        <translation>px, px/s und Masseneinheiten zeigen, wie das Programm sie berechnet</translation>
     </message>
     <message>
         <source>&amp;SI (m, kg, N, J)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;SI (m, kg, N, J)</translation>
     </message>
     <message>
         <source>Show metres, kilograms, newtons and joules at the scale set below</source>
-        <translation type="unfinished"></translation>
+        <translation>Meter, Kilogramm, Newton und Joule im unten eingestellten Maßstab zeigen</translation>
     </message>
     <message>
         <source>How many pixels make a metre, and how many kilograms a mass unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele Pixel einen Meter ergeben und wie viele Kilogramm eine Masseneinheit</translation>
     </message>
     <message>
         <source>SI Scale</source>
-        <translation type="unfinished"></translation>
+        <translation>SI-Maßstab</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> px</translation>
     </message>
     <message>
         <source> kg</source>
-        <translation type="unfinished"></translation>
+        <translation> kg</translation>
     </message>
     <message>
         <source>1 m is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 m sind</translation>
     </message>
     <message>
         <source>1 mass unit is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 Masseneinheit sind</translation>
     </message>
     <message>
         <source>SI &amp;Scale: %1 px = 1 m, 1 mass unit = %2 kg…</source>
-        <translation type="unfinished"></translation>
+        <translation>SI-&amp;Maßstab: %1 px = 1 m, 1 Masseneinheit = %2 kg …</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simulation</translation>
     </message>
     <message>
         <source>&amp;Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lektion</translation>
     </message>
     <message>
         <source>&amp;Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
         <source>&amp;Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Genauigkeit</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>&amp;Units</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Einheiten</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulation</translation>
     </message>
     <message>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzeigen</translation>
     </message>
     <message>
         <source>Show: what the stage draws</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzeigen: was die Bühne zeichnet</translation>
     </message>
     <message>
         <source>File</source>
-        <translation type="unfinished"></translation>
+        <translation>Datei</translation>
     </message>
     <message>
         <source>Open Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion öffnen</translation>
     </message>
     <message>
         <source>Lesson files (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionsdateien (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Lesson not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektion nicht gespeichert: %1</translation>
     </message>
     <message numerus="yes">
         <source>Saved %n ball(s) and the settings to %1 as “%2”. %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Kugel und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform>
+            <numerusform>%n Kugeln und die Einstellungen in %1 als „%2“ gespeichert. %3</numerusform>
         </translation>
     </message>
     <message>
         <source>Picture not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild nicht gespeichert: %1</translation>
     </message>
     <message>
         <source>Saved the picture to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in %1 gespeichert</translation>
     </message>
     <message>
         <source>Save Picture at Double Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild in doppelter Größe speichern</translation>
     </message>
     <message>
         <source>Save Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild speichern</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
         <source>Export Teacher Handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>Handbuch für Lehrkräfte exportieren</translation>
     </message>
     <message>
         <source>HTML (*.html)</source>
-        <translation type="unfinished"></translation>
+        <translation>HTML (*.html)</translation>
     </message>
     <message>
         <source>%1
 The handbook was not written; an old file there is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.</translation>
     </message>
     <message>
         <source>Handbook written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Handbuch in %1 geschrieben</translation>
     </message>
     <message>
         <source>Nothing recorded yet: switch on Record Trajectory (Ctrl+Shift+R) first</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch nichts aufgezeichnet: Schalte zuerst „Bahn aufzeichnen“ (Ctrl+Shift+R) ein</translation>
     </message>
     <message>
         <source>Export Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahn exportieren</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-Dateien (*.csv)</translation>
     </message>
     <message>
         <source>Wrote %L1 rows to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 Zeilen in %2 geschrieben</translation>
     </message>
     <message>
         <source>&amp;Describe the Scene</source>
@@ -1847,1260 +1851,1260 @@ The handbook was not written; an old file there is unchanged.</source>
     <name>forcelab::NumberControl</name>
     <message>
         <source>%1, slider</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">%1, Schieberegler</translation>
     </message>
     <message>
         <source>%1, value</source>
-        <translation type="unfinished"></translation>
+        <translation type="unfinished">%1, Wert</translation>
     </message>
 </context>
 <context>
     <name>forcelab::OverlayActions</name>
     <message>
         <source>&amp;Show</source>
-        <translation type="unfinished"></translation>
+        <translation>An&amp;zeigen</translation>
     </message>
     <message>
         <source>&amp;Velocity arrows</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Geschwindigkeitspfeile</translation>
     </message>
     <message>
         <source>&amp;Acceleration arrows (a = F/m)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beschleunigungspfeile (a = F/m)</translation>
     </message>
     <message>
         <source>&amp;Force arrows (net force F = m a)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kraftpfeile (resultierende Kraft F = m a)</translation>
     </message>
     <message>
         <source>Forces &amp;by source (one arrow per force)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kräfte nach &amp;Ursache (ein Pfeil pro Kraft)</translation>
     </message>
     <message>
         <source>&amp;Paths</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Spuren</translation>
     </message>
     <message>
         <source>&amp;Centre of mass and its path</source>
-        <translation type="unfinished"></translation>
+        <translation>S&amp;chwerpunkt und seine Spur</translation>
     </message>
     <message>
         <source>M&amp;omenta diagram (p = m v, tip to tail)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Impulsdiagramm (p = m v, Spitze an Ende)</translation>
     </message>
     <message>
         <source>Tops of the flights, with their &amp;heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Scheitelpunkte der Flüge, mit ihren &amp;Höhen</translation>
     </message>
     <message>
         <source>&amp;Readout of the selected ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Werte der ausgewählten Kugel</translation>
     </message>
     <message>
         <source>&amp;Totals: energy and momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Summen: Energie und Im&amp;puls</translation>
     </message>
     <message>
         <source>&amp;Mark touching balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Sich berührende Kugeln &amp;markieren</translation>
     </message>
     <message>
         <source>&amp;Grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Gitte&amp;r</translation>
     </message>
     <message>
         <source>&amp;Markers (centres, anchors, homes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Markierunge&amp;n (Mittelpunkte, Anker, Ruhelagen)</translation>
     </message>
     <message>
         <source>Arrow &amp;length</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeil&amp;länge</translation>
     </message>
     <message>
         <source>&amp;Auto: readable (about 45 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Automatisch: lesbar (etwa 45 px)</translation>
     </message>
     <message>
         <source>The lesson&apos;s scale (×1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Maßstab der Lektion (×1)</translation>
     </message>
     <message>
         <source>×%1 the lesson&apos;s scale</source>
-        <translation type="unfinished"></translation>
+        <translation>×%1 Maßstab der Lektion</translation>
     </message>
     <message>
         <source>Arrow scale ×&amp;2</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab ×&amp;2</translation>
     </message>
     <message>
         <source>Arrow scale ÷2</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab ÷2</translation>
     </message>
     <message>
         <source>Arrow scale &amp;from now</source>
-        <translation type="unfinished"></translation>
+        <translation>Pfeilmaßstab a&amp;b jetzt</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ParameterPanel</name>
     <message>
         <source>Show all parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Parameter zeigen</translation>
     </message>
     <message>
         <source>Besides the lesson&apos;s own controls, show every setting of the world</source>
-        <translation type="unfinished"></translation>
+        <translation>Neben den Reglern der Lektion jede Einstellung der Welt zeigen</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwerkraft</translation>
     </message>
     <message>
         <source>Box and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kasten und Wände</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation>Luftwiderstand</translation>
     </message>
     <message>
         <source>Wind</source>
-        <translation type="unfinished"></translation>
+        <translation>Wind</translation>
     </message>
     <message>
         <source>Random acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallsbeschleunigung</translation>
     </message>
     <message>
         <source>Point force</source>
-        <translation type="unfinished"></translation>
+        <translation>Punktkraft</translation>
     </message>
     <message>
         <source>Spring</source>
-        <translation type="unfinished"></translation>
+        <translation>Feder</translation>
     </message>
     <message>
         <source>Gravity between balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravitation zwischen Kugeln</translation>
     </message>
     <message>
         <source>Homing</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückholkraft</translation>
     </message>
     <message>
         <source>Pointer force</source>
-        <translation type="unfinished"></translation>
+        <translation>Mauszeiger-Kraft</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempolimit</translation>
     </message>
     <message>
         <source>Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Stöße</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message numerus="yes">
         <source>%n more setting(s) under &quot;Show all parameters&quot;.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n weitere Einstellung unter „Alle Parameter zeigen“.</numerusform>
+            <numerusform>%n weitere Einstellungen unter „Alle Parameter zeigen“.</numerusform>
         </translation>
     </message>
     <message>
         <source>Change %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ändern</translation>
     </message>
     <message>
         <source>Tick to switch %1 on</source>
-        <translation type="unfinished"></translation>
+        <translation>Ankreuzen, um %1 einzuschalten</translation>
     </message>
     <message>
         <source>%1 to %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bis %2%3</translation>
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished"></translation>
+        <translation>links</translation>
     </message>
     <message>
         <source>right</source>
-        <translation type="unfinished"></translation>
+        <translation>rechts</translation>
     </message>
     <message>
         <source>top</source>
-        <translation type="unfinished"></translation>
+        <translation>oben</translation>
     </message>
     <message>
         <source>bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>unten</translation>
     </message>
     <message>
         <source>Walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände</translation>
     </message>
     <message>
         <source>A wall that is not ticked is open</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine nicht angekreuzte Wand ist offen</translation>
     </message>
     <message>
         <source>time.seed: &quot;%1&quot; is not a whole number from 0 to 18446744073709551615</source>
-        <translation type="unfinished"></translation>
+        <translation>time.seed: „%1“ ist keine ganze Zahl von 0 bis 18446744073709551615</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert</translation>
     </message>
     <message>
         <source>Random numbers (wind, random acceleration) start from this seed when the balls are placed again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallszahlen (Wind, Zufallsbeschleunigung) beginnen bei diesem Startwert, wenn die Kugeln neu platziert werden</translation>
     </message>
     <message numerus="yes">
         <source>Place %n random ball(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Zufallskugel platzieren</numerusform>
+            <numerusform>%n Zufallskugeln platzieren</numerusform>
         </translation>
     </message>
     <message>
         <source>Place random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln platzieren</translation>
     </message>
     <message>
         <source>Random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln</translation>
     </message>
     <message>
         <source>How many balls are placed at random (besides the lesson&apos;s own); changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie viele Kugeln zufällig platziert werden (neben denen der Lektion); eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at least this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln starten mit mindestens diesem Tempo; eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at most this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln starten mit höchstens diesem Tempo; eine Änderung startet neu</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln ganz innen platzieren</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln teilweise außen starten lassen</translation>
     </message>
     <message>
         <source>Start fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganz innen starten</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall (stage 4&apos;s bug). Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus: Der Mittelpunkt einer Kugel darf überall im Kasten liegen, sie kann also teilweise außerhalb einer Wand starten (der Fehler aus Stufe 4). Eine Änderung platziert die Kugeln neu</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo</translation>
     </message>
     <message>
         <source>Simulated seconds per real second: below 1 is slow motion (%1× to %2×)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Sekunden pro echter Sekunde: unter 1 ist Zeitlupe (%1× bis %2×)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PlotsDock</name>
     <message>
         <source>Plots</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme</translation>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potenziell</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>|p|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p|</translation>
     </message>
     <message>
         <source>p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>p_x</translation>
     </message>
     <message>
         <source>p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>p_y</translation>
     </message>
     <message>
         <source>one step</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Schritt</translation>
     </message>
     <message>
         <source>Plots of energy, momentum and step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme von Energie, Impuls und Schrittaufwand</translation>
     </message>
     <message>
         <source>Energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie</translation>
     </message>
     <message>
         <source>Energy bars</source>
-        <translation type="unfinished"></translation>
+        <translation>Energiebalken</translation>
     </message>
     <message>
         <source>Graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Graph</translation>
     </message>
     <message>
         <source>Momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls</translation>
     </message>
     <message>
         <source>Cost of a step</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufwand eines Schritts</translation>
     </message>
     <message>
         <source>Step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Schrittaufwand</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>Momentum (×10¹² mass·px²/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls (×10¹² Masse·px²/s²)</translation>
     </message>
     <message>
         <source>Speeds</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeiten</translation>
     </message>
     <message>
         <source>Computer time per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechenzeit pro Schritt</translation>
     </message>
     <message>
         <source>µs</source>
-        <translation type="unfinished"></translation>
+        <translation>µs</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PredictDock</name>
     <message>
         <source>Predict</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorhersage</translation>
     </message>
     <message>
         <source>Your prediction</source>
-        <translation type="unfinished"></translation>
+        <translation>Deine Vorhersage</translation>
     </message>
     <message>
         <source>your guess</source>
-        <translation type="unfinished"></translation>
+        <translation>deine Schätzung</translation>
     </message>
     <message>
         <source>Lock in and run</source>
-        <translation type="unfinished"></translation>
+        <translation>Festlegen und starten</translation>
     </message>
     <message>
         <source>Show the answer now</source>
-        <translation type="unfinished"></translation>
+        <translation>Antwort jetzt zeigen</translation>
     </message>
     <message>
         <source>Next question</source>
-        <translation type="unfinished"></translation>
+        <translation>Nächste Frage</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>This lesson asks no question before it runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Lektion stellt keine Frage, bevor sie läuft.</translation>
     </message>
     <message>
         <source>Make your prediction while the lesson waits at t = 0, then run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mach deine Vorhersage, während die Lektion bei t = 0 wartet, und starte sie dann.</translation>
     </message>
     <message>
         <source>Type a number first (for example 200).</source>
-        <translation type="unfinished"></translation>
+        <translation>Gib zuerst eine Zahl ein (zum Beispiel 200).</translation>
     </message>
     <message>
         <source>Pick an answer first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wähle zuerst eine Antwort.</translation>
     </message>
     <message>
         <source>Still stopping the last measurement; try again in a moment.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die letzte Messung wird noch beendet; versuch es gleich noch einmal.</translation>
     </message>
     <message>
         <source>Locked in. Working out the answer…</source>
-        <translation type="unfinished"></translation>
+        <translation>Festgelegt. Die Antwort wird ermittelt …</translation>
     </message>
     <message>
         <source>Cancelled. Change your answer or lock it in again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgebrochen. Ändere deine Antwort oder lege sie erneut fest.</translation>
     </message>
     <message>
         <source>Locked in. Watch: the answer comes at t = %1 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Festgelegt. Pass auf: Die Antwort kommt bei t = %1 s.</translation>
     </message>
     <message>
         <source>It could not be measured in this run (the lesson&apos;s sentence “%1”). Did a setting change it?</source>
-        <translation type="unfinished"></translation>
+        <translation>Es ließ sich in diesem Lauf nicht messen (der Satz der Lektion „%1“). Hat eine Einstellung es verändert?</translation>
     </message>
     <message>
         <source>You chose &lt;b&gt;%1&lt;/b&gt;. Measured: &lt;b&gt;%2 %3&lt;/b&gt;, so the answer is &lt;b&gt;%4&lt;/b&gt;. %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Du hast &lt;b&gt;%1&lt;/b&gt; gewählt. Gemessen: &lt;b&gt;%2 %3&lt;/b&gt;, also ist die Antwort &lt;b&gt;%4&lt;/b&gt;. %5</translation>
     </message>
     <message>
         <source>Well predicted!</source>
-        <translation type="unfinished"></translation>
+        <translation>Gut vorhergesagt!</translation>
     </message>
     <message>
         <source>Why was it different?</source>
-        <translation type="unfinished"></translation>
+        <translation>Warum war es anders?</translation>
     </message>
     <message>
         <source> (%1%)</source>
-        <translation type="unfinished"></translation>
+        <translation> (%1 %)</translation>
     </message>
     <message>
         <source>You said &lt;b&gt;%1 %2&lt;/b&gt;. Measured: &lt;b&gt;%3 %2&lt;/b&gt;. You were %4 %2 off%5.</source>
-        <translation type="unfinished"></translation>
+        <translation>Du hast &lt;b&gt;%1 %2&lt;/b&gt; gesagt. Gemessen: &lt;b&gt;%3 %2&lt;/b&gt;. Du lagst %4 %2 daneben%5.</translation>
     </message>
     <message>
         <source>&lt;br&gt;&lt;small&gt;The run measured what the lesson says: “%1”.&lt;/small&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;br&gt;&lt;small&gt;Der Lauf hat gemessen, was die Lektion sagt: „%1“.&lt;/small&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::QuantityGraph</name>
     <message>
         <source>x position</source>
-        <translation type="unfinished"></translation>
+        <translation>x-Position</translation>
     </message>
     <message>
         <source>y position</source>
-        <translation type="unfinished"></translation>
+        <translation>y-Position</translation>
     </message>
     <message>
         <source>velocity v_x</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v_x</translation>
     </message>
     <message>
         <source>velocity v_y</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit v_y</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo</translation>
     </message>
     <message>
         <source>kinetic energy</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetische Energie</translation>
     </message>
     <message>
         <source>potential energy</source>
-        <translation type="unfinished"></translation>
+        <translation>potenzielle Energie</translation>
     </message>
     <message>
         <source>total energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Gesamtenergie</translation>
     </message>
     <message>
         <source>momentum p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls p_x</translation>
     </message>
     <message>
         <source>momentum p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls p_y</translation>
     </message>
     <message>
         <source>Quantity to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Darzustellende Größe</translation>
     </message>
     <message>
         <source>Ball to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Darzustellende Kugel</translation>
     </message>
     <message>
         <source>of</source>
-        <translation type="unfinished"></translation>
+        <translation>von</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>gemessen</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>alle Kugeln</translation>
     </message>
     <message>
         <source>ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>theory: E₀, nothing takes energy away</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: E₀, nichts entzieht Energie</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: x₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: x₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: y₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: y₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: v₀ + gt</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: v₀ + gt</translation>
     </message>
     <message>
         <source>theory: v₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: v₀, konstant</translation>
     </message>
     <message>
         <source>theory: |v₀ + gt|</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: |v₀ + gt|</translation>
     </message>
     <message>
         <source>theory: |v₀|, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: |v₀|, konstant</translation>
     </message>
     <message>
         <source>theory: ½m|v₀ + gt|²</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: ½m|v₀ + gt|²</translation>
     </message>
     <message>
         <source>theory: ½m|v₀|², constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: ½m|v₀|², konstant</translation>
     </message>
     <message>
         <source>theory: mgh, h of the flight</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: mgh, h der Flugbahn</translation>
     </message>
     <message>
         <source>theory: 0, no gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: 0, keine Schwerkraft</translation>
     </message>
     <message>
         <source>theory: E₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: E₀, konstant</translation>
     </message>
     <message>
         <source>theory: m(v₀ + gt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: m(v₀ + gt)</translation>
     </message>
     <message>
         <source>theory: mv₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Theorie: mv₀, konstant</translation>
     </message>
     <message>
         <source>%1 of %2 (%3%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 von %2 (%3%4)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SaveLessonDialog</name>
     <message>
         <source>Save Scene as Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene als Lektion speichern</translation>
     </message>
     <message>
         <source>The scene is saved as a new lesson with your title and text. Of the claims and questions of “%1”, only those that still hold in this scene are kept; the others are listed after saving.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Szene wird als neue Lektion mit deinem Titel und Text gespeichert. Von den Aussagen und Fragen aus „%1“ bleiben nur die erhalten, die in dieser Szene noch gelten; die anderen werden nach dem Speichern aufgelistet.</translation>
     </message>
     <message>
         <source>Plain text; an empty line starts a new paragraph.</source>
-        <translation type="unfinished"></translation>
+        <translation>Einfacher Text; eine Leerzeile beginnt einen neuen Absatz.</translation>
     </message>
     <message>
         <source>&amp;Keep the teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hinweise für Lehrkräfte behalten</translation>
     </message>
     <message>
         <source>The goal, the minutes and the misconceptions. The answers to the challenges are never kept: the new lesson has no challenges.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Ziel, die Minuten und die Fehlvorstellungen. Die Antworten zu den Aufgaben werden nie übernommen: Die neue Lektion hat keine Aufgaben.</translation>
     </message>
     <message>
         <source>C&amp;hoose…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wählen …</translation>
     </message>
     <message>
         <source>&amp;Title:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Titel:</translation>
     </message>
     <message>
         <source>Te&amp;xt:</source>
-        <translation type="unfinished"></translation>
+        <translation>Te&amp;xt:</translation>
     </message>
     <message>
         <source>&amp;File:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei:</translation>
     </message>
     <message>
         <source>Lesson files (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lektionsdateien (*.json)</translation>
     </message>
     <message>
         <source>The lesson needs a title.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lektion braucht einen Titel.</translation>
     </message>
     <message>
         <source>“%1” has a number or a comparison (“%2”) that nothing measures on this scene, and a lesson must not say what it does not check. Write it without, or add a claim to the file later.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ enthält eine Zahl oder einen Vergleich („%2“), den in dieser Szene nichts misst, und eine Lektion darf nichts behaupten, was sie nicht prüft. Schreib es ohne, oder füge später eine Aussage in die Datei ein.</translation>
     </message>
     <message>
         <source>Choose the file to save to.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wähle die Datei zum Speichern.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SettingsEditor</name>
     <message>
         <source>Random balls from %1 to %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallskugeln von %1 bis %2 px/s</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>mass: %1 is outside %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Masse: %1 liegt außerhalb von %2</translation>
     </message>
     <message>
         <source>Not placed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht platziert: %1</translation>
     </message>
     <message>
         <source>Moved to (%1, %2) px, touching, so it does not overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>Nach (%1, %2) px verschoben, berührend, damit sie nicht überlappt</translation>
     </message>
     <message>
         <source>Not added: the world holds at most %1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht hinzugefügt: Die Welt fasst höchstens %1 Kugeln</translation>
     </message>
     <message>
         <source>Delete ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 löschen</translation>
     </message>
     <message>
         <source>Duplicate ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 duplizieren</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SimulationController</name>
     <message>
         <source>%1 pane: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Bereich %1: %2</translation>
     </message>
     <message>
         <source>your code</source>
-        <translation type="unfinished"></translation>
+        <translation>dein Code</translation>
     </message>
     <message>
         <source>spawn.count: %1 listed + %2 random balls is more than the limit of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>spawn.count: %1 aufgeführte + %2 Zufallskugeln sind mehr als die Grenze von %3</translation>
     </message>
     <message>
         <source>time scale: %1 is outside %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitmaßstab: %1 liegt außerhalb von %2 bis %3</translation>
     </message>
     <message>
         <source>ghost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Geist: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SpeedHistogram</name>
     <message>
         <source>Histogram of the balls&apos; speeds with the Maxwell–Boltzmann curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Histogramm der Kugeltempos mit der Maxwell-Boltzmann-Kurve</translation>
     </message>
     <message>
         <source>balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Maxwell–Boltzmann (2D), same energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Maxwell-Boltzmann (2D), gleiche Energie</translation>
     </message>
     <message>
         <source>speed (px/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo (px/s)</translation>
     </message>
     <message>
         <source>speed (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo (%1)</translation>
     </message>
     <message>
         <source>%1balls per %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1Kugeln pro %2 %3</translation>
     </message>
     <message>
         <source>Speeds of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempos von %1</translation>
     </message>
     <message>
         <source>ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageSliders</name>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Links</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechts</translation>
     </message>
     <message>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>Oben</translation>
     </message>
     <message>
         <source>Bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>Unten</translation>
     </message>
     <message>
         <source>A wall whose button is not pressed is open: a ball leaves through it</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand, deren Knopf nicht gedrückt ist, ist offen: Eine Kugel verlässt den Kasten durch sie</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall. Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus: Der Mittelpunkt einer Kugel darf überall im Kasten liegen, sie kann also teilweise außerhalb einer Wand starten. Eine Änderung platziert die Kugeln neu</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln ganz innen platzieren</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln teilweise außen starten lassen</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel</translation>
     </message>
     <message>
         <source>Walls: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Wände: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keine</translation>
     </message>
     <message>
         <source>Slowest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Langsamste Zufallskugel: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Fastest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Schnellste Zufallskugel: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Switch off</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausschalten</translation>
     </message>
     <message>
         <source>Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>Einschalten</translation>
     </message>
     <message>
         <source>Start fully inside: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Ganz innen starten: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>an</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>aus</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageToolTitle</name>
     <message>
         <source>Close (the tool&apos;s key again)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen (erneut die Taste des Werkzeugs)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageView</name>
     <message>
         <source>Sliders</source>
-        <translation type="unfinished"></translation>
+        <translation>Regler</translation>
     </message>
     <message>
         <source>Show the lesson&apos;s sliders under the box in the stage view (S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Regler der Lektion in der Bühnenansicht unter dem Kasten zeigen (S)</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugeln</translation>
     </message>
     <message>
         <source>Show every ball&apos;s numbers under the box, to type new ones (T)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zahlen jeder Kugel unter dem Kasten zeigen, um neue einzugeben (T)</translation>
     </message>
     <message>
         <source>&lt;b&gt;Stopped:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Angehalten:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>t = %1 s   %2× speed</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s   %2× Tempo</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StepApartDock</name>
     <message>
         <source>One Step Apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt zerlegt</translation>
     </message>
     <message>
         <source>all</source>
-        <translation type="unfinished"></translation>
+        <translation>alle</translation>
     </message>
     <message>
         <source>Sub-step shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigter Teilschritt</translation>
     </message>
     <message>
         <source>Sub-step shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigter Teilschritt:</translation>
     </message>
     <message>
         <source>◀ Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Schritt zurück</translation>
     </message>
     <message>
         <source>Step ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt ▶</translation>
     </message>
     <message>
         <source>Pause to take a step apart: it is worked out for one step at a time, not for every frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>Halte an, um einen Schritt zu zerlegen: Er wird jeweils für einen Schritt berechnet, nicht für jedes Bild.</translation>
     </message>
     <message>
         <source>There is no ball to follow.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt keine Kugel zum Verfolgen.</translation>
     </message>
     <message>
         <source>Sub-step %1 of %2: h = %3 s, starting at</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilschritt %1 von %2: h = %3 s, beginnend bei</translation>
     </message>
     <message>
         <source>The step starts: h = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Schritt beginnt: h = %1 s</translation>
     </message>
     <message>
         <source>Force: %1 adds its acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraft: %1 addiert ihre Beschleunigung</translation>
     </message>
     <message>
         <source>its own part: (%1, %2) px/s²</source>
-        <translation type="unfinished"></translation>
+        <translation>ihr eigener Anteil: (%1, %2) px/s²</translation>
     </message>
     <message>
         <source>Acceleration: all the forces added up</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung: alle Kräfte zusammengezählt</translation>
     </message>
     <message>
         <source>Acceleration k%1, at a trial state (Runge-Kutta)</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung k%1, in einem Probezustand (Runge-Kutta)</translation>
     </message>
     <message>
         <source>no force is switched on: the acceleration stays 0</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kraft ist eingeschaltet: Die Beschleunigung bleibt 0</translation>
     </message>
     <message>
         <source>Velocity changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit ändert sich</translation>
     </message>
     <message>
         <source>Position moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Position verschiebt sich</translation>
     </message>
     <message>
         <source>with the %1 accelerations above, weighted 1, 2, 2, 1</source>
-        <translation type="unfinished"></translation>
+        <translation>mit den %1 Beschleunigungen oben, gewichtet 1, 2, 2, 1</translation>
     </message>
     <message>
         <source>no wall touched: nothing changed</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Wand berührt: nichts geändert</translation>
     </message>
     <message>
         <source>nothing changed for this ball</source>
-        <translation type="unfinished"></translation>
+        <translation>für diese Kugel hat sich nichts geändert</translation>
     </message>
     <message>
         <source>Detection: which balls touch?</source>
-        <translation type="unfinished"></translation>
+        <translation>Erkennung: Welche Kugeln berühren sich?</translation>
     </message>
     <message>
         <source>ball %1 and ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 und Kugel %2</translation>
     </message>
     <message>
         <source>no ball touches ball %1 (%2 touching pairs in all)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Kugel berührt Kugel %1 (insgesamt %2 sich berührende Paare)</translation>
     </message>
     <message>
         <source>touching: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>berührend: %1</translation>
     </message>
     <message>
         <source>Response with ball %1: the velocities change</source>
-        <translation type="unfinished"></translation>
+        <translation>Reaktion mit Kugel %1: Die Geschwindigkeiten ändern sich</translation>
     </message>
     <message>
         <source>they are moving apart already: no change</source>
-        <translation type="unfinished"></translation>
+        <translation>sie bewegen sich schon auseinander: keine Änderung</translation>
     </message>
     <message>
         <source>Δvx = %1 px/s, Δvy = %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Δvx = %1 px/s, Δvy = %2 px/s</translation>
     </message>
     <message>
         <source>Push-apart from ball %1: out of each other</source>
-        <translation type="unfinished"></translation>
+        <translation>Auseinanderschieben von Kugel %1: aus einander heraus</translation>
     </message>
     <message>
         <source>overlap %1 px; Δx = %2 px, Δy = %3 px</source>
-        <translation type="unfinished"></translation>
+        <translation>Überlappung %1 px; Δx = %2 px, Δy = %3 px</translation>
     </message>
     <message>
         <source>Check: the script&apos;s step against the engine&apos;s (C++)</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfung: der Schritt des Skripts gegen den der Engine (C++)</translation>
     </message>
     <message>
         <source>matches the engine bit for bit</source>
-        <translation type="unfinished"></translation>
+        <translation>stimmt Bit für Bit mit der Engine überein</translation>
     </message>
     <message>
         <source>differs from the engine by Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>weicht von der Engine ab um Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</translation>
     </message>
     <message>
         <source>One step, taken apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Schritt, zerlegt</translation>
     </message>
     <message>
         <source>Ball %1, step %2 → %3, in the order the JavaScript runs it. Changed values are highlighted.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1, Schritt %2 → %3, in der Reihenfolge, in der das JavaScript ihn ausführt. Geänderte Werte sind hervorgehoben.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StopwatchDock</name>
     <message>
         <source>Stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr</translation>
     </message>
     <message>
         <source>by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>von Hand</translation>
     </message>
     <message>
         <source>on the event</source>
-        <translation type="unfinished"></translation>
+        <translation>beim Ereignis</translation>
     </message>
     <message>
         <source>Start the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr starten</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Start</translation>
     </message>
     <message>
         <source>after events:</source>
-        <translation type="unfinished"></translation>
+        <translation>nach Ereignissen:</translation>
     </message>
     <message>
         <source>Stop the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoppuhr anhalten</translation>
     </message>
     <message>
         <source>Events before the stopwatch stops</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignisse, bevor die Stoppuhr anhält</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>a bounce (moving down, then up)</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Aufprall (erst nach unten, dann nach oben)</translation>
     </message>
     <message>
         <source>the top of a flight</source>
-        <translation type="unfinished"></translation>
+        <translation>der höchste Punkt eines Flugs</translation>
     </message>
     <message>
         <source>crossing the line x =</source>
-        <translation type="unfinished"></translation>
+        <translation>Überqueren der Linie x =</translation>
     </message>
     <message>
         <source>crossing the line y =</source>
-        <translation type="unfinished"></translation>
+        <translation>Überqueren der Linie y =</translation>
     </message>
     <message>
         <source>a full turn round the centre</source>
-        <translation type="unfinished"></translation>
+        <translation>eine volle Runde um den Mittelpunkt</translation>
     </message>
     <message>
         <source>Event</source>
-        <translation type="unfinished"></translation>
+        <translation>Ereignis</translation>
     </message>
     <message>
         <source>Line position</source>
-        <translation type="unfinished"></translation>
+        <translation>Position der Linie</translation>
     </message>
     <message>
         <source>Line at</source>
-        <translation type="unfinished"></translation>
+        <translation>Linie bei</translation>
     </message>
     <message>
         <source>Ball watched</source>
-        <translation type="unfinished"></translation>
+        <translation>Beobachtete Kugel</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <source>Arm</source>
-        <translation type="unfinished"></translation>
+        <translation>Scharf schalten</translation>
     </message>
     <message>
         <source>Waiting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Warte …</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu starten</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Last times: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Letzte Zeiten: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StudentCodeDock</name>
     <message>
         <source>Your Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein Code</translation>
     </message>
     <message>
         <source>Rewrite:</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu schreiben:</translation>
     </message>
     <message>
         <source>JavaScript file to rewrite</source>
-        <translation type="unfinished"></translation>
+        <translation>JavaScript-Datei zum Neuschreiben</translation>
     </message>
     <message>
         <source>The stage&apos;s code, one file per rule. Pick one and write your own version.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Code der Stufe, eine Datei pro Regel. Wähle eine aus und schreibe deine eigene Version.</translation>
     </message>
     <message>
         <source>Your JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein JavaScript</translation>
     </message>
     <message>
         <source>Run beside the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Neben der Referenz ausführen</translation>
     </message>
     <message>
         <source>Runs your version in place of the course&apos;s, beside the reference (Ctrl+Return)</source>
-        <translation type="unfinished"></translation>
+        <translation>Führt deine Version anstelle der des Kurses aus, neben der Referenz (Ctrl+Return)</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>Takes your code off the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Nimmt deinen Code von der Zeichenfläche</translation>
     </message>
     <message>
         <source>Back to the course&apos;s file</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurück zur Datei des Kurses</translation>
     </message>
     <message>
         <source>Throws away your changes to this file</source>
-        <translation type="unfinished"></translation>
+        <translation>Verwirft deine Änderungen an dieser Datei</translation>
     </message>
     <message>
         <source>%1 (yours)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (deine)</translation>
     </message>
     <message>
         <source>Change the code above, then press Run: your version runs beside the course&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ändere den Code oben und drücke dann „Neben der Referenz ausführen“: Deine Version läuft neben der des Kurses.</translation>
     </message>
     <message>
         <source>Your changes: %1. Press Run to see them beside the reference.</source>
-        <translation type="unfinished"></translation>
+        <translation>Deine Änderungen: %1. Drücke „Neben der Referenz ausführen“, um sie neben der Referenz zu sehen.</translation>
     </message>
     <message>
         <source>Your code stopped. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dein Code wurde angehalten. %1</translation>
     </message>
     <message>
         <source>Departs at step %1: your code has %2 balls, the reference %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Weicht ab bei Schritt %1: Dein Code hat %2 Kugeln, die Referenz %3.</translation>
     </message>
     <message>
         <source>Departs at step %1 (t = %2 s), ball %3: %4 is %5 in your code and %6 in the reference, %7 apart. Now the balls are up to %8 apart.</source>
-        <translation type="unfinished"></translation>
+        <translation>Weicht ab bei Schritt %1 (t = %2 s), Kugel %3: %4 ist %5 in deinem Code und %6 in der Referenz, %7 Unterschied. Jetzt liegen die Kugeln bis zu %8 auseinander.</translation>
     </message>
     <message>
         <source>Agrees with the reference for all %1 steps so far (x, y, vx and vy to 9 significant digits).</source>
-        <translation type="unfinished"></translation>
+        <translation>Stimmt bisher in allen %1 Schritten mit der Referenz überein (x, y, vx und vy auf 9 signifikante Stellen).</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TimelineBar</name>
     <message>
         <source>Step back: pause and show the world one step dt earlier</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt zurück: anhalten und die Welt einen Schritt dt früher zeigen</translation>
     </message>
     <message>
         <source>Step: re-run the next recorded step, or take a new one at the latest</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt: den nächsten aufgezeichneten Schritt erneut ausführen oder am Ende einen neuen machen</translation>
     </message>
     <message>
         <source>The recorded past: drag to see the world at any step of it</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aufgezeichnete Vergangenheit: ziehen, um die Welt bei jedem ihrer Schritte zu sehen</translation>
     </message>
     <message>
         <source>Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt zurück</translation>
     </message>
     <message>
         <source>Step forward</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt vor</translation>
     </message>
     <message>
         <source>Timeline: the recorded steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeitleiste: die aufgezeichneten Schritte</translation>
     </message>
     <message>
         <source>Time shown, of the time recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Gezeigte Zeit von der aufgezeichneten Zeit</translation>
     </message>
     <message>
         <source>t = %1 s of %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s von %2 s</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TraceCheck</name>
     <message>
         <source>Check a Student&apos;s &amp;Trace…</source>
-        <translation type="unfinished"></translation>
+        <translation>Schülerprotokoll &amp;prüfen …</translation>
     </message>
     <message>
         <source>Check a trace a student&apos;s own program wrote (CSV or JSON: step, ball, x, y, vx, vy) against this run: where it first departs, and why</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Protokoll, das das eigene Programm eines Schülers geschrieben hat (CSV oder JSON: step, ball, x, y, vx, vy), mit diesem Lauf vergleichen: wo es zuerst abweicht und warum</translation>
     </message>
     <message>
         <source>Check a Student&apos;s Trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Schülerprotokoll prüfen</translation>
     </message>
     <message>
         <source>Traces (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Protokolle (*.csv *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>%1: a trace is still being checked; wait for its result</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Ein Protokoll wird noch geprüft; warte auf sein Ergebnis</translation>
     </message>
     <message>
         <source>%1 cannot be checked: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geprüft werden: %2</translation>
     </message>
     <message>
         <source>%1 agrees with the run at every one of its %2 rows (to step %3, t = %4 s): the largest difference is %5.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 stimmt in jeder seiner %2 Zeilen mit dem Lauf überein (bis Schritt %3, t = %4 s): Die größte Abweichung ist %5.</translation>
     </message>
     <message>
         <source>%1 departs from the run at step %2 (t = %3 s), ball %4: %5 is %6 where the run has %7, off by %8.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 weicht bei Schritt %2 (t = %3 s) vom Lauf ab, Kugel %4: %5 ist %6, wo der Lauf %7 hat, Abweichung %8.</translation>
     </message>
     <message>
         <source>Likely cause: %1. The numbers follow the run with %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Wahrscheinliche Ursache: %1. Die Zahlen folgen dem Lauf mit %2: %3</translation>
     </message>
     <message>
         <source>No known mistake explains it: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein bekannter Fehler erklärt es: %1</translation>
     </message>
     <message>
         <source>The canvas does not go there: step %1 is past the %2 steps it runs to at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zeichenfläche geht nicht dorthin: Schritt %1 liegt hinter den %2 Schritten, die sie auf einmal läuft.</translation>
     </message>
     <message>
         <source>Student&apos;s trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Schülerprotokoll</translation>
     </message>
     <message>
         <source>student&apos;s ball %1, step %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 des Schülers, Schritt %2</translation>
     </message>
 </context>
 </TS>
