@@ -135,6 +135,21 @@ bool Canvas::showsTraceMark() const
            m_traceMark->ball < m_controller->world().balls().size();
 }
 
+// Where a student's numbers put a ball: a red cross, and a card above it.
+void Canvas::paintStudentCross(QPainter& p, const QPointF& at, const QString& card, double k)
+{
+    p.setPen(QPen(QColor(0xc0, 0x10, 0x10), 3.0 * k, Qt::SolidLine, Qt::RoundCap));
+    const double arm = 8.0 * k;
+    p.drawLine(at + QPointF(-arm, -arm), at + QPointF(arm, arm));
+    p.drawLine(at + QPointF(-arm, arm), at + QPointF(arm, -arm));
+    QFont font = p.font();
+    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
+    font.setBold(true);
+    p.setFont(font);
+    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
+    paintRulerCard(p, at + QPointF(0, -arm - cardHeight), card, k);
+}
+
 // The student's position as a red cross, a dashed line from the ball's
 // centre to it (the departure, often less than a pixel: the cross and its
 // card say where), and the card.
@@ -148,16 +163,7 @@ void Canvas::paintTraceMark(QPainter& p) const
     const QColor red(0xc0, 0x10, 0x10);
     p.setPen(QPen(red, 1.5 * k, Qt::DashLine));
     p.drawLine(ball, at);
-    p.setPen(QPen(red, 3.0 * k, Qt::SolidLine, Qt::RoundCap));
-    const double arm = 8.0 * k;
-    p.drawLine(at + QPointF(-arm, -arm), at + QPointF(arm, arm));
-    p.drawLine(at + QPointF(-arm, arm), at + QPointF(arm, -arm));
-    QFont font = p.font();
-    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
-    font.setBold(true);
-    p.setFont(font);
-    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
-    paintRulerCard(p, at + QPointF(0, -arm - cardHeight), m_traceMark->text, k);
+    paintStudentCross(p, at, m_traceMark->text, k);
     p.restore();
 }
 
@@ -545,16 +551,7 @@ void Canvas::paintDeparture(QPainter& p, const QRectF& area, const sim::World& p
     p.setPen(QPen(red, 2.0 * k));
     p.setBrush(Qt::NoBrush);
     p.drawEllipse(ref, 10.0 * k, 10.0 * k);
-    p.setPen(QPen(red, 3.0 * k, Qt::SolidLine, Qt::RoundCap));
-    const double arm = 8.0 * k;
-    p.drawLine(at + QPointF(-arm, -arm), at + QPointF(arm, arm));
-    p.drawLine(at + QPointF(-arm, arm), at + QPointF(arm, -arm));
-    QFont font = p.font();
-    font.setPixelSize(static_cast<int>(std::lround(14 * k)));
-    font.setBold(true);
-    p.setFont(font);
-    const double cardHeight = QFontMetricsF(font).height() + 6 * k;
-    paintRulerCard(p, at + QPointF(0, -arm - cardHeight), tr("departs here, step %1").arg(d.step), k);
+    paintStudentCross(p, at, tr("departs here, step %1").arg(d.step), k);
     p.restore();
 }
 

@@ -339,6 +339,7 @@ private:
     Ruler m_ruler;
     std::optional<TraceMark> m_traceMark;
     void paintTraceMark(QPainter& p) const;
+    static void paintStudentCross(QPainter& p, const QPointF& at, const QString& card, double k);
     void paintDeparture(QPainter& p, const QRectF& area, const sim::World& pane, const ScriptDeparture& d,
                         const PaintOptions& paneOptions) const;
     bool m_measuringSecond = false; // the drag moves the second leg's end
