@@ -7,6 +7,7 @@
 #include "ui/canvas/canvas.h"
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/number_control.h"
+#include "ui/docks/lesson_text_view.h"
 #include "ui/window/language.h"
 #include "ui/window/main_window.h"
 #include "ui/window/window_host.h"
@@ -94,12 +95,20 @@ void GuiLanguageTest::switchingKeepsTheClassesWorkAndIsRemembered()
         }
     QVERIFY(sawComma);
 
+    // The lesson's text is English, and the panel says so in German.
+    const QString notice = QCoreApplication::translate(
+        "forcelab::LessonsDock", "This lesson is not written in your language yet: its text is shown in English.");
+    auto* text = german->findChild<LessonTextView*>();
+    QVERIFY(text);
+    QVERIFY2(text->toPlainText().contains(notice), qPrintable(text->toPlainText().left(300)));
+
     // And it runs on from there.
     QVERIFY(german->controller()->runToStep(german->controller()->world().stepCount() + 10));
 
     german->findChild<QAction*>(QStringLiteral("language_en"))->trigger();
     QTRY_VERIFY(host.window() != german);
     QVERIFY(menuTitles(host.window()).contains(QStringLiteral("&View")));
+    QVERIFY(!host.window()->findChild<LessonTextView*>()->toPlainText().contains(QStringLiteral("not written in your language")));
     QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("en"));
 }
 

@@ -1,4 +1,5 @@
 #include "ui/docks/lessons_dock.h"
+#include "ui/window/language.h"
 
 #include "lessons/lesson_markup.h"
 
@@ -237,6 +238,11 @@ void LessonsDock::showText(const Lesson& lesson)
         where += (where.isEmpty() ? QString() : QStringLiteral(" · ")) + QFileInfo(lesson.source).fileName();
     if (!where.isEmpty())
         html += QStringLiteral("<p style='color:#5a6270; margin-top:0'>%1</p>").arg(where.toHtmlEscaped());
+    // Lesson files are written in English; in another language the program
+    // says so rather than leave a class wondering why the panels changed and the text did not.
+    if (currentLanguage() != QLatin1String("en"))
+        html += QStringLiteral("<p style='color:#8a4b00'><i>%1</i></p>")
+                    .arg(tr("This lesson is not written in your language yet: its text is shown in English.").toHtmlEscaped());
     // The lesson's own words in the markup subset only: nothing in them can
     // open a file or a page (lessons/lesson_markup.h).
     const lessons::MarkupHtml text = lessons::markupToHtml(lesson.text);
