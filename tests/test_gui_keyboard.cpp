@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
@@ -167,6 +168,14 @@ void GuiKeyboardTest::aWholeLessonWithKeysAlone()
     QVERIFY(!w.controller()->isPlaying());
     press(Qt::Key_Return); // Enter presses it too
     QTRY_COMPARE(stopwatch->state(), StopwatchDock::State::Stopped);
+
+    // Enter ticks the check box that has the keyboard (Space would run the simulation there).
+    QVERIFY(tabTo([&](QWidget* f) { return f && f->objectName() == QLatin1String("showAllCheck"); }));
+    auto* showAll = qobject_cast<QCheckBox*>(focus());
+    QVERIFY(showAll);
+    const bool ticked = showAll->isChecked();
+    press(Qt::Key_Return);
+    QTRY_VERIFY(showAll->isChecked() != ticked);
 
     // R on the canvas resets the lesson: t = 0, its own settings.
     press(Qt::Key_Escape);

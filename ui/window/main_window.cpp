@@ -108,9 +108,10 @@ protected:
 };
 
 // Space runs and pauses the simulation from anywhere, as a window-wide
-// shortcut; but a keyboard user presses a focused button with Space, and a
-// shortcut would take the key first. So while a button has the keyboard
-// focus, Space (and Enter) go to the button.
+// shortcut, even while a check box or a slider has the keyboard. A keyboard
+// user still has to press buttons: Enter presses the focused button (or
+// ticks the focused box), and Space presses a focused push button, whose
+// label says what pressing it does ("Start", "Lock in and run").
 class KeysToFocusedButton : public QObject {
 public:
     using QObject::QObject;
@@ -118,22 +119,23 @@ public:
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override
     {
-        if (event->type() == QEvent::ShortcutOverride && qobject_cast<QAbstractButton*>(watched)) {
-            auto* key = static_cast<QKeyEvent*>(event);
-            if (key->modifiers() == Qt::NoModifier &&
-                (key->key() == Qt::Key_Space || key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
-                event->accept();
-                return true;
-            }
+        auto* button = qobject_cast<QAbstractButton*>(watched);
+        if (!button || (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress))
+            return QObject::eventFilter(watched, event);
+        auto* key = static_cast<QKeyEvent*>(event);
+        const bool enter = key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter;
+        const bool space = key->key() == Qt::Key_Space && qobject_cast<QPushButton*>(button);
+        if (key->modifiers() != Qt::NoModifier || !(enter || space))
+            return QObject::eventFilter(watched, event);
+        if (event->type() == QEvent::ShortcutOverride) {
+            event->accept(); // the key goes to the button, not to a shortcut
+            return true;
         }
-        if (event->type() == QEvent::KeyPress && qobject_cast<QPushButton*>(watched)) {
-            auto* key = static_cast<QKeyEvent*>(event);
-            if (key->modifiers() == Qt::NoModifier && (key->key() == Qt::Key_Return || key->key() == Qt::Key_Enter)) {
-                static_cast<QPushButton*>(watched)->click(); // Enter presses it too, as in a dialog
-                return true;
-            }
+        if (enter) { // a push button outside a dialog, or a check box, does nothing with Enter by itself
+            button->click();
+            return true;
         }
-        return QObject::eventFilter(watched, event);
+        return QObject::eventFilter(watched, event); // Space: the button presses itself
     }
 };
 
