@@ -76,7 +76,7 @@ Options declareOptions(QCommandLineParser& parser)
     const QCommandLineOption fitBalls(QStringLiteral("fit-balls"),
                                       QStringLiteral("Zoom so every ball is seen (with --time: where they are then)."));
     const QCommandLineOption language(QStringLiteral("language"),
-                                      QStringLiteral("Show the program in language CODE (en, de or es) this time, "
+                                      QStringLiteral("Show the program in language CODE (en or de) this time, "
                                                      "without changing the remembered one (View > Language)."),
                                       QStringLiteral("CODE"));
     parser.addOptions({screenshot, after, time, size, present, select, ballTable, zoom, follow, fitBalls, language,
@@ -250,7 +250,11 @@ int main(int argc, char* argv[])
     // The host owns the window, in the remembered language, and rebuilds it when View → Language changes it.
     const QString language = parser.value(o.language);
     if (parser.isSet(o.language) && !forcelab::applyLanguage(language)) {
-        std::fprintf(stderr, "forcelab: --language: \"%s\" is not one of en, de, es\n", qPrintable(language.left(40)));
+        QStringList codes;
+        for (const forcelab::Language& l : forcelab::shippedLanguages())
+            codes << l.code;
+        std::fprintf(stderr, "forcelab: --language: \"%s\" is not one of %s\n", qPrintable(language.left(40)),
+                     qPrintable(codes.join(QStringLiteral(", "))));
         return 2;
     }
     forcelab::WindowHost host(lessons.isEmpty() ? QString() : lessons.first(), parser.isSet(o.language));

@@ -36,259 +36,259 @@
     <name>Parameter</name>
     <message>
         <source>Box width</source>
-        <translation type="unfinished"></translation>
+        <translation>Kastenbreite</translation>
     </message>
     <message>
         <source>Box height</source>
-        <translation type="unfinished"></translation>
+        <translation>Kastenhöhe</translation>
     </message>
     <message>
         <source>Wall model</source>
-        <translation type="unfinished"></translation>
+        <translation>Wandmodell</translation>
     </message>
     <message>
         <source>Wall restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl der Wände</translation>
     </message>
     <message>
         <source>Middle wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittelwand</translation>
     </message>
     <message>
         <source>Test the centre only</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur den Mittelpunkt prüfen</translation>
     </message>
     <message>
         <source>Left wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Linke Wand</translation>
     </message>
     <message>
         <source>Right wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechte Wand</translation>
     </message>
     <message>
         <source>Top wall</source>
-        <translation type="unfinished"></translation>
+        <translation>Obere Wand</translation>
     </message>
     <message>
         <source>Floor</source>
-        <translation type="unfinished"></translation>
+        <translation>Boden</translation>
     </message>
     <message>
         <source>Integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>Integrator</translation>
     </message>
     <message>
         <source>Step dt</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt dt</translation>
     </message>
     <message>
         <source>Sub-steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilschritte</translation>
     </message>
     <message>
         <source>Tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz</translation>
     </message>
     <message>
         <source>Move per frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Pro Bild bewegen</translation>
     </message>
     <message>
         <source>Step past close passes</source>
-        <translation type="unfinished"></translation>
+        <translation>Über nahe Vorbeiflüge hinweg</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished">Schwerkraft</translation>
+        <translation>Schwerkraft</translation>
     </message>
     <message>
         <source>g x (right)</source>
-        <translation type="unfinished"></translation>
+        <translation>g x (rechts)</translation>
     </message>
     <message>
         <source>g y (down)</source>
-        <translation type="unfinished"></translation>
+        <translation>g y (unten)</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished">Luftwiderstand</translation>
+        <translation>Luftwiderstand</translation>
     </message>
     <message>
         <source>Drag law</source>
-        <translation type="unfinished"></translation>
+        <translation>Widerstandsgesetz</translation>
     </message>
     <message>
         <source>Drag k</source>
-        <translation type="unfinished"></translation>
+        <translation>Widerstand k</translation>
     </message>
     <message>
         <source>Drag scaling</source>
-        <translation type="unfinished"></translation>
+        <translation>Widerstand skaliert mit</translation>
     </message>
     <message>
         <source>Wind</source>
-        <translation type="unfinished">Wind</translation>
+        <translation>Wind</translation>
     </message>
     <message>
         <source>Wind strength</source>
-        <translation type="unfinished"></translation>
+        <translation>Windstärke</translation>
     </message>
     <message>
         <source>Wind scaling</source>
-        <translation type="unfinished"></translation>
+        <translation>Wind skaliert mit</translation>
     </message>
     <message>
         <source>Smoothed step</source>
-        <translation type="unfinished"></translation>
+        <translation>Glättungsschritt</translation>
     </message>
     <message>
         <source>Noise frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauschfrequenz</translation>
     </message>
     <message>
         <source>Compare with</source>
-        <translation type="unfinished"></translation>
+        <translation>Vergleichen mit</translation>
     </message>
     <message>
         <source>Random acceleration</source>
-        <translation type="unfinished">Zufallsbeschleunigung</translation>
+        <translation>Zufällige Beschleunigung</translation>
     </message>
     <message>
         <source>One value per ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Wert pro Kugel</translation>
     </message>
     <message>
         <source>Random strength</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufallsstärke</translation>
     </message>
     <message>
         <source>Un-centred (0 to strength)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht zentriert (0 bis Stärke)</translation>
     </message>
     <message>
         <source>Point force</source>
-        <translation type="unfinished">Punktkraft</translation>
+        <translation>Punktkraft</translation>
     </message>
     <message>
         <source>Point kind</source>
-        <translation type="unfinished"></translation>
+        <translation>Art des Punkts</translation>
     </message>
     <message>
         <source>Point x</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt x</translation>
     </message>
     <message>
         <source>Point y</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt y</translation>
     </message>
     <message>
         <source>Point strength</source>
-        <translation type="unfinished"></translation>
+        <translation>Punktstärke</translation>
     </message>
     <message>
         <source>Point clamp (0 = off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt-Obergrenze (0 = aus)</translation>
     </message>
     <message>
         <source>Point scaling</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt skaliert mit</translation>
     </message>
     <message>
         <source>Un-normalised (S d / d²)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht normiert (S d / d²)</translation>
     </message>
     <message>
         <source>Spring</source>
-        <translation type="unfinished">Feder</translation>
+        <translation>Feder</translation>
     </message>
     <message>
         <source>Anchor x</source>
-        <translation type="unfinished"></translation>
+        <translation>Ankerpunkt x</translation>
     </message>
     <message>
         <source>Anchor y</source>
-        <translation type="unfinished"></translation>
+        <translation>Ankerpunkt y</translation>
     </message>
     <message>
         <source>Spring k</source>
-        <translation type="unfinished"></translation>
+        <translation>Feder k</translation>
     </message>
     <message>
         <source>Gravity between balls</source>
-        <translation type="unfinished">Gravitation zwischen Kugeln</translation>
+        <translation>Schwerkraft zwischen Kugeln</translation>
     </message>
     <message>
         <source>G</source>
-        <translation type="unfinished"></translation>
+        <translation>G</translation>
     </message>
     <message>
         <source>Softening ε</source>
-        <translation type="unfinished"></translation>
+        <translation>Glättung ε</translation>
     </message>
     <message>
         <source>Homing</source>
-        <translation type="unfinished">Rückholkraft</translation>
+        <translation>Rückholkraft</translation>
     </message>
     <message>
         <source>Homing strength</source>
-        <translation type="unfinished"></translation>
+        <translation>Stärke der Rückholkraft</translation>
     </message>
     <message>
         <source>Pointer force</source>
-        <translation type="unfinished">Mauszeiger-Kraft</translation>
+        <translation>Mauszeiger-Kraft</translation>
     </message>
     <message>
         <source>Pointer strength</source>
-        <translation type="unfinished"></translation>
+        <translation>Stärke des Mauszeigers</translation>
     </message>
     <message>
         <source>Pointer clamp (0 = off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mauszeiger-Obergrenze (0 = aus)</translation>
     </message>
     <message>
         <source>Magnetic field</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetfeld</translation>
     </message>
     <message>
         <source>Field B</source>
-        <translation type="unfinished"></translation>
+        <translation>Feld B</translation>
     </message>
     <message>
         <source>Custom force</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Kraft</translation>
     </message>
     <message>
         <source>Formulas give a, not F</source>
-        <translation type="unfinished"></translation>
+        <translation>Formeln geben a, nicht F</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished">Tempolimit</translation>
+        <translation>Tempolimit</translation>
     </message>
     <message>
         <source>Largest speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Höchstes Tempo</translation>
     </message>
     <message>
         <source>Detection</source>
-        <translation type="unfinished"></translation>
+        <translation>Erkennung</translation>
     </message>
     <message>
         <source>Response</source>
-        <translation type="unfinished"></translation>
+        <translation>Antwort</translation>
     </message>
     <message>
         <source>Ball restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßzahl der Kugeln</translation>
     </message>
     <message>
         <source>Continuous</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontinuierlich</translation>
     </message>
     <message>
         <source>Resting contacts</source>
-        <translation type="unfinished"></translation>
+        <translation>Ruhende Kontakte</translation>
     </message>
 </context>
 <context>
@@ -362,107 +362,107 @@
     <name>SceneDescription</name>
     <message>
         <source>right</source>
-        <translation type="unfinished">rechts</translation>
+        <translation>nach rechts</translation>
     </message>
     <message>
         <source>up and to the right</source>
-        <translation type="unfinished"></translation>
+        <translation>nach rechts oben</translation>
     </message>
     <message>
         <source>up</source>
-        <translation type="unfinished"></translation>
+        <translation>nach oben</translation>
     </message>
     <message>
         <source>up and to the left</source>
-        <translation type="unfinished"></translation>
+        <translation>nach links oben</translation>
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished">links</translation>
+        <translation>nach links</translation>
     </message>
     <message>
         <source>down and to the left</source>
-        <translation type="unfinished"></translation>
+        <translation>nach links unten</translation>
     </message>
     <message>
         <source>down</source>
-        <translation type="unfinished"></translation>
+        <translation>nach unten</translation>
     </message>
     <message>
         <source>down and to the right</source>
-        <translation type="unfinished"></translation>
+        <translation>nach rechts unten</translation>
     </message>
     <message>
         <source>the left wall</source>
-        <translation type="unfinished"></translation>
+        <translation>die linke Wand</translation>
     </message>
     <message>
         <source>the right wall</source>
-        <translation type="unfinished"></translation>
+        <translation>die rechte Wand</translation>
     </message>
     <message>
         <source>the ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>die Decke</translation>
     </message>
     <message>
         <source>the floor</source>
-        <translation type="unfinished"></translation>
+        <translation>den Boden</translation>
     </message>
     <message>
         <source>the middle wall</source>
-        <translation type="unfinished"></translation>
+        <translation>die Mittelwand</translation>
     </message>
     <message>
         <source>No balls.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Kugeln.</translation>
     </message>
     <message>
         <source>One ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Kugel.</translation>
     </message>
     <message>
         <source>%1 balls.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Kugeln.</translation>
     </message>
     <message>
         <source>Ball %1</source>
-        <translation type="unfinished">Kugel %1</translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>Ball %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kugel %1 (%2)</translation>
     </message>
     <message>
         <source>%1 is pinned in place.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist festgeheftet.</translation>
     </message>
     <message>
         <source>%1 is at rest.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ruht.</translation>
     </message>
     <message>
         <source>%1 moves %2 at %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bewegt sich %2 mit %3</translation>
     </message>
     <message>
         <source>will hit %1 in %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>trifft in %2 s auf %1</translation>
     </message>
     <message>
         <source>will hit %1 in about %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>trifft in etwa %2 s auf %1</translation>
     </message>
     <message>
         <source>and %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>und %1.</translation>
     </message>
     <message>
         <source>It %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie %1.</translation>
     </message>
     <message>
         <source>Total energy %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Gesamtenergie %1.</translation>
     </message>
 </context>
 <context>
@@ -1235,6 +1235,10 @@ In deinem Webbrowser öffnen?</translation>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Diese Lektion hat keine Hinweise für Lehrkräfte.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>This lesson is not written in your language yet: its text is shown in English.</source>
+        <translation>Diese Lektion gibt es noch nicht auf Deutsch: Ihr Text wird auf Englisch gezeigt.</translation>
+    </message>
 </context>
 <context>
     <name>forcelab::MainWindow</name>
@@ -1836,26 +1840,26 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
     </message>
     <message>
         <source>&amp;Describe the Scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Szene &amp;beschreiben</translation>
     </message>
     <message>
         <source>Say in words what is on the stage: the balls, the selected one&apos;s motion, when it reaches a wall, the energy (D)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sagt in Worten, was auf der Bühne ist: die Kugeln, die Bewegung der ausgewählten, wann sie eine Wand erreicht, die Energie (D)</translation>
     </message>
     <message>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Sprache</translation>
     </message>
 </context>
 <context>
     <name>forcelab::NumberControl</name>
     <message>
         <source>%1, slider</source>
-        <translation type="unfinished">%1, Schieberegler</translation>
+        <translation>%1, Schieberegler</translation>
     </message>
     <message>
         <source>%1, value</source>
-        <translation type="unfinished">%1, Wert</translation>
+        <translation>%1, Wert</translation>
     </message>
 </context>
 <context>

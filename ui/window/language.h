@@ -11,8 +11,8 @@
 namespace forcelab {
 
 struct Language {
-    QString code; ///< "en", "de", "es"
-    QString name; ///< in its own language: "English", "Deutsch", "Español"
+    QString code; ///< "en", "de"
+    QString name; ///< in its own language: "English", "Deutsch"
 };
 
 /// English first, then every translation shipped, in a fixed order.
