@@ -100,10 +100,6 @@ void SimulationController::stepWorld()
             m_ghost->setPointer(*m_pendingPointer);
         m_pendingPointer.reset();
     }
-    // The student's code sees the pointer the engine's step sees.
-    for (Pane& pane : m_panes)
-        if (pane.student)
-            pane.student->setPointer(m_world.pointer());
     m_world.step();
     m_timeline.afterStep(m_world);
     followStudent();
@@ -118,6 +114,7 @@ void SimulationController::followStudent()
             continue;
         const bool failed = pane.student->error().has_value();
         const bool departed = pane.student->departure().has_value();
+        pane.student->setPointer(m_world.pointer()); // the pointer the engine's step saw (a replayed one too)
         pane.student->follow(m_world);
         pane.student->copyInto(m_world, *pane.world);
         if (pane.student->error().has_value() != failed || pane.student->departure().has_value() != departed)
