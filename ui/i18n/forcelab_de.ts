@@ -1850,6 +1850,21 @@ Das Handbuch wurde nicht geschrieben; eine alte Datei dort bleibt unverändert.<
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
+    <message>
+        <source>Reset</source>
+        <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Slower</source>
+        <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
+        <translation>Langsam</translation>
+    </message>
+    <message>
+        <source>Faster</source>
+        <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
+        <translation>Schnell</translation>
+    </message>
 </context>
 <context>
     <name>forcelab::NumberControl</name>

@@ -148,17 +148,20 @@ void MainWindow::createSimulationActions()
 
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("&Reset"), this);
     m_resetAction->setObjectName(QStringLiteral("resetAction"));
+    m_resetAction->setIconText(tr("Reset", "the word under the button's icon: short, it has 72 px on the stage"));
     m_resetAction->setShortcut(Qt::Key_R);
     m_resetAction->setStatusTip(tr("Start the lesson again with its own values (R)"));
     connect(m_resetAction, &QAction::triggered, this, &MainWindow::resetLesson);
 
     m_slowerAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("S&lower"), this);
+    m_slowerAction->setIconText(tr("Slower", "the word under the button's icon: short, it has 72 px on the stage"));
     m_slowerAction->setObjectName(QStringLiteral("slowerAction"));
     m_slowerAction->setShortcut(Qt::Key_BracketLeft);
     m_slowerAction->setStatusTip(tr("Half the speed: slow motion down to 1/16× ([)"));
     connect(m_slowerAction, &QAction::triggered, this, &MainWindow::slower);
 
     m_fasterAction = new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("&Faster"), this);
+    m_fasterAction->setIconText(tr("Faster", "the word under the button's icon: short, it has 72 px on the stage"));
     m_fasterAction->setObjectName(QStringLiteral("fasterAction"));
     m_fasterAction->setShortcut(Qt::Key_BracketRight);
     m_fasterAction->setStatusTip(tr("Double the speed, up to %1× (])").arg(SimulationController::kMaxTimeScale));
