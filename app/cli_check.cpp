@@ -3,6 +3,7 @@
 
 #include "cli_commands.h"
 
+#include "lessons/lesson_languages.h"
 #include "lessons/lesson_loader.h"
 #include "lessons/sentence_check.h"
 
@@ -100,7 +101,7 @@ int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     if (lessons.isEmpty())
         lessons = LessonLoader::builtInFiles();
     const bool markdown = parser.isSet(QStringLiteral("markdown"));
-    int claims = 0, failed = 0, withClaims = 0, statements = 0, byClaims = 0, unbacked = 0;
+    int claims = 0, failed = 0, withClaims = 0, statements = 0, byClaims = 0, unbacked = 0, translations = 0;
     for (const QString& name : lessons) {
         const LoadResult r = LessonLoader::load(name);
         if (!r.ok()) {
@@ -130,6 +131,15 @@ int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
             (markdown ? err : out) << label << ": " << problem.toStdString() << "\n";
         if (markdown)
             lessonMarkdown(out, label, lesson, results, report);
+        // Each translation's sentences are backed by its own quotes of the
+        // same claims (its numbers are the lesson's: the loader checks that).
+        for (const QString& code : lesson.languages.keys()) {
+            ++translations;
+            const lessons::SentenceReport translated = lessons::checkSentences(lessons::shownIn(lesson, code));
+            unbacked += int(translated.problems.size());
+            for (const QString& problem : translated.problems)
+                (markdown ? err : out) << label << " [" << code.toStdString() << "]: " << problem.toStdString() << "\n";
+        }
     }
     if (markdown)
         out << "\n";
@@ -141,6 +151,8 @@ int checkCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
         out << failed << " of them " << (failed == 1 ? "does" : "do") << " not hold";
     out << "; " << statements << (statements == 1 ? " sentence" : " sentences") << " with numbers or comparisons, "
         << byClaims << " backed by claims, " << statements - byClaims << " listed as not claims";
+    if (translations > 0)
+        out << "; the same in " << translations << (translations == 1 ? " translation" : " translations");
     if (unbacked > 0)
         out << "; " << unbacked << (unbacked == 1 ? " problem" : " problems") << " with the sentences (listed above)";
     out << "\n";

@@ -11,6 +11,7 @@
 #include <QMap>
 
 #include <optional>
+#include <vector>
 
 namespace forcelab {
 
@@ -75,6 +76,26 @@ struct LessonUnits {
     friend bool operator==(const LessonUnits&, const LessonUnits&) = default;
 };
 
+/// A lesson's words in one language: every field a reader sees, in the
+/// same order and with the same counts as the lesson's own, so each
+/// translated claim quotes the translated sentence it backs
+/// (lessons/lesson_languages.h).
+struct LessonWords {
+    QString title;
+    QString text;
+    QStringList challenges;
+    QStringList predictAsks;                ///< one per question
+    std::vector<QStringList> predictChoices; ///< one list per question (empty: the student types a number)
+    QString goal;                           ///< the teacher's goal
+    QStringList misconceptions;
+    QStringList answers;
+    QStringList claims;                     ///< each claim's "says"
+    QStringList notMeasuredSays;            ///< each not_measured entry's "says"
+    QStringList notMeasuredWhy;             ///< its "why" (empty where the lesson's own has none)
+    QStringList compare;                    ///< each compare pane's label
+    friend bool operator==(const LessonWords&, const LessonWords&) = default;
+};
+
 struct Lesson {
     int format = 1;
     QString id;          ///< e.g. "gravity"; also the built-in name for `forcelab-cli run`
@@ -103,6 +124,15 @@ struct Lesson {
     QMap<QString, QString> studentCode;
     /// "units": shown in SI at this scale; absent, the lesson speaks pixels.
     std::optional<LessonUnits> units;
+    /// The language of the words in the fields above ("en", "de", "es"):
+    /// the file's own (its "language", English when absent) until
+    /// lessons::showIn() puts another one of `languages` in their place.
+    QString language = QStringLiteral("en");
+    /// The language of the file's own words, which the writer writes back.
+    QString fileLanguage = QStringLiteral("en");
+    /// "languages": the words in other languages, by code; the words of
+    /// `language` are not in it while they are shown.
+    QMap<QString, LessonWords> languages;
     QString source;      ///< where it was loaded from (file path or ":/lessons/…")
     sim::Scene scene;
 };

@@ -128,7 +128,7 @@ QStringList unmeasuredSentences(const Lesson& from, const QString& plainText)
     const QString credit = creditSentence(from);
     QStringList out;
     for (const QString& s : splitSentences(plainToMarkup(plainText)))
-        if (!numberOrComparison(s).isEmpty() && !credit.contains(s, Qt::CaseInsensitive))
+        if (!numberOrComparison(s, from.language).isEmpty() && !credit.contains(s, Qt::CaseInsensitive))
             out << s;
     return out;
 }
@@ -359,6 +359,9 @@ DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const De
     Deriving d{from, choices, {}, {}, {}, {}};
     Lesson& l = d.lesson();
     l.format = from.format;
+    // The teacher types in the language on the screen; the new lesson is
+    // in that one language (the old translations are of the old text).
+    l.language = l.fileLanguage = from.language;
     l.title = choices.title.simplified().toHtmlEscaped();
     l.id = deriveId(choices.ids, choices.title, from.id);
     l.stage = kDerivedStage;
@@ -371,7 +374,7 @@ DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const De
     for (const QString& s : unmeasuredSentences(from, choices.text))
         d.out.problems << QStringLiteral("%1 has a number or a comparison (“%2”) that no claim measures on this scene. "
                                          "Write it without, or add a claim to the file later.")
-                              .arg(quotedText(s), numberOrComparison(s));
+                              .arg(quotedText(s), numberOrComparison(s, from.language));
 
     if (!d.keepClaims(scene, progress)) {
         d.out.cancelled = true;
@@ -389,7 +392,7 @@ DerivedLesson deriveLesson(const Lesson& from, const sim::Scene& scene, const De
     // The credit sentence names another lesson, so its numbers are not about this scene.
     const QString credit = creditSentence(from);
     for (const QString& s : splitSentences(plainToMarkup(choices.text)))
-        if (!numberOrComparison(s).isEmpty() && credit.contains(s, Qt::CaseInsensitive))
+        if (!numberOrComparison(s, from.language).isEmpty() && credit.contains(s, Qt::CaseInsensitive))
             l.notMeasured.push_back(
                 {s, NotMeasured::Because::Elsewhere, QStringLiteral("it names the lesson this one was made from")});
 

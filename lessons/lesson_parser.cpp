@@ -6,12 +6,15 @@
 #include "lesson_parser.h"
 
 #include "lesson_controls.h"
+#include "lesson_languages.h"
 #include "lesson_tools.h"
 #include "lesson_limits.h"
 #include "lesson_markup.h"
 #include "lesson_parse_sections.h"
 
 #include <QRegularExpression>
+
+#include <functional>
 
 namespace forcelab::lessons {
 
@@ -159,6 +162,125 @@ void parseStudentCode(Reader& r, const QJsonObject& o, QMap<QString, QString>& o
         out = files;
 }
 
+
+/// One translation under "languages": the lesson's fields in another
+/// language (lesson_languages.h). Its shape is checked against the lesson's
+/// own words once they are all read.
+LessonWords parseWords(Reader& r, const QJsonObject& o, const QString& p)
+{
+    LessonWords w;
+    r.checkKeys(o, p, {"title", "text", "challenges", "predict", "teacher", "claims", "not_measured", "compare"});
+    r.string(o, p, "title", w.title);
+    r.string(o, p, "text", w.text);
+    r.stringList(o, p, "challenges", w.challenges);
+    r.stringList(o, p, "claims", w.claims);
+    r.stringList(o, p, "compare", w.compare);
+    if (const auto t = r.object(o, p, "teacher")) {
+        const QString tp = join(p, "teacher");
+        r.checkKeys(*t, tp, {"goal", "misconceptions", "answers"});
+        r.string(*t, tp, "goal", w.goal);
+        r.stringList(*t, tp, "misconceptions", w.misconceptions);
+        r.stringList(*t, tp, "answers", w.answers);
+    }
+    auto objects = [&](const QString& key, const std::function<void(const QJsonObject&, const QString&)>& one) {
+        const auto a = r.array(o, p, key, QStringLiteral("an array of objects"));
+        if (!a)
+            return;
+        if (a->size() > kMaxListEntries) {
+            r.fail(join(p, key), QStringLiteral("%1 entries is more than the limit of %2").arg(a->size()).arg(kMaxListEntries));
+            return;
+        }
+        for (qsizetype i = 0; i < a->size(); ++i) {
+            const QString ip = join(join(p, key), i);
+            if (!a->at(i).isObject())
+                r.fail(ip, QStringLiteral("expected an object, got %1").arg(describe(a->at(i))));
+            else
+                one(a->at(i).toObject(), ip);
+        }
+    };
+    objects(QStringLiteral("predict"), [&](const QJsonObject& q, const QString& qp) {
+        r.checkKeys(q, qp, {"ask", "choices"});
+        QString ask;
+        QStringList choices;
+        r.string(q, qp, "ask", ask);
+        r.stringList(q, qp, "choices", choices);
+        w.predictAsks << ask;
+        w.predictChoices.push_back(choices);
+    });
+    objects(QStringLiteral("not_measured"), [&](const QJsonObject& n, const QString& np) {
+        r.checkKeys(n, np, {"says", "why"});
+        QString says, why;
+        r.string(n, np, "says", says);
+        r.string(n, np, "why", why);
+        w.notMeasuredSays << says;
+        w.notMeasuredWhy << why;
+    });
+    return w;
+}
+
+/// "language": the language of the file's own words; "languages": the
+/// same words in others, by code.
+void parseLanguages(Reader& r, const QJsonObject& root, Lesson& lesson)
+{
+    QString own;
+    if (r.string(root, QString(), "language", own)) {
+        if (isLanguageCode(own)) {
+            lesson.language = lesson.fileLanguage = own;
+        } else {
+            r.fail(QStringLiteral("language"),
+                   QStringLiteral("%1 is not a language code such as \"en\" or \"de\"").arg(quoted(own)));
+        }
+    }
+    const auto o = r.object(root, QString(), "languages");
+    if (!o)
+        return;
+    if (o->size() > kMaxLessonLanguages) {
+        r.fail(QStringLiteral("languages"),
+               QStringLiteral("%1 languages is more than the limit of %2").arg(o->size()).arg(kMaxLessonLanguages));
+        return;
+    }
+    for (auto it = o->begin(); it != o->end(); ++it) {
+        const QString path = join(QStringLiteral("languages"), it.key());
+        if (!isLanguageCode(it.key())) {
+            r.fail(path, QStringLiteral("%1 is not a language code such as \"de\" or \"es\"").arg(quoted(it.key())));
+        } else if (it.key() == lesson.fileLanguage) {
+            r.fail(path, QStringLiteral("is the file's own language; its words are the lesson's own fields"));
+        } else if (!it.value().isObject()) {
+            r.fail(path, QStringLiteral("expected the lesson's words as an object, got %1").arg(describe(it.value())));
+        } else {
+            lesson.languages.insert(it.key(), parseWords(r, it.value().toObject(), path));
+        }
+    }
+}
+
+/// Every translation has the lesson's fields and counts (so its claims and
+/// questions are the lesson's, in order), its markup is the lesson's subset,
+/// and its numbers are the lesson's.
+void checkLanguages(Reader& r, const Lesson& lesson)
+{
+    auto failLine = [&r](const QString& line) {
+        const qsizetype colon = line.indexOf(QStringLiteral(": "));
+        r.fail(line.left(colon), line.mid(colon + 2));
+    };
+    for (auto it = lesson.languages.cbegin(); it != lesson.languages.cend(); ++it) {
+        const QString path = join(QStringLiteral("languages"), it.key());
+        const QStringList shape = shapeProblems(lesson, *it, path);
+        for (const QString& line : shape)
+            failLine(line);
+        if (!shape.isEmpty())
+            continue;
+        Lesson shown = lesson;
+        showIn(shown, it.key());
+        ParseResult prose;
+        Reader proseReader(prose);
+        checkProse(proseReader, shown);
+        for (const KeyProblem& k : prose.problems)
+            r.fail(join(path, k.keyPath), k.problem);
+        for (const QString& line : numberProblems(lesson, it.key()))
+            failLine(line);
+    }
+}
+
 } // namespace
 
 const QStringList& overlayNames()
@@ -179,7 +301,8 @@ ParseResult parseLesson(const QJsonObject& root)
     const QString top;
     r.checkKeys(root, top,
                 {"format", "id", "title", "stage", "text", "challenges", "world", "time", "models", "balls", "spawn",
-                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict", "units", "student_code"});
+                 "controls", "overlays", "tools", "claims", "not_measured", "teacher", "compare", "predict", "units", "student_code",
+                 "language", "languages"});
 
     if (r.require(root, top, "format", QStringLiteral("\"format\": 1"))) {
         const QJsonValue v = root.value("format");
@@ -236,6 +359,8 @@ ParseResult parseLesson(const QJsonObject& root)
     checkToolsNamed(r, lesson);
     checkControlsNamed(r, lesson);
     checkClaimWork(r, lesson);
+    parseLanguages(r, root, lesson);
+    checkLanguages(r, lesson);
     return result;
 }
 

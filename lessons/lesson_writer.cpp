@@ -4,6 +4,7 @@
 // to the same bits (sim::shortestText, which is std::to_chars).
 
 #include "colour_names.h"
+#include "lesson_languages.h"
 #include "lesson_limits.h"
 #include "lesson_loader.h"
 #include "sim/world/names.h"
@@ -318,10 +319,64 @@ QByteArray ballLine(const sim::Ball& b)
     return inlineObject(f);
 }
 
+/// One language's words under "languages", with the fields the lesson has.
+QByteArray wordsBlock(const Lesson& lesson, const LessonWords& w)
+{
+    auto block = [](const QStringList& texts, int indent) {
+        QList<QByteArray> items;
+        for (const QString& text : texts)
+            items << str(text);
+        return blockArray(items, indent);
+    };
+    QList<QByteArray> fields;
+    fields << "\"title\": " + str(w.title);
+    if (!lesson.text.isEmpty())
+        fields << "\"text\": " + str(w.text);
+    if (!lesson.challenges.isEmpty())
+        fields << "\"challenges\": " + block(w.challenges, 6);
+    if (!lesson.predict.empty()) {
+        QList<QByteArray> questions;
+        for (qsizetype k = 0; k < w.predictAsks.size(); ++k) {
+            Fields f{{"ask", str(w.predictAsks[k])}};
+            if (std::size_t(k) < w.predictChoices.size() && !w.predictChoices[std::size_t(k)].isEmpty())
+                f.push_back({"choices", strings(w.predictChoices[std::size_t(k)], false)});
+            questions << inlineObject(f);
+        }
+        fields << "\"predict\": " + blockArray(questions, 6);
+    }
+    QList<QByteArray> teacher;
+    if (!lesson.teacher.goal.isEmpty())
+        teacher << "\"goal\": " + str(w.goal);
+    if (!lesson.teacher.misconceptions.isEmpty())
+        teacher << "\"misconceptions\": " + block(w.misconceptions, 8);
+    if (!lesson.teacher.answers.isEmpty())
+        teacher << "\"answers\": " + block(w.answers, 8);
+    if (!teacher.isEmpty())
+        fields << "\"teacher\": {\n        " + teacher.join(",\n        ") + "\n      }";
+    if (!lesson.claims.empty())
+        fields << "\"claims\": " + block(w.claims, 6);
+    if (!lesson.notMeasured.empty()) {
+        QList<QByteArray> entries;
+        for (qsizetype k = 0; k < w.notMeasuredSays.size(); ++k) {
+            Fields f{{"says", str(w.notMeasuredSays[k])}};
+            if (!w.notMeasuredWhy.value(k).isEmpty())
+                f.push_back({"why", str(w.notMeasuredWhy[k])});
+            entries << inlineObject(f);
+        }
+        fields << "\"not_measured\": " + blockArray(entries, 6);
+    }
+    if (!lesson.compare.empty())
+        fields << "\"compare\": " + strings(w.compare, false);
+    return "{\n      " + fields.join(",\n      ") + "\n    }";
+}
+
 } // namespace
 
-QByteArray saveLesson(const Lesson& lesson)
+QByteArray saveLesson(const Lesson& shown)
 {
+    // The file's own words go back into its own fields, whichever language
+    // was on the screen.
+    const Lesson lesson = lessons::shownIn(shown, shown.fileLanguage);
     const sim::WorldSettings& s = lesson.scene.settings;
     const sim::SpawnSettings& spawn = lesson.scene.spawn;
 
@@ -437,6 +492,14 @@ QByteArray saveLesson(const Lesson& lesson)
         for (const ComparePane& pane : lesson.compare)
             panes << compareLine(pane);
         top.push_back({"compare", blockArray(panes, 2)});
+    }
+    if (lesson.fileLanguage != QLatin1String("en")) // only when not English, so a lesson saves as before
+        top.insert(top.begin() + 2, {"language", str(lesson.fileLanguage)});
+    if (!lesson.languages.isEmpty()) {
+        QList<QByteArray> languages;
+        for (auto it = lesson.languages.cbegin(); it != lesson.languages.cend(); ++it)
+            languages << str(it.key()) + ": " + wordsBlock(lesson, *it);
+        top.push_back({"languages", "{\n    " + languages.join(",\n    ") + "\n  }"});
     }
 
     QByteArray out = "{\n";

@@ -3,6 +3,7 @@
 #include "lesson_markup.h"
 #include "sim/world/parameters.h"
 
+#include <QLocale>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -87,12 +88,20 @@ std::vector<Span> sentenceSpans(const QString& p)
 }
 
 /// A number as a word of its own: "300", "0.9", "1,200", "−3", "1/60"; not
-/// the digit of a name such as "rk4", "yoshida4" or "2d-axis".
-const QRegularExpression& numberPattern()
+/// the digit of a name such as "rk4", "yoshida4" or "2d-axis". In a
+/// language that writes a decimal comma (German, Spanish): "0,9", "1.200".
+bool decimalComma(const QString& language)
 {
-    static const QRegularExpression re(
+    return QLocale(language).decimalPoint() == QStringLiteral(",");
+}
+
+const QRegularExpression& numberPattern(const QString& language = QStringLiteral("en"))
+{
+    static const QRegularExpression point(
         QStringLiteral(R"((?<![\p{L}\p{N}_.])[−-]?(\d{1,3}(?:,\d{3})+|\d+)(?:\.(\d+))?(?:/(\d+(?:\.\d+)?))?(?![\p{L}\p{N}_]|-\p{L}))"));
-    return re;
+    static const QRegularExpression comma(
+        QStringLiteral(R"((?<![\p{L}\p{N}_,])[−-]?(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?:/(\d+(?:,\d+)?))?(?![\p{L}\p{N}_]|-\p{L}))"));
+    return decimalComma(language) ? comma : point;
 }
 
 const QRegularExpression& wordPattern()
@@ -115,19 +124,20 @@ struct TextNumber {
     double halfUlp;
 };
 
-std::vector<TextNumber> numbersIn(const QString& s)
+std::vector<TextNumber> numbersIn(const QString& s, const QString& language)
 {
+    static const QRegularExpression separators(QStringLiteral("[.,\\x{202F}\\x{00A0}]"));
     std::vector<TextNumber> out;
-    auto it = numberPattern().globalMatch(s);
+    auto it = numberPattern(language).globalMatch(s);
     while (it.hasNext()) {
         const auto m = it.next();
         QString whole = m.captured(1);
-        whole.remove(QLatin1Char(','));
+        whole.remove(separators);
         const QString decimals = m.captured(2);
         double v = (whole + (decimals.isEmpty() ? QString() : QLatin1Char('.') + decimals)).toDouble();
         double half = 0.5 * std::pow(10.0, -double(decimals.size()));
         if (m.capturedLength(3) > 0) {
-            const double d = m.captured(3).toDouble();
+            const double d = QString(m.captured(3)).replace(QLatin1Char(','), QLatin1Char('.')).toDouble();
             if (d == 0.0)
                 continue;
             v /= d;
@@ -265,10 +275,12 @@ QString shortQuote(const QString& s)
 
 } // namespace
 
-QString numberOrComparison(const QString& sentence)
+QString numberOrComparison(const QString& sentence, const QString& language)
 {
-    const auto n = numberPattern().match(sentence);
-    const auto w = wordPattern().match(sentence);
+    const auto n = numberPattern(language).match(sentence);
+    // The words that compare are English; in a translation only its numbers
+    // (the same as the English's, lesson_languages.h) call for a backing.
+    const auto w = language.startsWith(QStringLiteral("en")) ? wordPattern().match(sentence) : QRegularExpressionMatch();
     if (n.hasMatch() && (!w.hasMatch() || n.capturedStart() <= w.capturedStart()))
         return n.captured(0);
     return w.hasMatch() ? w.captured(0) : QString();
@@ -312,7 +324,7 @@ SentenceReport checkSentences(const Lesson& lesson)
             LessonSentence s;
             s.field = fields[f].path;
             s.text = fields[f].plain.mid(b, e - b);
-            s.trigger = numberOrComparison(s.text);
+            s.trigger = numberOrComparison(s.text, lesson.language);
             table[f].push_back(std::move(s));
         }
 
@@ -362,7 +374,7 @@ SentenceReport checkSentences(const Lesson& lesson)
             for (const int k : s.notMeasured) {
                 if (lesson.notMeasured[std::size_t(k)].because != NotMeasured::Because::Setting)
                     continue;
-                for (const TextNumber& n : numbersIn(s.text))
+                for (const TextNumber& n : numbersIn(s.text, lesson.language))
                     if (!inScene(n, values)) {
                         report.problems << QStringLiteral("not_measured.%1: %2 is called a setting, but %3 is not a "
                                                           "number the scene sets")

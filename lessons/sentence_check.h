@@ -38,13 +38,16 @@ struct SentenceReport {
     QStringList problems;
 };
 
-/// Reads every text of the lesson sentence by sentence and checks that each
-/// one with a number or a comparison is backed.
+/// Reads every text of the lesson sentence by sentence, in the language it
+/// shows (lesson.language), and checks that each one with a number or a
+/// comparison is backed.
 SentenceReport checkSentences(const Lesson& lesson);
 
 /// The first number ("0.9", "1/60", "²") or comparison word ("twice",
-/// "never", "faster") in `sentence`, or an empty string.
-QString numberOrComparison(const QString& sentence);
+/// "never", "faster") in `sentence`, or an empty string. In another
+/// language than English: its first number ("0,9" in German), since the
+/// comparison words are checked in the English it translates.
+QString numberOrComparison(const QString& sentence, const QString& language = QStringLiteral("en"));
 
 /// `text` (lesson markup) as plain sentences, in order.
 QStringList splitSentences(const QString& text);

@@ -10,6 +10,7 @@
 
 #include "lessons/lesson_loader.h"
 #include "lessons/lesson_markup.h"
+#include "lessons/lesson_languages.h"
 #include "lessons/sentence_check.h"
 #include "ui/docks/lesson_text_view.h"
 
@@ -76,6 +77,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (r.ok()) {
             checkRoundTrip(*r.lesson);
             (void)lessons::checkSentences(*r.lesson);
+            for (const QString& code : r.lesson->languages.keys()) // each translation shown and checked
+                (void)lessons::checkSentences(lessons::shownIn(*r.lesson, code));
         } else if (r.errors().isEmpty()) {
             std::abort(); // a refusal must say why
         }

@@ -74,6 +74,9 @@ void compareLessons(const Lesson& a, const Lesson& b)
     for (std::size_t i = 0; i < a.claims.size(); ++i)
         QVERIFY2(a.claims[i] == b.claims[i], a.claims[i].text.c_str());
     QVERIFY(a.notMeasured == b.notMeasured);
+    QCOMPARE(a.fileLanguage, b.fileLanguage);
+    QCOMPARE(a.languages.keys(), b.languages.keys());
+    QVERIFY(a.languages == b.languages);
 
     const sim::WorldSettings& s = a.scene.settings;
     const sim::WorldSettings& t = b.scene.settings;
