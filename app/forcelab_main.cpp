@@ -11,6 +11,7 @@
 #include "ui/canvas/simulation_controller.h"
 
 #include <QApplication>
+#include <QCoreApplication>
 #include <QCommandLineParser>
 #include <QScreen>
 #include <QTimer>
@@ -38,45 +39,53 @@ struct Options {
     QCommandLineOption language;
 };
 
+// The names QSettings files the remembered choices under.
+void setApplicationNames()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("ForceLab"));
+    QCoreApplication::setApplicationName(QStringLiteral("ForceLab"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1"));
+}
+
 Options declareOptions(QCommandLineParser& parser)
 {
-    parser.setApplicationDescription(QStringLiteral("A workbench for forces and collisions of 2D balls."));
+    parser.setApplicationDescription(QCoreApplication::translate("CommandLine", "A workbench for forces and collisions of 2D balls."));
     const QCommandLineOption help = parser.addHelpOption();
     const QCommandLineOption version = parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("lesson"), QStringLiteral("Lesson file or built-in lesson id."),
+    parser.addPositionalArgument(QStringLiteral("lesson"), QCoreApplication::translate("CommandLine", "Lesson file or built-in lesson id."),
                                  QStringLiteral("[lesson]"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                        QStringLiteral("Save a picture of the window to FILE and quit."),
+                                        QCoreApplication::translate("CommandLine", "Save a picture of the window to FILE and quit."),
                                         QStringLiteral("FILE"));
     const QCommandLineOption after(QStringLiteral("after"),
-                                   QStringLiteral("Seconds to run in real time before --screenshot (default 3)."),
+                                   QCoreApplication::translate("CommandLine", "Seconds to run in real time before --screenshot (default 3)."),
                                    QStringLiteral("SECONDS"), QStringLiteral("3"));
     const QCommandLineOption time(QStringLiteral("time"),
-                                  QStringLiteral("For --screenshot: step the lesson to simulated time T (seconds) "
+                                  QCoreApplication::translate("CommandLine", "For --screenshot: step the lesson to simulated time T (seconds) "
                                                  "and take the picture there, paused, instead of --after."),
                                   QStringLiteral("T"));
     const QCommandLineOption size(QStringLiteral("size"),
-                                  QStringLiteral("For --screenshot: the window's size in pixels (default: the screen)."),
+                                  QCoreApplication::translate("CommandLine", "For --screenshot: the window's size in pixels (default: the screen)."),
                                   QStringLiteral("WxH"));
     const QCommandLineOption present(QStringLiteral("present"),
-                                     QStringLiteral("Open in the stage view for a projector (F11; Escape leaves)."));
+                                     QCoreApplication::translate("CommandLine", "Open in the stage view for a projector (F11; Escape leaves)."));
     const QCommandLineOption benchRender(QStringLiteral("bench-render"),
-                                         QStringLiteral("Time drawing 1k, 10k and 50k balls offscreen and quit."));
+                                         QCoreApplication::translate("CommandLine", "Time drawing 1k, 10k and 50k balls offscreen and quit."));
     const QCommandLineOption select(QStringLiteral("select"),
-                                    QStringLiteral("Select ball N at the start (the Inspector shows its numbers)."),
+                                    QCoreApplication::translate("CommandLine", "Select ball N at the start (the Inspector shows its numbers)."),
                                     QStringLiteral("N"));
     const QCommandLineOption ballTable(QStringLiteral("ball-table"),
-                                       QStringLiteral("Show the table of the balls (the Balls dock, or under the box "
+                                       QCoreApplication::translate("CommandLine", "Show the table of the balls (the Balls dock, or under the box "
                                                       "with --present), with the selected ball."));
     const QCommandLineOption zoom(QStringLiteral("zoom"),
-                                  QStringLiteral("Zoom in Z times on the selected ball (or the box's middle)."),
+                                  QCoreApplication::translate("CommandLine", "Zoom in Z times on the selected ball (or the box's middle)."),
                                   QStringLiteral("Z"));
     const QCommandLineOption follow(QStringLiteral("follow"),
-                                    QStringLiteral("Follow the selected ball (with --select)."));
+                                    QCoreApplication::translate("CommandLine", "Follow the selected ball (with --select)."));
     const QCommandLineOption fitBalls(QStringLiteral("fit-balls"),
-                                      QStringLiteral("Zoom so every ball is seen (with --time: where they are then)."));
+                                      QCoreApplication::translate("CommandLine", "Zoom so every ball is seen (with --time: where they are then)."));
     const QCommandLineOption language(QStringLiteral("language"),
-                                      QStringLiteral("Show the program in language CODE (en or de) this time, "
+                                      QCoreApplication::translate("CommandLine", "Show the program in language CODE (en, de or es) this time, "
                                                      "without changing the remembered one (View > Language)."),
                                       QStringLiteral("CODE"));
     parser.addOptions({screenshot, after, time, size, present, select, ballTable, zoom, follow, fitBalls, language,
@@ -98,8 +107,18 @@ std::optional<int> readArguments(QCommandLineParser& parser, const Options& o, i
         return 2;
     }
     if (parser.isSet(o.help)) {
-        // No application object yet, so Qt cannot know the program's name.
-        std::fputs(qPrintable(parser.helpText().replace(QStringLiteral("<executable_name>"), QStringLiteral("forcelab"))),
+        // The help in the program's language (--language, else the one
+        // View → Language remembers): a core application holds the
+        // translators, and the options are declared again under them.
+        int coreArgc = 1;
+        char name[] = "forcelab"; // the usage line says "forcelab", wherever it was started from
+        char* coreArgv[] = {name, nullptr};
+        QCoreApplication core(coreArgc, coreArgv);
+        setApplicationNames();
+        forcelab::applyLanguage(parser.isSet(o.language) ? parser.value(o.language) : forcelab::rememberedLanguage());
+        QCommandLineParser translated;
+        declareOptions(translated);
+        std::fputs(qPrintable(translated.helpText().replace(QStringLiteral("<executable_name>"), QStringLiteral("forcelab"))),
                    stdout);
         return 0;
     }
@@ -225,9 +244,7 @@ int main(int argc, char* argv[])
         return *exit;
 
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("ForceLab"));
-    QApplication::setApplicationName(QStringLiteral("ForceLab"));
-    QApplication::setApplicationVersion(QStringLiteral("0.1"));
+    setApplicationNames();
 
     if (parser.isSet(o.benchRender)) {
         const forcelab::RenderBenchOptions options;

@@ -241,13 +241,14 @@ void TestCli::toleranceBelowRoundingIsSaid()
 }
 
 // The workbench itself, on a machine with no display: --help prints its
-// options (before: Qt aborted, looking for a display); a plain start says in
+// options (before: Qt aborted, looking for a display), in the language asked for; a plain start says in
 // one line why it cannot open a window; --screenshot draws offscreen.
 void TestCli::workbenchHelpNeedsNoDisplay()
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
         env.remove(QString::fromLatin1(name));
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), m_dir.path()); // no remembered language: English
     auto run = [&](const QStringList& args) {
         QProcess p;
         p.setProcessEnvironment(env);
@@ -261,6 +262,12 @@ void TestCli::workbenchHelpNeedsNoDisplay()
     QCOMPARE(help.exitCode, 0);
     QVERIFY2(help.out.startsWith("Usage: forcelab [options] [lesson]") && help.out.contains("--screenshot"),
              qPrintable(help.out + help.err));
+    // In German: Qt's words and the program's own.
+    const CliResult german = run({"--help", "--language", "de"});
+    QCOMPARE(german.exitCode, 0);
+    QVERIFY2(german.out.startsWith("Aufruf: forcelab") && german.out.contains("--screenshot") &&
+                 !german.out.contains("Save a picture of the window") && !german.out.contains("A workbench for forces"),
+             qPrintable(german.out + german.err));
     const CliResult plain = run({});
     QCOMPARE(plain.exitCode, 2);
     QVERIFY2(plain.err.startsWith("forcelab: there is no display"), qPrintable(plain.err));

@@ -8,6 +8,12 @@
 #include "ui/canvas/simulation_controller.h"
 #include "ui/controls/number_control.h"
 #include "ui/docks/lesson_text_view.h"
+#include "lessons/atomic_file.h"
+#include "lessons/lesson_languages.h"
+#include "lessons/lesson_loader.h"
+#include "lessons/lesson_markup.h"
+#include "lessons/sentence_check.h"
+#include "ui/drawing/handbook.h"
 #include "ui/window/language.h"
 #include "ui/window/main_window.h"
 #include "ui/window/window_host.h"
@@ -17,6 +23,7 @@
 #include <QMenuBar>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -95,12 +102,39 @@ void GuiLanguageTest::switchingKeepsTheClassesWorkAndIsRemembered()
         }
     QVERIFY(sawComma);
 
-    // The lesson's text is English, and the panel says so in German.
-    const QString notice = QCoreApplication::translate(
-        "forcelab::LessonsDock", "This lesson is not written in your language yet: its text is shown in English.");
+    // The lesson speaks German too: the panel shows its German words, and
+    // the claims the class checks quote them.
+    const LoadResult loaded = LessonLoader::load(QStringLiteral("gravity"));
+    QVERIFY(loaded.ok());
+    const Lesson deLesson = lessons::shownIn(*loaded.lesson, QStringLiteral("de"));
+    QCOMPARE(deLesson.language, QStringLiteral("de"));
+    QCOMPARE(german->lesson().language, QStringLiteral("de"));
+    QCOMPARE(german->lesson().title, deLesson.title);
     auto* text = german->findChild<LessonTextView*>();
     QVERIFY(text);
-    QVERIFY2(text->toPlainText().contains(notice), qPrintable(text->toPlainText().left(300)));
+    const QString shownText = text->toPlainText();
+    QVERIFY2(shownText.contains(lessons::markupToPlainText(deLesson.title)) &&
+                 shownText.contains(lessons::splitSentences(deLesson.text).value(0)) &&
+                 !shownText.contains(lessons::splitSentences(loaded.lesson->text).value(0)),
+             qPrintable(shownText.left(300)));
+    const QString notice = QCoreApplication::translate(
+        "Language", "This lesson is not written in your language yet: its text is shown in %1.").arg(languageName("en"));
+    QVERIFY(!shownText.contains(notice));
+    QCOMPARE(german->lesson().claims.front().text, deLesson.claims.front().text);
+
+    // A lesson file without German (a stranger's, say) is shown in its own
+    // language, and the panel says so in German.
+    QTemporaryDir dir;
+    Lesson onlyEnglish = *loaded.lesson;
+    onlyEnglish.languages.clear();
+    const QString path = dir.filePath(QStringLiteral("only-english.json"));
+    QVERIFY(lessons::writeFileAtomically(path, saveLesson(onlyEnglish), nullptr));
+    QVERIFY(german->openLesson(path));
+    QCOMPARE(german->lesson().language, QStringLiteral("en"));
+    QVERIFY2(text->toPlainText().contains(notice) && notice.contains(QStringLiteral("Englisch")),
+             qPrintable(text->toPlainText().left(300)));
+    QVERIFY(german->openLesson(QStringLiteral("gravity")));
+    QVERIFY(german->controller()->runToStep(90));
 
     // And it runs on from there.
     QVERIFY(german->controller()->runToStep(german->controller()->world().stepCount() + 10));
@@ -108,7 +142,10 @@ void GuiLanguageTest::switchingKeepsTheClassesWorkAndIsRemembered()
     german->findChild<QAction*>(QStringLiteral("language_en"))->trigger();
     QTRY_VERIFY(host.window() != german);
     QVERIFY(menuTitles(host.window()).contains(QStringLiteral("&View")));
-    QVERIFY(!host.window()->findChild<LessonTextView*>()->toPlainText().contains(QStringLiteral("not written in your language")));
+    const QString back = host.window()->findChild<LessonTextView*>()->toPlainText();
+    QVERIFY(!back.contains(QStringLiteral("not written in your language")));
+    QVERIFY2(back.contains(lessons::splitSentences(loaded.lesson->text).value(0)), qPrintable(back.left(300)));
+    QCOMPARE(host.window()->lesson().language, QStringLiteral("en"));
     QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("en"));
 }
 

@@ -4,7 +4,9 @@
 #include "ui/drawing/handbook.h"
 #include "ui/docks/lessons_dock.h"
 
+#include "lessons/lesson_languages.h"
 #include "lessons/lesson_loader.h"
+#include "lessons/lesson_markup.h"
 
 #include <QAction>
 #include <QDir>
@@ -75,6 +77,22 @@ void GuiTeacherTest::handbookHoldsEveryLessonAndItsNotes()
         QVERIFY2(all.contains(r.lesson->title.toHtmlEscaped()), qPrintable(r.lesson->title));
     }
     QCOMPARE(all.count(QStringLiteral("<section>")), LessonLoader::builtInFiles().size());
+    // In German: every lesson's German title, text and answers, and no
+    // lesson says it is shown in another language.
+    const QString german = builtInHandbookHtml(QStringLiteral("de"));
+    QVERIFY(german.contains(QStringLiteral("<html lang='de'>")));
+    for (const QString& file : LessonLoader::builtInFiles()) {
+        const Lesson de = lessons::shownIn(*LessonLoader::loadFile(file).lesson, QStringLiteral("de"));
+        QCOMPARE(de.language, QStringLiteral("de"));
+        QVERIFY2(german.contains(de.title.toHtmlEscaped()), qPrintable(de.title));
+        for (const QString& answer : de.teacher.answers)
+            QVERIFY2(german.contains(lessons::markupToPlainText(answer).toHtmlEscaped()), qPrintable(answer));
+    }
+    QCOMPARE(german.count(QStringLiteral("<section>")), LessonLoader::builtInFiles().size());
+    QVERIFY(!german.contains(lessonLanguageNote(Lesson{})));
+    // A lesson without German says so in the handbook.
+    const QString mixed = handbookHtml({noted()}, QStringLiteral("de"));
+    QVERIFY(mixed.contains(lessonLanguageNote(noted()).toHtmlEscaped()));
 }
 
 // The pane serves a picture only from the lesson's own folder, from a

@@ -8,6 +8,8 @@
 #include "ui/window/language.h"
 #include "ui/i18n/parameter_words.h"
 #include "sim/world/parameters.h"
+#include "sim/forces/force_models.h"
+#include "ui/drawing/overlays/panel.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -182,22 +184,35 @@ void TestTranslations::theBuiltInTranslationsTranslate()
     QCOMPARE(forcelab::currentLanguage(), QStringLiteral("en"));
 }
 
-// sim/'s parameter labels reach lupdate through ui/i18n/parameter_words.cpp:
+// sim/'s parameter labels and help reach lupdate through ui/i18n/parameter_words.cpp:
 // a parameter added to sim/world/parameters.cpp must be listed there.
 void TestTranslations::everyParameterLabelIsListedForTranslation()
 {
     const QStringList listed = forcelab::listedParameterLabels();
+    const QStringList listedHelp = forcelab::listedParameterHelp();
     QStringList missing;
     for (const forcelab::sim::Parameter& p : forcelab::sim::parameters()) {
         const QString label = QString::fromUtf8(p.label.data(), static_cast<qsizetype>(p.label.size()));
         if (!listed.contains(label))
             missing << label;
+        const QString help = QString::fromUtf8(p.help.data(), static_cast<qsizetype>(p.help.size()));
+        // (each row's help is its tooltip)
+        if (!help.isEmpty() && !listedHelp.contains(help))
+            missing << help;
     }
     QVERIFY2(missing.isEmpty(), qPrintable(QStringLiteral("not in ui/i18n/parameter_words.cpp: ") + missing.join(QStringLiteral(", "))));
+    // The force models' names, painted in the forces-by-source legend.
+    const QStringList forces = forcelab::listedForceModelNames();
+    for (const forcelab::sim::ForceModelInfo& m : forcelab::sim::forceModels())
+        QVERIFY2(forces.contains(QString::fromUtf8(m.name.data(), qsizetype(m.name.size()))),
+                 qPrintable(QStringLiteral("not in ui/drawing/overlays/panel.cpp: ") + QString::fromUtf8(m.name.data(), qsizetype(m.name.size()))));
     QVERIFY(forcelab::applyLanguage(QStringLiteral("de")));
     const QString drag = forcelab::parameterLabel(*forcelab::sim::findParameter("models.drag.k"));
+    const QString dragHelp = forcelab::parameterHelp(*forcelab::sim::findParameter("models.drag.k"));
     QVERIFY(forcelab::applyLanguage(QStringLiteral("en")));
     QVERIFY2(!drag.isEmpty() && drag != QStringLiteral("Drag k"), qPrintable(drag));
+    const auto* k = forcelab::sim::findParameter("models.drag.k");
+    QVERIFY2(!dragHelp.isEmpty() && dragHelp != QString::fromUtf8(k->help.data(), qsizetype(k->help.size())), qPrintable(dragHelp));
 }
 
 QTEST_MAIN(TestTranslations)

@@ -15,6 +15,25 @@ namespace forcelab {
 
 namespace {
 
+// The lesson files' colour words (lessons/colour_names.cpp), listed for lupdate.
+constexpr const char* kColourWords[] = {
+    QT_TRANSLATE_NOOP("Colour", "sky blue"), QT_TRANSLATE_NOOP("Colour", "blue"),
+    QT_TRANSLATE_NOOP("Colour", "red"),      QT_TRANSLATE_NOOP("Colour", "orange"),
+    QT_TRANSLATE_NOOP("Colour", "yellow"),   QT_TRANSLATE_NOOP("Colour", "green"),
+    QT_TRANSLATE_NOOP("Colour", "purple"),   QT_TRANSLATE_NOOP("Colour", "pink"),
+    QT_TRANSLATE_NOOP("Colour", "black"),    QT_TRANSLATE_NOOP("Colour", "grey"),
+    QT_TRANSLATE_NOOP("Colour", "white"),
+};
+
+QString colourName(const QString& english)
+{
+    for (const char* word : kColourWords)
+        if (english == QLatin1String(word))
+            return QCoreApplication::translate("Colour", word);
+    return english;
+}
+
+
 // Screen directions (y grows downwards) in eight words.
 QString direction(const sim::Vec2& v)
 {
@@ -56,8 +75,9 @@ QString describeScene(const sim::World& world, int ball)
     if (n == 0)
         return out;
     const int i = ball >= 0 && ball < n ? ball : 0;
-    // The colour's name is the lesson files' (English) word.
-    const QString colour = lessons::nameOfColour(balls.color[static_cast<std::size_t>(i)]);
+    // The colour's name is the lesson files' (English) word, said in the
+    // program's language.
+    const QString colour = colourName(lessons::nameOfColour(balls.color[static_cast<std::size_t>(i)]));
     const QString who = colour.isEmpty() ? QCoreApplication::translate("SceneDescription", "Ball %1").arg(i)
                                          : QCoreApplication::translate("SceneDescription", "Ball %1 (%2)").arg(i).arg(colour);
     const sim::Vec2 x = balls.position.col(i);

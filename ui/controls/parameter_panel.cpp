@@ -430,14 +430,14 @@ QWidget* ParameterPanel::addParameterWidget(std::string_view key)
     auto get = [&p](const Settings& s) { return p.get(s); };
     switch (p.type) {
     case sim::ParameterType::Boolean:
-        return addSwitch(control, stem + QStringLiteral("Check"), label, qs(p.help),
+        return addSwitch(control, stem + QStringLiteral("Check"), label, parameterHelp(p),
                          [get](const Settings& s) { return get(s) != 0.0; },
                          [&p](Settings& s, bool on) { p.set(s, on ? 1.0 : 0.0); });
     case sim::ParameterType::Choice: {
         QComboBox* combo = addChoice(control, stem + QStringLiteral("Combo"), label, p.choices(),
                                      [get](const Settings& s) { return static_cast<int>(get(s)); },
                                      [&p](Settings& s, int i) { p.set(s, i); });
-        combo->setToolTip(qs(p.help));
+        combo->setToolTip(parameterHelp(p));
         return combo;
     }
     case sim::ParameterType::Number:
@@ -470,7 +470,7 @@ QWidget* ParameterPanel::addParameterWidget(std::string_view key)
     NumberControl* number = addNumber(control, stem, label, spec, get, [&p, whole](Settings& s, double v) {
         p.set(s, whole ? static_cast<double>(std::lround(v)) : v);
     });
-    number->setToolTip(qs(p.help));
+    number->setToolTip(parameterHelp(p));
     return number;
 }
 

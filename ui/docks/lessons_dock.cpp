@@ -1,6 +1,7 @@
 #include "ui/docks/lessons_dock.h"
 #include "ui/window/language.h"
 
+#include "lessons/lesson_languages.h"
 #include "lessons/lesson_markup.h"
 
 #include "ui/drawing/handbook.h"
@@ -113,8 +114,8 @@ QList<LessonsDock::Entry> LessonsDock::builtInCourse()
             qWarning("Lessons: %s", qPrintable(result.errors().value(0)));
             continue;
         }
-        entries.append(
-            Entry{result.lesson->source, lessons::markupToPlainText(result.lesson->title), result.lesson->stage});
+        const Lesson shown = lessons::shownIn(*result.lesson, currentLanguage());
+        entries.append(Entry{shown.source, lessons::markupToPlainText(shown.title), shown.stage});
     }
     // builtInFiles() is sorted by file name; keep that order within a stage.
     std::stable_sort(entries.begin(), entries.end(),
@@ -238,11 +239,11 @@ void LessonsDock::showText(const Lesson& lesson)
         where += (where.isEmpty() ? QString() : QStringLiteral(" · ")) + QFileInfo(lesson.source).fileName();
     if (!where.isEmpty())
         html += QStringLiteral("<p style='color:#5a6270; margin-top:0'>%1</p>").arg(where.toHtmlEscaped());
-    // Lesson files are written in English; in another language the program
-    // says so rather than leave a class wondering why the panels changed and the text did not.
-    if (currentLanguage() != QLatin1String("en"))
-        html += QStringLiteral("<p style='color:#8a4b00'><i>%1</i></p>")
-                    .arg(tr("This lesson is not written in your language yet: its text is shown in English.").toHtmlEscaped());
+    // A lesson without the program's language is shown in its own; the
+    // panel says so rather than leave a class wondering why the panels
+    // changed and the text did not.
+    if (lesson.language != currentLanguage())
+        html += QStringLiteral("<p style='color:#8a4b00'><i>%1</i></p>").arg(lessonLanguageNote(lesson).toHtmlEscaped());
     // The lesson's own words in the markup subset only: nothing in them can
     // open a file or a page (lessons/lesson_markup.h).
     const lessons::MarkupHtml text = lessons::markupToHtml(lesson.text);

@@ -1,8 +1,11 @@
 #include "handbook.h"
 
+#include "lessons/lesson_languages.h"
 #include "lessons/lesson_loader.h"
 #include "lessons/lesson_markup.h"
 
+#include <QCoreApplication>
+#include <QLocale>
 #include <QObject>
 #include <QTextDocument>
 
@@ -32,6 +35,25 @@ QString lessonText(const Lesson& lesson)
 }
 
 } // namespace
+
+QString languageName(const QString& code)
+{
+    if (code == QLatin1String("en"))
+        return QCoreApplication::translate("Language", "English");
+    if (code == QLatin1String("de"))
+        return QCoreApplication::translate("Language", "German");
+    if (code == QLatin1String("es"))
+        return QCoreApplication::translate("Language", "Spanish");
+    const QString own = QLocale(code).nativeLanguageName();
+    return own.isEmpty() ? code : own;
+}
+
+QString lessonLanguageNote(const Lesson& lesson)
+{
+    return QCoreApplication::translate("Language",
+                                       "This lesson is not written in your language yet: its text is shown in %1.")
+        .arg(languageName(lesson.language));
+}
 
 QString teacherNotesHtml(const Lesson& lesson)
 {
@@ -64,9 +86,9 @@ QString teacherNotesHtml(const Lesson& lesson)
     return html;
 }
 
-QString handbookHtml(const QList<Lesson>& lessons)
+QString handbookHtml(const QList<Lesson>& lessons, const QString& language)
 {
-    QString html = QStringLiteral("<!DOCTYPE html><html><head><meta charset='utf-8'><title>%1</title><style>"
+    QString html = QStringLiteral("<!DOCTYPE html><html lang='%1'>").arg(language) + QStringLiteral("<head><meta charset='utf-8'><title>%1</title><style>"
                                   "body{font-family:sans-serif;max-width:46em;margin:2em auto;line-height:1.45;}"
                                   "section{page-break-after:always;border-top:2px solid #333;margin-top:2em;}"
                                   ".stage{color:#555;} .notes{background:#f4f4f4;padding:0.5em 1em;}"
@@ -83,6 +105,8 @@ QString handbookHtml(const QList<Lesson>& lessons)
                          lesson.stage == 0 ? QObject::tr("Showcase")
                          : lesson.stage <= 29 ? QObject::tr("Stage %1 of 29").arg(lesson.stage)
                                               : QObject::tr("Beyond the course"));
+        if (lesson.language != language)
+            html += QStringLiteral("<p><i>%1</i></p>").arg(lessonLanguageNote(lesson).toHtmlEscaped());
         html += lessonText(lesson);
         if (!lesson.challenges.isEmpty())
             html += QStringLiteral("<h3>%1</h3>").arg(QObject::tr("Challenges")) + list(lesson.challenges, "ol");
@@ -94,13 +118,13 @@ QString handbookHtml(const QList<Lesson>& lessons)
     return html + QStringLiteral("</body></html>");
 }
 
-QString builtInHandbookHtml()
+QString builtInHandbookHtml(const QString& language)
 {
     QList<Lesson> lessons;
     for (const QString& file : LessonLoader::builtInFiles())
         if (const LoadResult r = LessonLoader::loadFile(file); r.ok())
-            lessons << *r.lesson;
-    return handbookHtml(lessons);
+            lessons << lessons::shownIn(*r.lesson, language);
+    return handbookHtml(lessons, language);
 }
 
 } // namespace forcelab

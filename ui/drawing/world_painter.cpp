@@ -217,34 +217,45 @@ QStringList WorldPainter::readoutText(int i, const sim::Vec2& x, const sim::Vec2
         return text;
     };
     const QString L = lu.text, V = vu.text, A = au.text;
+    // The words in the program's language; the columns are padded to the
+    // longest of them, so "Geschwindigkeit" keeps the numbers in line.
+    const QString ball = tr("ball %1").arg(i);
+    const QString speed = tr("speed");
     if (shape == ReadoutShape::Wide) {
         // Two long lines, for a strip above the box: it costs the box less height.
         auto w = [&shown](const ShownUnit& u, double value) { return shown(u, value).rightJustified(8); };
+        const QString time = QStringLiteral("t %1 s").arg(t, 0, 'f', 3);
+        const qsizetype head = std::max<qsizetype>(12, std::max(ball.size(), time.size()) + 2);
         return {
-            QStringLiteral("ball %1").arg(i).leftJustified(12) +
+            ball.leftJustified(head) +
                 QStringLiteral("x %1  y %2 %3    vx %4  vy %5 %6")
                     .arg(w(lu, x.x()), w(lu, x.y()), L, w(vu, v.x()), w(vu, v.y()), V),
-            QStringLiteral("t %1 s").arg(t, 0, 'f', 3).leftJustified(12) +
-                QStringLiteral("ax %1  ay %2 %3  speed %4 %5").arg(w(au, a.x()), w(au, a.y()), A, w(vu, v.norm()), V),
+            time.leftJustified(head) +
+                QStringLiteral("ax %1  ay %2 %3  %4 %5 %6").arg(w(au, a.x()), w(au, a.y()), A, speed, w(vu, v.norm()), V),
         };
     }
     if (shape == ReadoutShape::Short) {
         // x and y side by side.
         return {
-            QStringLiteral("ball %1").arg(i), // the stage's clock line above has the time
+            ball, // the stage's clock line above has the time
             QStringLiteral("x %1  y %2 %3").arg(shown(lu, x.x()), shown(lu, x.y()), L),
             QStringLiteral("v (%1, %2) %3").arg(shown(vu, v.x()), shown(vu, v.y()), V),
             QStringLiteral("a (%1, %2) %3").arg(shown(au, a.x()), shown(au, a.y()), A),
-            QStringLiteral("speed %1 %2").arg(shown(vu, v.norm()), V),
+            QStringLiteral("%1 %2 %3").arg(speed, shown(vu, v.norm()), V),
         };
     }
     auto num = [&shown](const ShownUnit& u, double value) { return shown(u, value).rightJustified(9); };
+    const QString words[] = {tr("position"), tr("velocity"), tr("accel."), speed};
+    qsizetype width = 8;
+    for (const QString& word : words)
+        width = std::max(width, word.size());
+    auto label = [width](const QString& word) { return word.leftJustified(width + 1); };
     return {
-        QStringLiteral("ball %1").arg(i).leftJustified(17) + u'x' + QString(8, u' ') + u'y',
-        QStringLiteral("position %1%2  %3").arg(num(lu, x.x()), num(lu, x.y()), L),
-        QStringLiteral("velocity %1%2  %3").arg(num(vu, v.x()), num(vu, v.y()), V),
-        QStringLiteral("accel.   %1%2  %3").arg(num(au, a.x()), num(au, a.y()), A),
-        QStringLiteral("speed    %1 %2   t = %3 s").arg(num(vu, v.norm()), V).arg(t, 0, 'f', 3),
+        ball.leftJustified(width + 9) + u'x' + QString(8, u' ') + u'y',
+        label(words[0]) + QStringLiteral("%1%2  %3").arg(num(lu, x.x()), num(lu, x.y()), L),
+        label(words[1]) + QStringLiteral("%1%2  %3").arg(num(vu, v.x()), num(vu, v.y()), V),
+        label(words[2]) + QStringLiteral("%1%2  %3").arg(num(au, a.x()), num(au, a.y()), A),
+        label(words[3]) + QStringLiteral("%1 %2   t = %3 s").arg(num(vu, v.norm()), V).arg(t, 0, 'f', 3),
     };
 }
 
@@ -293,20 +304,22 @@ TotalsNumbers totalsNumbers(const sim::Energy& pixelEnergy, const sim::Vec2& pix
 QStringList WorldPainter::totalsText(const sim::Energy& e, const sim::Vec2& m, bool wide, double momentumScale)
 {
     const TotalsNumbers n = totalsNumbers(e, m, momentumScale);
+    const QString kinetic = tr("kinetic"), potential = tr("potential"), total = tr("total");
     if (wide) {
         // Short lines beside the momenta inset, which is taller than three of them.
         return {
-            QStringLiteral("energy in %1: total %2").arg(unitText(kEnergyUnit), n.total),
-            QStringLiteral("  kinetic %1  potential %2").arg(n.kinetic, n.potential),
-            QStringLiteral("momentum (%1, %2) %3").arg(n.px, n.py, unitText(kMomentumUnit)),
+            tr("energy in %1: %2 %3").arg(unitText(kEnergyUnit), total, n.total),
+            QStringLiteral("  %1 %2  %3 %4").arg(kinetic, n.kinetic, potential, n.potential),
+            tr("momentum (%1, %2) %3").arg(n.px, n.py, unitText(kMomentumUnit)),
         };
     }
+    const qsizetype width = std::max({kinetic.size(), potential.size(), total.size()}) + 1;
     return {
-        QStringLiteral("energy in %1").arg(unitText(kEnergyUnit)),
-        QStringLiteral("  kinetic   %1").arg(n.kinetic),
-        QStringLiteral("  potential %1").arg(n.potential),
-        QStringLiteral("  total     %1").arg(n.total),
-        QStringLiteral("momentum in %1").arg(unitText(kMomentumUnit)),
+        tr("energy in %1").arg(unitText(kEnergyUnit)),
+        QStringLiteral("  ") + kinetic.leftJustified(width) + n.kinetic,
+        QStringLiteral("  ") + potential.leftJustified(width) + n.potential,
+        QStringLiteral("  ") + total.leftJustified(width) + n.total,
+        tr("momentum in %1").arg(unitText(kMomentumUnit)),
         QStringLiteral("  (%1, %2)").arg(n.px, n.py),
     };
 }
@@ -317,9 +330,9 @@ QStringList WorldPainter::stageTotalsText(const sim::Energy& e, const sim::Vec2&
     // text columns, a group (a head line and the indented lines under it)
     // never split. In a column the momentum's x and y get a line each.
     const TotalsNumbers n = totalsNumbers(e, p, momentumScale);
-    QStringList lines{QStringLiteral("energy (%1)").arg(unitText(kEnergyUnit)), QStringLiteral("  kinetic %1").arg(n.kinetic),
-                      QStringLiteral("  potential %1").arg(n.potential), QStringLiteral("  total %1").arg(n.total),
-                      QStringLiteral("momentum (%1)").arg(unitText(kMomentumUnit))};
+    QStringList lines{tr("energy (%1)").arg(unitText(kEnergyUnit)), QStringLiteral("  %1 %2").arg(tr("kinetic"), n.kinetic),
+                      QStringLiteral("  %1 %2").arg(tr("potential"), n.potential),
+                      QStringLiteral("  %1 %2").arg(tr("total"), n.total), tr("momentum (%1)").arg(unitText(kMomentumUnit))};
     if (column)
         lines << QStringLiteral("  x %1").arg(n.px) << QStringLiteral("  y %1").arg(n.py);
     else

@@ -12,6 +12,7 @@
 #include "sim/world/world.h"
 
 #include <QColor>
+#include <QCoreApplication>
 #include <QImage>
 #include <QLineF>
 #include <QStringList>
@@ -173,6 +174,8 @@ struct PaintedFrame {
 };
 
 class WorldPainter {
+    Q_DECLARE_TR_FUNCTIONS(WorldPainter)
+
 public:
     /// Paints the whole `area` (letterbox, box, balls, overlays).
     /// `devicePixelRatio` must be the paint device's, for sharp sprites.

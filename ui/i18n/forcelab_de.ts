@@ -33,6 +33,209 @@
     </message>
 </context>
 <context>
+    <name>Colour</name>
+    <message>
+        <source>sky blue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>blue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>red</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>orange</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yellow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>green</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>purple</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pink</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>black</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>grey</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>white</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>CommandLine</name>
+    <message>
+        <source>A workbench for forces and collisions of 2D balls.</source>
+        <translation>Eine Werkbank für Kräfte und Stöße von 2D-Kugeln.</translation>
+    </message>
+    <message>
+        <source>Lesson file or built-in lesson id.</source>
+        <translation>Lektionsdatei oder Kennung einer eingebauten Lektion.</translation>
+    </message>
+    <message>
+        <source>Save a picture of the window to FILE and quit.</source>
+        <translation>Ein Bild des Fensters in FILE speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>Seconds to run in real time before --screenshot (default 3).</source>
+        <translation>Sekunden Echtzeit vor --screenshot (Standard 3).</translation>
+    </message>
+    <message>
+        <source>For --screenshot: step the lesson to simulated time T (seconds) and take the picture there, paused, instead of --after.</source>
+        <translation>Für --screenshot: die Lektion bis zur simulierten Zeit T (Sekunden) rechnen und das Bild dort angehalten aufnehmen, statt --after.</translation>
+    </message>
+    <message>
+        <source>For --screenshot: the window&apos;s size in pixels (default: the screen).</source>
+        <translation>Für --screenshot: die Fenstergröße in Pixeln (Standard: der Bildschirm).</translation>
+    </message>
+    <message>
+        <source>Open in the stage view for a projector (F11; Escape leaves).</source>
+        <translation>In der Bühnenansicht für den Beamer öffnen (F11; Escape verlässt sie).</translation>
+    </message>
+    <message>
+        <source>Time drawing 1k, 10k and 50k balls offscreen and quit.</source>
+        <translation>Das Zeichnen von 1k, 10k und 50k Kugeln außerhalb des Bildschirms messen und beenden.</translation>
+    </message>
+    <message>
+        <source>Select ball N at the start (the Inspector shows its numbers).</source>
+        <translation>Kugel N beim Start auswählen (der Inspektor zeigt ihre Werte).</translation>
+    </message>
+    <message>
+        <source>Show the table of the balls (the Balls dock, or under the box with --present), with the selected ball.</source>
+        <translation>Die Tabelle der Kugeln zeigen (das Kugel-Dock, oder mit --present unter dem Kasten), mit der ausgewählten Kugel.</translation>
+    </message>
+    <message>
+        <source>Zoom in Z times on the selected ball (or the box&apos;s middle).</source>
+        <translation>Z-fach auf die ausgewählte Kugel (oder die Mitte des Kastens) zoomen.</translation>
+    </message>
+    <message>
+        <source>Follow the selected ball (with --select).</source>
+        <translation>Der ausgewählten Kugel folgen (mit --select).</translation>
+    </message>
+    <message>
+        <source>Zoom so every ball is seen (with --time: where they are then).</source>
+        <translation>So zoomen, dass jede Kugel zu sehen ist (mit --time: dort, wo sie dann sind).</translation>
+    </message>
+    <message>
+        <source>Show the program in language CODE (en, de or es) this time, without changing the remembered one (View &gt; Language).</source>
+        <translation>Das Programm diesmal in der Sprache CODE (en, de oder es) zeigen, ohne die gemerkte zu ändern (Ansicht &gt; Sprache).</translation>
+    </message>
+</context>
+<context>
+    <name>ForceModel</name>
+    <message>
+        <source>gravity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>random</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pointer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>between balls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>magnetic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>custom force</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Language</name>
+    <message>
+        <source>English</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>German</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spanish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This lesson is not written in your language yet: its text is shown in %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Overlay</name>
+    <message>
+        <source>velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line of impact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momenta  p = m v</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>forces by source</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Parameter</name>
     <message>
         <source>Box width</source>
@@ -292,6 +495,265 @@
     </message>
 </context>
 <context>
+    <name>ParameterHelp</name>
+    <message>
+        <source>Width of the box the balls live in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height of the box; y points down.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How a ball that crossed a wall is put back: clamp, mirror, exact (time of impact) or reverse.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Share of the speed into a wall that a bounce keeps: 1 loses nothing, 0 stops the ball.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A wall down the middle of the box; each ball stays on its side.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The wall test uses the ball&apos;s centre instead of its edge (stage 3&apos;s bug).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A wall at x = 0 (in lesson files: &quot;left&quot; in the walls list).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A wall at x = width.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A wall at y = 0.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A wall at y = height.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The method that moves the balls through one step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated time of one step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each step is split into this many equal sub-steps.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error allowed per sub-step by the adaptive integrators (rk45, ias15); ias15 works to the rounding floor where this asks for less.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ignore dt: every step moves the balls as if 1/60 s had passed (stage 5&apos;s bug).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Let a fixed step jump past a close pass it cannot follow instead of stopping there (stage 17&apos;s slingshot bug).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The same downward pull on every ball.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sideways part of gravity.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Downward part of gravity; 980 px/s² is Earth&apos;s if 1 px is 1 cm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A force against the velocity.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linear: F ∝ −v; quadratic: F ∝ −|v| v.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How strong the drag is: how fast a 10 px ball slows down.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mass: drag is a force, F = −k m(10 px) v, so a heavy ball slows down less and falls faster; none: the tutorial&apos;s model, every ball loses the same share of its speed; radius: air drag on spheres, × 10 px / r.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off, random (a new gust every step), smoothed (a bounded random walk), noise (smooth noise) or pointer (blown by the mouse).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest sideways push on a 10 px ball.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none: every ball is pushed alike; radius: by 10 px / r; mass: as a force, by m(10 px) / m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest change of the smoothed wind per step, as a share of its strength.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast the noise wind changes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A second wind computed beside the first for a second vane; it pushes nothing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A random push on every ball, centred on zero (stage 10).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off: a new random value every step. On: each ball keeps the value it drew first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest value of each component.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The course&apos;s Math.random() bug: each component is drawn in [0, strength) instead of [−strength, strength), so every ball drifts right and down at strength/2 on average.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An inverse-square pull or push from a fixed point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>attract or repel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the point is, across.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the point is, down.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S in a = S / d² for a 10 px ball.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The point&apos;s pull is never more than this near it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none, radius or mass, as for the wind.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The course&apos;s repulsion bug: the difference vector d times S / d² instead of its unit vector, so |a| = S / d, a 1/d law, not S / d².</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every ball tied to one anchor by a spring (Hooke&apos;s law).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the springs are tied, across.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the springs are tied, down.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stiffness per unit mass: a = −k (x − anchor), so ω = √k.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every pair of balls pulls together (or pushes apart for G &lt; 0).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The constant in F = G m₁ m₂ / r².</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ε in F = G m₁ m₂ r / (r² + ε²)^(3/2): the pull fades smoothly to zero inside ε.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each ball tied by a spring to the home of its colour.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stiffness of the spring to home, per unit mass.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mouse pointer pulls (hover) or pushes (pressed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S in a = S / d².</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The pointer&apos;s pull is never more than this.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A field out of the screen that turns every moving charge, F = q v × B, without changing its speed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How fast a 10 px ball of charge 1 turns: ω = q B m(10 px) / m; negative turns the other way.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A force law written as formulas of x, y, vx, vy, m, r, q, t, W, H and named constants (the Force editor).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On: the formulas are the acceleration (px/s²), the same for every mass; off: the force, divided by m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No ball moves faster than the limit (a stand-in for terminal velocity).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The limit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How touching pairs are found: brute, halved, sweep or grid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What a touching pair does: none, flag, 1d-reverse, 1d-elastic, 2d-axis or 2d-impulse.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Share of the approach speed a collision gives back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Find the moment of impact inside the step.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Under gravity, solve a pile&apos;s contacts several times per step so it stands.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Change speed to %1×</source>
@@ -463,6 +925,65 @@
     <message>
         <source>Total energy %1.</source>
         <translation>Gesamtenergie %1.</translation>
+    </message>
+</context>
+<context>
+    <name>WorldPainter</name>
+    <message>
+        <source>ball %1</source>
+        <translation type="unfinished">Kugel %1</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation type="unfinished">Tempo</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>accel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kinetic</source>
+        <translation type="unfinished">kinetisch</translation>
+    </message>
+    <message>
+        <source>potential</source>
+        <translation type="unfinished">potenziell</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation type="unfinished">gesamt</translation>
+    </message>
+    <message>
+        <source>energy in %1: %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentum (%1, %2) %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentum in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy (%1)</source>
+        <translation type="unfinished">Energie (%1%2) {1)?}</translation>
+    </message>
+    <message>
+        <source>momentum (%1)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1234,10 +1755,6 @@ In deinem Webbrowser öffnen?</translation>
     <message>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
         <translation>&lt;p&gt;Diese Lektion hat keine Hinweise für Lehrkräfte.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>This lesson is not written in your language yet: its text is shown in English.</source>
-        <translation>Diese Lektion gibt es noch nicht auf Deutsch: Ihr Text wird auf Englisch gezeigt.</translation>
     </message>
 </context>
 <context>

@@ -33,6 +33,7 @@ const QList<Language>& shippedLanguages()
     static const QList<Language> languages{
         {QStringLiteral("en"), QStringLiteral("English")},
         {QStringLiteral("de"), QStringLiteral("Deutsch")},
+        {QStringLiteral("es"), QStringLiteral("Español")},
     };
     return languages;
 }
@@ -72,7 +73,9 @@ bool applyLanguage(const QString& code)
     // English, never with thousands separators (a typed number is one group
     // of digits). Lesson files, traces and the command line keep their one
     // format: they are read with the C locale or from_chars, not this one.
-    QLocale locale = code == QLatin1String("de") ? QLocale(QLocale::German, QLocale::Germany) : QLocale::c();
+    QLocale locale = code == QLatin1String("de")   ? QLocale(QLocale::German, QLocale::Germany)
+                     : code == QLatin1String("es") ? QLocale(QLocale::Spanish, QLocale::Spain)
+                                                   : QLocale::c();
     locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
     QLocale::setDefault(locale);
     return true;

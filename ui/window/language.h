@@ -24,6 +24,7 @@ bool applyLanguage(const QString& code);
 /// The language applied now ("en" until another is).
 QString currentLanguage();
 
+
 /// The language the settings remember, or "en"; a value that is not a
 /// shipped language gives "en" and `problem` says so (key and value).
 QString rememberedLanguage(QString* problem = nullptr);

@@ -3,6 +3,8 @@
 #include "ui/controls/focus_ring.h"
 
 #include "lessons/atomic_file.h"
+#include "lessons/lesson_languages.h"
+#include "ui/window/language.h"
 #include "lessons/lesson_markup.h"
 #include "ui/drawing/png_file.h"
 
@@ -461,8 +463,11 @@ bool MainWindow::openLesson(const QString& pathOrId)
     return setLesson(*result.lesson);
 }
 
-bool MainWindow::setLesson(const Lesson& lesson)
+bool MainWindow::setLesson(const Lesson& loaded)
 {
+    // The lesson's words in the program's language when it has them, else
+    // in its own; the lesson panel says which (lessons/lesson_languages.h).
+    const Lesson lesson = lessons::shownIn(loaded, currentLanguage());
     // The old lesson's panes go first: their settings may not suit the new scene.
     m_controller->setComparePanes({});
     if (m_controller->setScene(lesson.scene)) {

@@ -15,6 +15,7 @@
 #include "ui/window/save_lesson_dialog.h"
 #include "ui/stage/stage_view.h"
 #include "ui/drawing/handbook.h"
+#include "ui/window/language.h"
 #include "ui/docks/code_dock.h"
 #include "ui/controls/settings_editor.h"
 #include "ui/docks/inspector_dock.h"
@@ -209,7 +210,7 @@ void MainWindow::exportHandbook()
     if (path.isEmpty())
         return;
     QString why;
-    if (!lessons::writeFileAtomically(path, builtInHandbookHtml().toUtf8(), &why)) {
+    if (!lessons::writeFileAtomically(path, builtInHandbookHtml(currentLanguage()).toUtf8(), &why)) {
         QMessageBox::warning(this, tr("Export Teacher Handbook"),
                              tr("%1\nThe handbook was not written; an old file there is unchanged.").arg(why));
         return;

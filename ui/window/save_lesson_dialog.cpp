@@ -127,7 +127,7 @@ void SaveLessonDialog::updateState()
     else if (const QStringList s = lessons::unmeasuredSentences(m_from, m_text->toPlainText()); !s.isEmpty())
         problem = tr("“%1” has a number or a comparison (“%2”) that nothing measures on this scene, and a lesson "
                      "must not say what it does not check. Write it without, or add a claim to the file later.")
-                      .arg(s.front(), lessons::numberOrComparison(s.front()));
+                      .arg(s.front(), lessons::numberOrComparison(s.front(), m_from.language));
     else if (path().isEmpty())
         problem = tr("Choose the file to save to.");
     m_problem->setText(problem);

@@ -16,6 +16,7 @@
 
 #include "sim/world/number_text.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QList>
 
@@ -202,12 +203,12 @@ void paintArrows(const PaintContext& c)
     {
         QList<LegendRow> rows;
         if (options.overlays.velocity)
-            rows.append({QStringLiteral("velocity"), QStringLiteral("px/s"), scales.velocity, canvas_colors::kVelocity});
+            rows.append({QCoreApplication::translate("Overlay", "velocity"), QStringLiteral("px/s"), scales.velocity, canvas_colors::kVelocity});
         if (options.overlays.acceleration && accelerations)
-            rows.append({QStringLiteral("acceleration"), QStringLiteral("px/s²"), scales.acceleration,
+            rows.append({QCoreApplication::translate("Overlay", "acceleration"), QStringLiteral("px/s²"), scales.acceleration,
                          canvas_colors::kAcceleration});
         if ((options.overlays.forces || options.overlays.forceSources) && accelerations)
-            rows.append({QStringLiteral("force"), QStringLiteral("mass·px/s²"), scales.force, canvas_colors::kForce});
+            rows.append({QCoreApplication::translate("Overlay", "force"), QStringLiteral("mass·px/s²"), scales.force, canvas_colors::kForce});
         paintLegend(c, rows);
     }
 }

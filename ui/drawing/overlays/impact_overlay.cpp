@@ -6,6 +6,7 @@
 
 #include "arrow.h"
 
+#include <QCoreApplication>
 #include <QList>
 
 #include <cmath>
@@ -63,9 +64,9 @@ void paintImpact(const PaintContext& context)
     p.setFont(font);
     p.setPen(QColor::fromRgb(canvas_colors::kImpactLine));
     p.drawText(view.toWidget(c.positionB + n * (c.radiusB + reach)) + QPointF(4 * k, -4 * k),
-               QStringLiteral("line of impact"));
+               QCoreApplication::translate("Overlay", "line of impact"));
     p.setPen(QColor::fromRgb(canvas_colors::kTangent));
-    p.drawText(view.toWidget(contact + t * reach) + QPointF(4 * k, -4 * k), QStringLiteral("tangent"));
+    p.drawText(view.toWidget(contact + t * reach) + QPointF(4 * k, -4 * k), QCoreApplication::translate("Overlay", "tangent"));
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "arrow.h"
 #include "panel.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QList>
 
@@ -46,7 +47,7 @@ void paintMomenta(const PaintContext& c)
     const int n = balls.size();
     const double k = c.options.lineScale;
     const QFont font = panelFont(kTotalsPixels, k);
-    drawPanel(p, panel, font, {QStringLiteral("momenta  p = m v")}, {}, k);
+    drawPanel(p, panel, font, {QCoreApplication::translate("Overlay", "momenta  p = m v")}, {}, k);
     const QFontMetricsF fm(font);
     const double pad = 8.0 * k;
     // Below the title: the chain of arrows and their sum.

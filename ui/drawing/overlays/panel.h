@@ -12,6 +12,8 @@
 #include <QSizeF>
 #include <QStringList>
 
+#include <string_view>
+
 class QPainter;
 
 namespace forcelab {
@@ -34,5 +36,10 @@ void drawPanel(QPainter& p, const QRectF& panel, const QFont& font, const QStrin
 
 /// The legend of the per-source force arrows: a title and one line per model that is on.
 QStringList sourceLegend(const sim::WorldSettings& settings);
+
+/// A force model's name (sim/forces/force_models.h) in the program's language.
+QString forceModelName(std::string_view name);
+/// Every force model name the translation list holds, in English (for the test).
+QStringList listedForceModelNames();
 
 } // namespace forcelab
