@@ -36,47 +36,47 @@
     <name>Colour</name>
     <message>
         <source>sky blue</source>
-        <translation type="unfinished"></translation>
+        <translation>himmelblau</translation>
     </message>
     <message>
         <source>blue</source>
-        <translation type="unfinished"></translation>
+        <translation>blau</translation>
     </message>
     <message>
         <source>red</source>
-        <translation type="unfinished"></translation>
+        <translation>rot</translation>
     </message>
     <message>
         <source>orange</source>
-        <translation type="unfinished"></translation>
+        <translation>orange</translation>
     </message>
     <message>
         <source>yellow</source>
-        <translation type="unfinished"></translation>
+        <translation>gelb</translation>
     </message>
     <message>
         <source>green</source>
-        <translation type="unfinished"></translation>
+        <translation>grün</translation>
     </message>
     <message>
         <source>purple</source>
-        <translation type="unfinished"></translation>
+        <translation>lila</translation>
     </message>
     <message>
         <source>pink</source>
-        <translation type="unfinished"></translation>
+        <translation>rosa</translation>
     </message>
     <message>
         <source>black</source>
-        <translation type="unfinished"></translation>
+        <translation>schwarz</translation>
     </message>
     <message>
         <source>grey</source>
-        <translation type="unfinished"></translation>
+        <translation>grau</translation>
     </message>
     <message>
         <source>white</source>
-        <translation type="unfinished"></translation>
+        <translation>weiß</translation>
     </message>
 </context>
 <context>
@@ -142,97 +142,97 @@
     <name>ForceModel</name>
     <message>
         <source>gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwerkraft</translation>
     </message>
     <message>
         <source>drag</source>
-        <translation type="unfinished"></translation>
+        <translation>Luftwiderstand</translation>
     </message>
     <message>
         <source>wind</source>
-        <translation type="unfinished"></translation>
+        <translation>Wind</translation>
     </message>
     <message>
         <source>random</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufall</translation>
     </message>
     <message>
         <source>point force</source>
-        <translation type="unfinished"></translation>
+        <translation>Punktkraft</translation>
     </message>
     <message>
         <source>pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeiger</translation>
     </message>
     <message>
         <source>spring</source>
-        <translation type="unfinished"></translation>
+        <translation>Feder</translation>
     </message>
     <message>
         <source>homing</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückholkraft</translation>
     </message>
     <message>
         <source>between balls</source>
-        <translation type="unfinished"></translation>
+        <translation>zwischen Kugeln</translation>
     </message>
     <message>
         <source>magnetic</source>
-        <translation type="unfinished"></translation>
+        <translation>magnetisch</translation>
     </message>
     <message>
         <source>custom force</source>
-        <translation type="unfinished"></translation>
+        <translation>eigene Kraft</translation>
     </message>
 </context>
 <context>
     <name>Language</name>
     <message>
         <source>English</source>
-        <translation type="unfinished"></translation>
+        <translation>Englisch</translation>
     </message>
     <message>
         <source>German</source>
-        <translation type="unfinished"></translation>
+        <translation>Deutsch</translation>
     </message>
     <message>
         <source>Spanish</source>
-        <translation type="unfinished"></translation>
+        <translation>Spanisch</translation>
     </message>
     <message>
         <source>This lesson is not written in your language yet: its text is shown in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Lektion gibt es noch nicht in deiner Sprache: Ihr Text wird auf %1 gezeigt.</translation>
     </message>
 </context>
 <context>
     <name>Overlay</name>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit</translation>
     </message>
     <message>
         <source>acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschleunigung</translation>
     </message>
     <message>
         <source>force</source>
-        <translation type="unfinished"></translation>
+        <translation>Kraft</translation>
     </message>
     <message>
         <source>line of impact</source>
-        <translation type="unfinished"></translation>
+        <translation>Stoßlinie</translation>
     </message>
     <message>
         <source>tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>Tangente</translation>
     </message>
     <message>
         <source>momenta  p = m v</source>
-        <translation type="unfinished"></translation>
+        <translation>Impulse  p = m v</translation>
     </message>
     <message>
         <source>forces by source</source>
-        <translation type="unfinished"></translation>
+        <translation>Kräfte nach Quelle</translation>
     </message>
 </context>
 <context>
@@ -498,259 +498,259 @@
     <name>ParameterHelp</name>
     <message>
         <source>Width of the box the balls live in.</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite des Kastens, in dem die Kugeln leben.</translation>
     </message>
     <message>
         <source>Height of the box; y points down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe des Kastens; y zeigt nach unten.</translation>
     </message>
     <message>
         <source>How a ball that crossed a wall is put back: clamp, mirror, exact (time of impact) or reverse.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie eine Kugel, die eine Wand überquert hat, zurückgesetzt wird: clamp, mirror, exact (Zeitpunkt des Aufpralls) oder reverse.</translation>
     </message>
     <message>
         <source>Share of the speed into a wall that a bounce keeps: 1 loses nothing, 0 stops the ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteil des Tempos auf eine Wand zu, den ein Abprall behält: 1 verliert nichts, 0 stoppt die Kugel.</translation>
     </message>
     <message>
         <source>A wall down the middle of the box; each ball stays on its side.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand in der Mitte des Kastens; jede Kugel bleibt auf ihrer Seite.</translation>
     </message>
     <message>
         <source>The wall test uses the ball&apos;s centre instead of its edge (stage 3&apos;s bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Wandtest nimmt den Mittelpunkt der Kugel statt ihres Rands (der Fehler aus Stufe 3).</translation>
     </message>
     <message>
         <source>A wall at x = 0 (in lesson files: &quot;left&quot; in the walls list).</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand bei x = 0 (in Lektionsdateien: &quot;left&quot; in der Liste walls).</translation>
     </message>
     <message>
         <source>A wall at x = width.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand bei x = Breite.</translation>
     </message>
     <message>
         <source>A wall at y = 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand bei y = 0.</translation>
     </message>
     <message>
         <source>A wall at y = height.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Wand bei y = Höhe.</translation>
     </message>
     <message>
         <source>The method that moves the balls through one step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Verfahren, das die Kugeln einen Schritt weiterbewegt.</translation>
     </message>
     <message>
         <source>Simulated time of one step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulierte Zeit eines Schritts.</translation>
     </message>
     <message>
         <source>Each step is split into this many equal sub-steps.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jeder Schritt wird in so viele gleiche Teilschritte geteilt.</translation>
     </message>
     <message>
         <source>Error allowed per sub-step by the adaptive integrators (rk45, ias15); ias15 works to the rounding floor where this asks for less.</source>
-        <translation type="unfinished"></translation>
+        <translation>Erlaubter Fehler pro Teilschritt für die adaptiven Integratoren (rk45, ias15); ias15 rechnet bis an die Rundungsgrenze, wo hier weniger verlangt wird.</translation>
     </message>
     <message>
         <source>Ignore dt: every step moves the balls as if 1/60 s had passed (stage 5&apos;s bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>dt nicht beachten: jeder Schritt bewegt die Kugeln, als wären 1/60 s vergangen (der Fehler aus Stufe 5).</translation>
     </message>
     <message>
         <source>Let a fixed step jump past a close pass it cannot follow instead of stopping there (stage 17&apos;s slingshot bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen festen Schritt über einen nahen Vorbeiflug springen lassen, dem er nicht folgen kann, statt dort anzuhalten (der Schleuder-Fehler aus Stufe 17).</translation>
     </message>
     <message>
         <source>The same downward pull on every ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Derselbe Zug nach unten auf jede Kugel.</translation>
     </message>
     <message>
         <source>Sideways part of gravity.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seitlicher Anteil der Schwerkraft.</translation>
     </message>
     <message>
         <source>Downward part of gravity; 980 px/s² is Earth&apos;s if 1 px is 1 cm.</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteil der Schwerkraft nach unten; 980 px/s² ist die der Erde, wenn 1 px 1 cm ist.</translation>
     </message>
     <message>
         <source>A force against the velocity.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Kraft gegen die Geschwindigkeit.</translation>
     </message>
     <message>
         <source>linear: F ∝ −v; quadratic: F ∝ −|v| v.</source>
-        <translation type="unfinished"></translation>
+        <translation>linear: F ∝ −v; quadratic: F ∝ −|v| v.</translation>
     </message>
     <message>
         <source>How strong the drag is: how fast a 10 px ball slows down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie stark der Luftwiderstand ist: wie schnell eine 10-px-Kugel langsamer wird.</translation>
     </message>
     <message>
         <source>mass: drag is a force, F = −k m(10 px) v, so a heavy ball slows down less and falls faster; none: the tutorial&apos;s model, every ball loses the same share of its speed; radius: air drag on spheres, × 10 px / r.</source>
-        <translation type="unfinished"></translation>
+        <translation>mass: der Widerstand ist eine Kraft, F = −k m(10 px) v, also wird eine schwere Kugel weniger gebremst und fällt schneller; none: das Modell des Kurses, jede Kugel verliert denselben Anteil ihres Tempos; radius: Luftwiderstand von Kugeln, × 10 px / r.</translation>
     </message>
     <message>
         <source>off, random (a new gust every step), smoothed (a bounded random walk), noise (smooth noise) or pointer (blown by the mouse).</source>
-        <translation type="unfinished"></translation>
+        <translation>off, random (jeden Schritt eine neue Böe), smoothed (eine begrenzte Irrfahrt), noise (glattes Rauschen) oder pointer (von der Maus geblasen).</translation>
     </message>
     <message>
         <source>Largest sideways push on a 10 px ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter seitlicher Stoß auf eine 10-px-Kugel.</translation>
     </message>
     <message>
         <source>none: every ball is pushed alike; radius: by 10 px / r; mass: as a force, by m(10 px) / m.</source>
-        <translation type="unfinished"></translation>
+        <translation>none: jede Kugel wird gleich geschoben; radius: mit 10 px / r; mass: als Kraft, mit m(10 px) / m.</translation>
     </message>
     <message>
         <source>Largest change of the smoothed wind per step, as a share of its strength.</source>
-        <translation type="unfinished"></translation>
+        <translation>Größte Änderung des geglätteten Winds pro Schritt, als Anteil seiner Stärke.</translation>
     </message>
     <message>
         <source>How fast the noise wind changes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie schnell sich der Rauschwind ändert.</translation>
     </message>
     <message>
         <source>A second wind computed beside the first for a second vane; it pushes nothing.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein zweiter Wind, neben dem ersten berechnet, für ein zweites Windrad; er schiebt nichts.</translation>
     </message>
     <message>
         <source>A random push on every ball, centred on zero (stage 10).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein zufälliger Stoß auf jede Kugel, um null zentriert (Stufe 10).</translation>
     </message>
     <message>
         <source>Off: a new random value every step. On: each ball keeps the value it drew first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus: jeden Schritt ein neuer Zufallswert. An: jede Kugel behält den Wert, den sie zuerst gezogen hat.</translation>
     </message>
     <message>
         <source>Largest value of each component.</source>
-        <translation type="unfinished"></translation>
+        <translation>Größter Wert jeder Komponente.</translation>
     </message>
     <message>
         <source>The course&apos;s Math.random() bug: each component is drawn in [0, strength) instead of [−strength, strength), so every ball drifts right and down at strength/2 on average.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Math.random()-Fehler des Kurses: jede Komponente wird aus [0, Stärke) statt aus [−Stärke, Stärke) gezogen, also treibt jede Kugel im Mittel mit Stärke/2 nach rechts und unten.</translation>
     </message>
     <message>
         <source>An inverse-square pull or push from a fixed point.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Zug oder Schub von einem festen Punkt, umgekehrt proportional zum Quadrat des Abstands.</translation>
     </message>
     <message>
         <source>attract or repel.</source>
-        <translation type="unfinished"></translation>
+        <translation>attract oder repel.</translation>
     </message>
     <message>
         <source>Where the point is, across.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo der Punkt ist, waagerecht.</translation>
     </message>
     <message>
         <source>Where the point is, down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo der Punkt ist, senkrecht.</translation>
     </message>
     <message>
         <source>S in a = S / d² for a 10 px ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>S in a = S / d² für eine 10-px-Kugel.</translation>
     </message>
     <message>
         <source>The point&apos;s pull is never more than this near it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Zug des Punkts ist in seiner Nähe nie größer als dieser Wert.</translation>
     </message>
     <message>
         <source>none, radius or mass, as for the wind.</source>
-        <translation type="unfinished"></translation>
+        <translation>none, radius oder mass, wie beim Wind.</translation>
     </message>
     <message>
         <source>The course&apos;s repulsion bug: the difference vector d times S / d² instead of its unit vector, so |a| = S / d, a 1/d law, not S / d².</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Abstoßungs-Fehler des Kurses: der Abstandsvektor d mal S / d² statt seines Einheitsvektors, also |a| = S / d, ein 1/d-Gesetz statt S / d².</translation>
     </message>
     <message>
         <source>Every ball tied to one anchor by a spring (Hooke&apos;s law).</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Kugel hängt an einer Feder an einem Anker (hookesches Gesetz).</translation>
     </message>
     <message>
         <source>Where the springs are tied, across.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo die Federn befestigt sind, waagerecht.</translation>
     </message>
     <message>
         <source>Where the springs are tied, down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo die Federn befestigt sind, senkrecht.</translation>
     </message>
     <message>
         <source>Stiffness per unit mass: a = −k (x − anchor), so ω = √k.</source>
-        <translation type="unfinished"></translation>
+        <translation>Steifigkeit pro Masseneinheit: a = −k (x − Anker), also ω = √k.</translation>
     </message>
     <message>
         <source>Every pair of balls pulls together (or pushes apart for G &lt; 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>Jedes Paar von Kugeln zieht sich an (oder stößt sich ab für G &lt; 0).</translation>
     </message>
     <message>
         <source>The constant in F = G m₁ m₂ / r².</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Konstante in F = G m₁ m₂ / r².</translation>
     </message>
     <message>
         <source>ε in F = G m₁ m₂ r / (r² + ε²)^(3/2): the pull fades smoothly to zero inside ε.</source>
-        <translation type="unfinished"></translation>
+        <translation>ε in F = G m₁ m₂ r / (r² + ε²)^(3/2): innerhalb von ε geht der Zug glatt auf null zurück.</translation>
     </message>
     <message>
         <source>Each ball tied by a spring to the home of its colour.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Kugel hängt an einer Feder am Zuhause ihrer Farbe.</translation>
     </message>
     <message>
         <source>Stiffness of the spring to home, per unit mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Steifigkeit der Feder nach Hause, pro Masseneinheit.</translation>
     </message>
     <message>
         <source>The mouse pointer pulls (hover) or pushes (pressed).</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Mauszeiger zieht (beim Darüberfahren) oder schiebt (gedrückt).</translation>
     </message>
     <message>
         <source>S in a = S / d².</source>
-        <translation type="unfinished"></translation>
+        <translation>S in a = S / d².</translation>
     </message>
     <message>
         <source>The pointer&apos;s pull is never more than this.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Zug des Zeigers ist nie größer als dieser Wert.</translation>
     </message>
     <message>
         <source>A field out of the screen that turns every moving charge, F = q v × B, without changing its speed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Feld aus dem Bildschirm heraus, das jede bewegte Ladung ablenkt, F = q v × B, ohne ihr Tempo zu ändern.</translation>
     </message>
     <message>
         <source>How fast a 10 px ball of charge 1 turns: ω = q B m(10 px) / m; negative turns the other way.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie schnell sich eine 10-px-Kugel mit Ladung 1 dreht: ω = q B m(10 px) / m; negativ dreht andersherum.</translation>
     </message>
     <message>
         <source>A force law written as formulas of x, y, vx, vy, m, r, q, t, W, H and named constants (the Force editor).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Kraftgesetz als Formeln von x, y, vx, vy, m, r, q, t, W, H und benannten Konstanten (der Kraft-Editor).</translation>
     </message>
     <message>
         <source>On: the formulas are the acceleration (px/s²), the same for every mass; off: the force, divided by m.</source>
-        <translation type="unfinished"></translation>
+        <translation>An: die Formeln sind die Beschleunigung (px/s²), für jede Masse gleich; aus: die Kraft, geteilt durch m.</translation>
     </message>
     <message>
         <source>No ball moves faster than the limit (a stand-in for terminal velocity).</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Kugel bewegt sich schneller als die Grenze (ein Ersatz für die Endgeschwindigkeit).</translation>
     </message>
     <message>
         <source>The limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Grenze.</translation>
     </message>
     <message>
         <source>How touching pairs are found: brute, halved, sweep or grid.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie sich berührende Paare gefunden werden: brute, halved, sweep oder grid.</translation>
     </message>
     <message>
         <source>What a touching pair does: none, flag, 1d-reverse, 1d-elastic, 2d-axis or 2d-impulse.</source>
-        <translation type="unfinished"></translation>
+        <translation>Was ein sich berührendes Paar tut: none, flag, 1d-reverse, 1d-elastic, 2d-axis oder 2d-impulse.</translation>
     </message>
     <message>
         <source>Share of the approach speed a collision gives back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteil der Annäherungsgeschwindigkeit, den ein Stoß zurückgibt.</translation>
     </message>
     <message>
         <source>Find the moment of impact inside the step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Den Zeitpunkt des Aufpralls innerhalb des Schritts finden.</translation>
     </message>
     <message>
         <source>Under gravity, solve a pile&apos;s contacts several times per step so it stands.</source>
-        <translation type="unfinished"></translation>
+        <translation>Unter Schwerkraft die Kontakte eines Stapels mehrmals pro Schritt lösen, damit er steht.</translation>
     </message>
 </context>
 <context>
@@ -931,59 +931,59 @@
     <name>WorldPainter</name>
     <message>
         <source>ball %1</source>
-        <translation type="unfinished">Kugel %1</translation>
+        <translation>Kugel %1</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished">Tempo</translation>
+        <translation>Tempo</translation>
     </message>
     <message>
         <source>position</source>
-        <translation type="unfinished"></translation>
+        <translation>Ort</translation>
     </message>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschw.</translation>
     </message>
     <message>
         <source>accel.</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschl.</translation>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished">kinetisch</translation>
+        <translation>kinetisch</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished">potenziell</translation>
+        <translation>potenziell</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished">gesamt</translation>
+        <translation>gesamt</translation>
     </message>
     <message>
         <source>energy in %1: %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie in %1: %2 %3</translation>
     </message>
     <message>
         <source>momentum (%1, %2) %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls (%1, %2) %3</translation>
     </message>
     <message>
         <source>energy in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie in %1</translation>
     </message>
     <message>
         <source>momentum in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls in %1</translation>
     </message>
     <message>
         <source>energy (%1)</source>
-        <translation type="unfinished">Energie (%1%2) {1)?}</translation>
+        <translation>Energie (%1)</translation>
     </message>
     <message>
         <source>momentum (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Impuls (%1)</translation>
     </message>
 </context>
 <context>

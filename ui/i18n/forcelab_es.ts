@@ -36,47 +36,47 @@
     <name>Colour</name>
     <message>
         <source>sky blue</source>
-        <translation type="unfinished"></translation>
+        <translation>azul cielo</translation>
     </message>
     <message>
         <source>blue</source>
-        <translation type="unfinished"></translation>
+        <translation>azul</translation>
     </message>
     <message>
         <source>red</source>
-        <translation type="unfinished"></translation>
+        <translation>rojo</translation>
     </message>
     <message>
         <source>orange</source>
-        <translation type="unfinished"></translation>
+        <translation>naranja</translation>
     </message>
     <message>
         <source>yellow</source>
-        <translation type="unfinished"></translation>
+        <translation>amarillo</translation>
     </message>
     <message>
         <source>green</source>
-        <translation type="unfinished"></translation>
+        <translation>verde</translation>
     </message>
     <message>
         <source>purple</source>
-        <translation type="unfinished"></translation>
+        <translation>morado</translation>
     </message>
     <message>
         <source>pink</source>
-        <translation type="unfinished"></translation>
+        <translation>rosa</translation>
     </message>
     <message>
         <source>black</source>
-        <translation type="unfinished"></translation>
+        <translation>negro</translation>
     </message>
     <message>
         <source>grey</source>
-        <translation type="unfinished"></translation>
+        <translation>gris</translation>
     </message>
     <message>
         <source>white</source>
-        <translation type="unfinished"></translation>
+        <translation>blanco</translation>
     </message>
 </context>
 <context>
@@ -142,97 +142,97 @@
     <name>ForceModel</name>
     <message>
         <source>gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>gravedad</translation>
     </message>
     <message>
         <source>drag</source>
-        <translation type="unfinished"></translation>
+        <translation>rozamiento</translation>
     </message>
     <message>
         <source>wind</source>
-        <translation type="unfinished"></translation>
+        <translation>viento</translation>
     </message>
     <message>
         <source>random</source>
-        <translation type="unfinished"></translation>
+        <translation>aleatoria</translation>
     </message>
     <message>
         <source>point force</source>
-        <translation type="unfinished"></translation>
+        <translation>fuerza de un punto</translation>
     </message>
     <message>
         <source>pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>puntero</translation>
     </message>
     <message>
         <source>spring</source>
-        <translation type="unfinished"></translation>
+        <translation>muelle</translation>
     </message>
     <message>
         <source>homing</source>
-        <translation type="unfinished"></translation>
+        <translation>regreso a casa</translation>
     </message>
     <message>
         <source>between balls</source>
-        <translation type="unfinished"></translation>
+        <translation>entre bolas</translation>
     </message>
     <message>
         <source>magnetic</source>
-        <translation type="unfinished"></translation>
+        <translation>magnética</translation>
     </message>
     <message>
         <source>custom force</source>
-        <translation type="unfinished"></translation>
+        <translation>fuerza propia</translation>
     </message>
 </context>
 <context>
     <name>Language</name>
     <message>
         <source>English</source>
-        <translation type="unfinished"></translation>
+        <translation>inglés</translation>
     </message>
     <message>
         <source>German</source>
-        <translation type="unfinished"></translation>
+        <translation>alemán</translation>
     </message>
     <message>
         <source>Spanish</source>
-        <translation type="unfinished"></translation>
+        <translation>español</translation>
     </message>
     <message>
         <source>This lesson is not written in your language yet: its text is shown in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Esta lección aún no está escrita en tu idioma: su texto se muestra en %1.</translation>
     </message>
 </context>
 <context>
     <name>Overlay</name>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad</translation>
     </message>
     <message>
         <source>acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>aceleración</translation>
     </message>
     <message>
         <source>force</source>
-        <translation type="unfinished"></translation>
+        <translation>fuerza</translation>
     </message>
     <message>
         <source>line of impact</source>
-        <translation type="unfinished"></translation>
+        <translation>línea de impacto</translation>
     </message>
     <message>
         <source>tangent</source>
-        <translation type="unfinished"></translation>
+        <translation>tangente</translation>
     </message>
     <message>
         <source>momenta  p = m v</source>
-        <translation type="unfinished"></translation>
+        <translation>momentos  p = m v</translation>
     </message>
     <message>
         <source>forces by source</source>
-        <translation type="unfinished"></translation>
+        <translation>fuerzas por origen</translation>
     </message>
 </context>
 <context>
@@ -498,259 +498,259 @@
     <name>ParameterHelp</name>
     <message>
         <source>Width of the box the balls live in.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ancho de la caja en la que viven las bolas.</translation>
     </message>
     <message>
         <source>Height of the box; y points down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Alto de la caja; y apunta hacia abajo.</translation>
     </message>
     <message>
         <source>How a ball that crossed a wall is put back: clamp, mirror, exact (time of impact) or reverse.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cómo se devuelve una bola que ha cruzado una pared: clamp, mirror, exact (instante del choque) o reverse.</translation>
     </message>
     <message>
         <source>Share of the speed into a wall that a bounce keeps: 1 loses nothing, 0 stops the ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte de la rapidez contra la pared que conserva un rebote: 1 no pierde nada, 0 detiene la bola.</translation>
     </message>
     <message>
         <source>A wall down the middle of the box; each ball stays on its side.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared en el centro de la caja; cada bola se queda en su lado.</translation>
     </message>
     <message>
         <source>The wall test uses the ball&apos;s centre instead of its edge (stage 3&apos;s bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>La prueba de la pared usa el centro de la bola en lugar de su borde (el error de la etapa 3).</translation>
     </message>
     <message>
         <source>A wall at x = 0 (in lesson files: &quot;left&quot; in the walls list).</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared en x = 0 (en los archivos de lección: &quot;left&quot; en la lista walls).</translation>
     </message>
     <message>
         <source>A wall at x = width.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared en x = ancho.</translation>
     </message>
     <message>
         <source>A wall at y = 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared en y = 0.</translation>
     </message>
     <message>
         <source>A wall at y = height.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared en y = alto.</translation>
     </message>
     <message>
         <source>The method that moves the balls through one step.</source>
-        <translation type="unfinished"></translation>
+        <translation>El método que mueve las bolas durante un paso.</translation>
     </message>
     <message>
         <source>Simulated time of one step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo simulado de un paso.</translation>
     </message>
     <message>
         <source>Each step is split into this many equal sub-steps.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada paso se divide en tantos subpasos iguales.</translation>
     </message>
     <message>
         <source>Error allowed per sub-step by the adaptive integrators (rk45, ias15); ias15 works to the rounding floor where this asks for less.</source>
-        <translation type="unfinished"></translation>
+        <translation>Error permitido por subpaso en los integradores adaptativos (rk45, ias15); ias15 llega al límite del redondeo cuando aquí se pide menos.</translation>
     </message>
     <message>
         <source>Ignore dt: every step moves the balls as if 1/60 s had passed (stage 5&apos;s bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ignorar dt: cada paso mueve las bolas como si hubiera pasado 1/60 s (el error de la etapa 5).</translation>
     </message>
     <message>
         <source>Let a fixed step jump past a close pass it cannot follow instead of stopping there (stage 17&apos;s slingshot bug).</source>
-        <translation type="unfinished"></translation>
+        <translation>Dejar que un paso fijo salte un acercamiento que no puede seguir en lugar de detenerse allí (el error de la honda de la etapa 17).</translation>
     </message>
     <message>
         <source>The same downward pull on every ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>La misma atracción hacia abajo sobre cada bola.</translation>
     </message>
     <message>
         <source>Sideways part of gravity.</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte lateral de la gravedad.</translation>
     </message>
     <message>
         <source>Downward part of gravity; 980 px/s² is Earth&apos;s if 1 px is 1 cm.</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte de la gravedad hacia abajo; 980 px/s² es la de la Tierra si 1 px es 1 cm.</translation>
     </message>
     <message>
         <source>A force against the velocity.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una fuerza contra la velocidad.</translation>
     </message>
     <message>
         <source>linear: F ∝ −v; quadratic: F ∝ −|v| v.</source>
-        <translation type="unfinished"></translation>
+        <translation>linear: F ∝ −v; quadratic: F ∝ −|v| v.</translation>
     </message>
     <message>
         <source>How strong the drag is: how fast a 10 px ball slows down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuánto frena el rozamiento: lo rápido que se frena una bola de 10 px.</translation>
     </message>
     <message>
         <source>mass: drag is a force, F = −k m(10 px) v, so a heavy ball slows down less and falls faster; none: the tutorial&apos;s model, every ball loses the same share of its speed; radius: air drag on spheres, × 10 px / r.</source>
-        <translation type="unfinished"></translation>
+        <translation>mass: el rozamiento es una fuerza, F = −k m(10 px) v, así que una bola pesada se frena menos y cae más rápido; none: el modelo del curso, cada bola pierde la misma parte de su rapidez; radius: rozamiento del aire sobre esferas, × 10 px / r.</translation>
     </message>
     <message>
         <source>off, random (a new gust every step), smoothed (a bounded random walk), noise (smooth noise) or pointer (blown by the mouse).</source>
-        <translation type="unfinished"></translation>
+        <translation>off, random (una ráfaga nueva en cada paso), smoothed (un paseo aleatorio acotado), noise (ruido suave) o pointer (soplado por el ratón).</translation>
     </message>
     <message>
         <source>Largest sideways push on a 10 px ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mayor empuje lateral sobre una bola de 10 px.</translation>
     </message>
     <message>
         <source>none: every ball is pushed alike; radius: by 10 px / r; mass: as a force, by m(10 px) / m.</source>
-        <translation type="unfinished"></translation>
+        <translation>none: todas las bolas reciben el mismo empuje; radius: por 10 px / r; mass: como una fuerza, por m(10 px) / m.</translation>
     </message>
     <message>
         <source>Largest change of the smoothed wind per step, as a share of its strength.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mayor cambio del viento suavizado por paso, como parte de su intensidad.</translation>
     </message>
     <message>
         <source>How fast the noise wind changes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo rápido que cambia el viento de ruido.</translation>
     </message>
     <message>
         <source>A second wind computed beside the first for a second vane; it pushes nothing.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un segundo viento calculado junto al primero para una segunda veleta; no empuja nada.</translation>
     </message>
     <message>
         <source>A random push on every ball, centred on zero (stage 10).</source>
-        <translation type="unfinished"></translation>
+        <translation>Un empujón aleatorio sobre cada bola, centrado en cero (etapa 10).</translation>
     </message>
     <message>
         <source>Off: a new random value every step. On: each ball keeps the value it drew first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Desactivado: un valor aleatorio nuevo en cada paso. Activado: cada bola conserva el valor que sacó la primera vez.</translation>
     </message>
     <message>
         <source>Largest value of each component.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mayor valor de cada componente.</translation>
     </message>
     <message>
         <source>The course&apos;s Math.random() bug: each component is drawn in [0, strength) instead of [−strength, strength), so every ball drifts right and down at strength/2 on average.</source>
-        <translation type="unfinished"></translation>
+        <translation>El error de Math.random() del curso: cada componente se saca de [0, intensidad) en lugar de [−intensidad, intensidad), así que cada bola deriva de media hacia la derecha y hacia abajo a intensidad/2.</translation>
     </message>
     <message>
         <source>An inverse-square pull or push from a fixed point.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una atracción o repulsión desde un punto fijo, inversa al cuadrado de la distancia.</translation>
     </message>
     <message>
         <source>attract or repel.</source>
-        <translation type="unfinished"></translation>
+        <translation>attract o repel.</translation>
     </message>
     <message>
         <source>Where the point is, across.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dónde está el punto, en horizontal.</translation>
     </message>
     <message>
         <source>Where the point is, down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dónde está el punto, en vertical.</translation>
     </message>
     <message>
         <source>S in a = S / d² for a 10 px ball.</source>
-        <translation type="unfinished"></translation>
+        <translation>S en a = S / d² para una bola de 10 px.</translation>
     </message>
     <message>
         <source>The point&apos;s pull is never more than this near it.</source>
-        <translation type="unfinished"></translation>
+        <translation>La atracción del punto nunca supera este valor cerca de él.</translation>
     </message>
     <message>
         <source>none, radius or mass, as for the wind.</source>
-        <translation type="unfinished"></translation>
+        <translation>none, radius o mass, como en el viento.</translation>
     </message>
     <message>
         <source>The course&apos;s repulsion bug: the difference vector d times S / d² instead of its unit vector, so |a| = S / d, a 1/d law, not S / d².</source>
-        <translation type="unfinished"></translation>
+        <translation>El error de la repulsión del curso: el vector diferencia d por S / d² en lugar de su vector unitario, así que |a| = S / d, una ley 1/d y no S / d².</translation>
     </message>
     <message>
         <source>Every ball tied to one anchor by a spring (Hooke&apos;s law).</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada bola está atada a un anclaje por un muelle (ley de Hooke).</translation>
     </message>
     <message>
         <source>Where the springs are tied, across.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dónde están atados los muelles, en horizontal.</translation>
     </message>
     <message>
         <source>Where the springs are tied, down.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dónde están atados los muelles, en vertical.</translation>
     </message>
     <message>
         <source>Stiffness per unit mass: a = −k (x − anchor), so ω = √k.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez por unidad de masa: a = −k (x − anclaje), así que ω = √k.</translation>
     </message>
     <message>
         <source>Every pair of balls pulls together (or pushes apart for G &lt; 0).</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada par de bolas se atrae (o se repele si G &lt; 0).</translation>
     </message>
     <message>
         <source>The constant in F = G m₁ m₂ / r².</source>
-        <translation type="unfinished"></translation>
+        <translation>La constante de F = G m₁ m₂ / r².</translation>
     </message>
     <message>
         <source>ε in F = G m₁ m₂ r / (r² + ε²)^(3/2): the pull fades smoothly to zero inside ε.</source>
-        <translation type="unfinished"></translation>
+        <translation>ε en F = G m₁ m₂ r / (r² + ε²)^(3/2): dentro de ε la atracción se desvanece suavemente hasta cero.</translation>
     </message>
     <message>
         <source>Each ball tied by a spring to the home of its colour.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada bola está atada por un muelle a la casa de su color.</translation>
     </message>
     <message>
         <source>Stiffness of the spring to home, per unit mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rigidez del muelle hacia casa, por unidad de masa.</translation>
     </message>
     <message>
         <source>The mouse pointer pulls (hover) or pushes (pressed).</source>
-        <translation type="unfinished"></translation>
+        <translation>El puntero del ratón atrae (al pasar por encima) o empuja (pulsado).</translation>
     </message>
     <message>
         <source>S in a = S / d².</source>
-        <translation type="unfinished"></translation>
+        <translation>S en a = S / d².</translation>
     </message>
     <message>
         <source>The pointer&apos;s pull is never more than this.</source>
-        <translation type="unfinished"></translation>
+        <translation>La atracción del puntero nunca supera este valor.</translation>
     </message>
     <message>
         <source>A field out of the screen that turns every moving charge, F = q v × B, without changing its speed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un campo que sale de la pantalla y desvía cada carga en movimiento, F = q v × B, sin cambiar su rapidez.</translation>
     </message>
     <message>
         <source>How fast a 10 px ball of charge 1 turns: ω = q B m(10 px) / m; negative turns the other way.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo rápido que gira una bola de 10 px con carga 1: ω = q B m(10 px) / m; un valor negativo gira al revés.</translation>
     </message>
     <message>
         <source>A force law written as formulas of x, y, vx, vy, m, r, q, t, W, H and named constants (the Force editor).</source>
-        <translation type="unfinished"></translation>
+        <translation>Una ley de fuerza escrita como fórmulas de x, y, vx, vy, m, r, q, t, W, H y constantes con nombre (el editor de fuerzas).</translation>
     </message>
     <message>
         <source>On: the formulas are the acceleration (px/s²), the same for every mass; off: the force, divided by m.</source>
-        <translation type="unfinished"></translation>
+        <translation>Activado: las fórmulas son la aceleración (px/s²), igual para cualquier masa; desactivado: la fuerza, dividida por m.</translation>
     </message>
     <message>
         <source>No ball moves faster than the limit (a stand-in for terminal velocity).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ninguna bola va más rápido que el límite (un sustituto de la velocidad límite).</translation>
     </message>
     <message>
         <source>The limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>El límite.</translation>
     </message>
     <message>
         <source>How touching pairs are found: brute, halved, sweep or grid.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cómo se encuentran los pares que se tocan: brute, halved, sweep o grid.</translation>
     </message>
     <message>
         <source>What a touching pair does: none, flag, 1d-reverse, 1d-elastic, 2d-axis or 2d-impulse.</source>
-        <translation type="unfinished"></translation>
+        <translation>Qué hace un par que se toca: none, flag, 1d-reverse, 1d-elastic, 2d-axis o 2d-impulse.</translation>
     </message>
     <message>
         <source>Share of the approach speed a collision gives back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte de la rapidez de acercamiento que devuelve un choque.</translation>
     </message>
     <message>
         <source>Find the moment of impact inside the step.</source>
-        <translation type="unfinished"></translation>
+        <translation>Encontrar el instante del choque dentro del paso.</translation>
     </message>
     <message>
         <source>Under gravity, solve a pile&apos;s contacts several times per step so it stands.</source>
-        <translation type="unfinished"></translation>
+        <translation>Con gravedad, resolver los contactos de una pila varias veces por paso para que se sostenga.</translation>
     </message>
 </context>
 <context>
@@ -931,59 +931,59 @@
     <name>WorldPainter</name>
     <message>
         <source>ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>bola %1</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>rapidez</translation>
     </message>
     <message>
         <source>position</source>
-        <translation type="unfinished"></translation>
+        <translation>posición</translation>
     </message>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad</translation>
     </message>
     <message>
         <source>accel.</source>
-        <translation type="unfinished"></translation>
+        <translation>acel.</translation>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>cinética</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potencial</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>total</translation>
     </message>
     <message>
         <source>energy in %1: %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>energía en %1: %2 %3</translation>
     </message>
     <message>
         <source>momentum (%1, %2) %3</source>
-        <translation type="unfinished"></translation>
+        <translation>momento (%1, %2) %3</translation>
     </message>
     <message>
         <source>energy in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>energía en %1</translation>
     </message>
     <message>
         <source>momentum in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>momento en %1</translation>
     </message>
     <message>
         <source>energy (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>energía (%1)</translation>
     </message>
     <message>
         <source>momentum (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>momento (%1)</translation>
     </message>
 </context>
 <context>
