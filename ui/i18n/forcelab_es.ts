@@ -5,31 +5,31 @@
     <name>BallClipboard</name>
     <message>
         <source>the clipboard holds %1 characters, more than a ball&apos;s %2</source>
-        <translation type="unfinished"></translation>
+        <translation>el portapapeles tiene %1 caracteres, más que los %2 de una bola</translation>
     </message>
     <message>
         <source>the clipboard does not hold a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>el portapapeles no contiene una bola</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has an unknown field &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>la bola del portapapeles tiene un campo desconocido «%1»</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no number &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>la bola del portapapeles no tiene el número «%1»</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has &quot;pinned&quot; that is not true or false</source>
-        <translation type="unfinished"></translation>
+        <translation>la bola del portapapeles tiene un «pinned» que no es true ni false</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has a restitution that is not a number from 0 to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>la bola del portapapeles tiene una restitución que no es un número de 0 a 1</translation>
     </message>
     <message>
         <source>the clipboard&apos;s ball has no valid colour</source>
-        <translation type="unfinished"></translation>
+        <translation>la bola del portapapeles no tiene un color válido</translation>
     </message>
 </context>
 <context>
@@ -757,67 +757,67 @@
     <name>QObject</name>
     <message>
         <source>Change speed to %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar la velocidad a %1×</translation>
     </message>
     <message>
         <source>Walls: is the ball outside the box?</source>
-        <translation type="unfinished"></translation>
+        <translation>Paredes: ¿está la bola fuera de la caja?</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Límite de rapidez</translation>
     </message>
     <message>
         <source>Rule %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Regla %1</translation>
     </message>
     <message>
         <source>Goal:</source>
-        <translation type="unfinished"></translation>
+        <translation>Objetivo:</translation>
     </message>
     <message>
         <source>about %1 minutes</source>
-        <translation type="unfinished"></translation>
+        <translation>unos %1 minutos</translation>
     </message>
     <message>
         <source>Expected answers</source>
-        <translation type="unfinished"></translation>
+        <translation>Respuestas esperadas</translation>
     </message>
     <message>
         <source>Common misconceptions</source>
-        <translation type="unfinished"></translation>
+        <translation>Ideas erróneas frecuentes</translation>
     </message>
     <message>
         <source>What the scene is checked to show</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo que se comprueba que muestra la escena</translation>
     </message>
     <message>
         <source>ForceLab: teacher&apos;s handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab: manual del profesor</translation>
     </message>
     <message>
         <source>One section per lesson: the goal, the time it takes, the text students read, the challenges with their expected answers, the misconceptions to expect, and what the scene is checked to show (forcelab-cli check).</source>
-        <translation type="unfinished"></translation>
+        <translation>Una sección por lección: el objetivo, el tiempo que lleva, el texto que leen los alumnos, los retos con sus respuestas esperadas, las ideas erróneas que cabe esperar y lo que se comprueba que muestra la escena (forcelab-cli check).</translation>
     </message>
     <message>
         <source>Showcase</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Etapa %1 de 29</translation>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Más allá del curso</translation>
     </message>
     <message>
         <source>Challenges</source>
-        <translation type="unfinished"></translation>
+        <translation>Retos</translation>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Para el profesor</translation>
     </message>
 </context>
 <context>
@@ -990,970 +990,973 @@
     <name>forcelab::AccuracyDock</name>
     <message>
         <source>Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>Precisión</translation>
     </message>
     <message>
         <source>Drift</source>
-        <translation type="unfinished"></translation>
+        <translation>Deriva</translation>
     </message>
     <message>
         <source>Ghost</source>
-        <translation type="unfinished"></translation>
+        <translation>Fantasma</translation>
     </message>
     <message>
         <source>Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>Compromiso</translation>
     </message>
     <message>
         <source>Off</source>
-        <translation type="unfinished"></translation>
+        <translation>Desactivado</translation>
     </message>
     <message>
         <source>Compare with another integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>Comparar con otro integrador</translation>
     </message>
     <message>
         <source>Sensitivity twin (moved 1e-10 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gemelo de sensibilidad (movido 1e-10 px)</translation>
     </message>
     <message>
         <source>dt (same)</source>
-        <translation type="unfinished"></translation>
+        <translation>dt (igual)</translation>
     </message>
     <message>
         <source>dt / %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dt / %1</translation>
     </message>
     <message>
         <source>Draw the ghost on the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Dibujar el fantasma en el lienzo</translation>
     </message>
     <message>
         <source>Ghost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Fantasma:</translation>
     </message>
     <message>
         <source>Its integrator:</source>
-        <translation type="unfinished"></translation>
+        <translation>Su integrador:</translation>
     </message>
     <message>
         <source>Its step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Su paso:</translation>
     </message>
     <message>
         <source>Separation:</source>
-        <translation type="unfinished"></translation>
+        <translation>Separación:</translation>
     </message>
     <message>
         <source>t, s</source>
-        <translation type="unfinished"></translation>
+        <translation>t, s</translation>
     </message>
     <message>
         <source>px</source>
-        <translation type="unfinished"></translation>
+        <translation>px</translation>
     </message>
     <message>
         <source>Measure the &amp;Trade-off</source>
-        <translation type="unfinished"></translation>
+        <translation>Medir el &amp;compromiso</translation>
     </message>
     <message>
         <source>Run the current scene with every integrator at several steps and plot error against cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecuta la escena actual con cada integrador a varios pasos y representa el error frente al coste</translation>
     </message>
     <message>
         <source>Check &amp;Convergence</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobar la &amp;convergencia</translation>
     </message>
     <message>
         <source>Rerun the current scene at dt, dt/2, dt/4, dt/8 and fit the order</source>
-        <translation type="unfinished"></translation>
+        <translation>Vuelve a ejecutar la escena actual con dt, dt/2, dt/4, dt/8 y ajusta el orden</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelar</translation>
     </message>
     <message>
         <source>Runs the lesson&apos;s scene for %1 s with each integrator.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecuta la escena de la lección durante %1 s con cada integrador.</translation>
     </message>
     <message>
         <source>Error against cost, both on log scales: lower left is better</source>
-        <translation type="unfinished"></translation>
+        <translation>Error frente a coste, ambos en escala logarítmica: abajo a la izquierda es mejor</translation>
     </message>
     <message>
         <source>(E now − E at the start − energy added or removed on purpose) / |E at the start|: the integrator&apos;s own error</source>
-        <translation type="unfinished"></translation>
+        <translation>(E ahora − E al principio − energía añadida o quitada a propósito) / |E al principio|: el error propio del integrador</translation>
     </message>
     <message>
         <source>Energy added (+) or removed (−) on purpose by drag, wind, walls, collisions, the pointer and edits, relative to |E at the start|</source>
-        <translation type="unfinished"></translation>
+        <translation>Energía añadida (+) o quitada (−) a propósito por el rozamiento, el viento, las paredes, los choques, el puntero y las ediciones, respecto a |E al principio|</translation>
     </message>
     <message>
         <source>|p now − p at the start − impulse of the outside forces|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p ahora − p al principio − impulso de las fuerzas exteriores|</translation>
     </message>
     <message>
         <source>Energy drift ΔE/|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Deriva de la energía ΔE/|E₀|:</translation>
     </message>
     <message>
         <source>Booked on purpose /|E₀|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Contabilizada a propósito /|E₀|:</translation>
     </message>
     <message>
         <source>Momentum drift |Δp|:</source>
-        <translation type="unfinished"></translation>
+        <translation>Deriva del momento |Δp|:</translation>
     </message>
     <message>
         <source>Force evaluations per simulated s:</source>
-        <translation type="unfinished"></translation>
+        <translation>Evaluaciones de la fuerza por s simulado:</translation>
     </message>
     <message>
         <source>Step cost:</source>
-        <translation type="unfinished"></translation>
+        <translation>Coste por paso:</translation>
     </message>
     <message>
         <source>Energy added or taken away on purpose (drag, wind, walls, collisions, your pointer, edits) is booked apart. What is left should be zero: it is the integrator&apos;s own error.</source>
-        <translation type="unfinished"></translation>
+        <translation>La energía añadida o quitada a propósito (rozamiento, viento, paredes, choques, tu puntero, ediciones) se contabiliza aparte. Lo que queda debería ser cero: es el error propio del integrador.</translation>
     </message>
     <message>
         <source>Start Counting Again</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar a contar de nuevo</translation>
     </message>
     <message>
         <source>%1 ms, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms, %2</translation>
     </message>
     <message>
         <source>force evaluation</source>
-        <translation type="unfinished"></translation>
+        <translation>evaluación de la fuerza</translation>
     </message>
     <message>
         <source>force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>evaluaciones de la fuerza</translation>
     </message>
     <message>
         <source>Measuring %1 runs of %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>Midiendo %1 ejecuciones de %2 s…</translation>
     </message>
     <message>
         <source>Running %1 at dt, dt/2, dt/4, dt/8 for %2 s…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutando %1 con dt, dt/2, dt/4, dt/8 durante %2 s…</translation>
     </message>
     <message>
         <source>Could not measure: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se pudo medir: %1</translation>
     </message>
     <message>
         <source>Cancelled after %1 runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelado tras %1 ejecuciones.</translation>
     </message>
     <message>
         <source>Done: %1 runs against ias15 at dt/8. Each dot is one run; a steeper line is a higher order. Fitted orders: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Hecho: %1 ejecuciones frente a ias15 con dt/8. Cada punto es una ejecución; una recta más inclinada es un orden mayor. Órdenes ajustados: %2.</translation>
     </message>
     <message>
         <source>%1 cannot run this scene: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no puede ejecutar esta escena: %2</translation>
     </message>
     <message>
         <source>dt = %1 s: error %2</source>
-        <translation type="unfinished"></translation>
+        <translation>dt = %1 s: error %2</translation>
     </message>
     <message>
         <source>%1: fitted order %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: orden ajustado %2</translation>
     </message>
     <message>
         <source> (theory: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (teoría: %1)</translation>
     </message>
     <message>
         <source>cost: force evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>coste: evaluaciones de la fuerza</translation>
     </message>
     <message>
         <source>error, px</source>
-        <translation type="unfinished"></translation>
+        <translation>error, px</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ArrowLegendView</name>
     <message>
         <source>An arrow this long stands for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Una flecha así de larga representa %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTable</name>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas</translation>
     </message>
     <message>
         <source>Double-click a number to type a new one. Undo (Ctrl+Z) takes it back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Haz doble clic en un número para escribir otro. Deshacer (Ctrl+Z) lo revierte.</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::BallTableModel</name>
     <message>
         <source>world</source>
-        <translation type="unfinished"></translation>
+        <translation>mundo</translation>
     </message>
     <message>
         <source>Radius. A new radius keeps the density: twice as big is 8 times the mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Radio. Un radio nuevo conserva la densidad: el doble de grande son 8 veces la masa.</translation>
     </message>
     <message>
         <source>Mass, in the mass units of the lesson (a 10 px ball of density 1 has 4189). Independent of the size: a small ball can be heavy.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masa, en las unidades de masa de la lección (una bola de 10 px con densidad 1 tiene 4189). No depende del tamaño: una bola pequeña puede ser pesada.</translation>
     </message>
     <message>
         <source>Mass per volume of a sphere: 1 is the density of every ball a lesson does not give a mass.</source>
-        <translation type="unfinished"></translation>
+        <translation>Masa por volumen de una esfera: 1 es la densidad de toda bola a la que la lección no da masa.</translation>
     </message>
     <message>
         <source>What a magnetic field acts on (1: like the 10 px reference ball).</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobre lo que actúa un campo magnético (1: como la bola de referencia de 10 px).</translation>
     </message>
     <message>
         <source>How much of its speed this ball keeps in a bounce: 0 stops it dead, 1 keeps it all. &quot;world&quot;: the scene&apos;s value. When two balls hit, the smaller value counts. Clear the cell to go back to the world&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuánta rapidez conserva esta bola en un rebote: 0 la detiene en seco, 1 la conserva toda. «mundo»: el valor de la escena. Cuando chocan dos bolas, cuenta el valor menor. Vacía la celda para volver al del mundo.</translation>
     </message>
     <message>
         <source>A pinned ball never moves: other balls bounce off it as off a ball too heavy to push.</source>
-        <translation type="unfinished"></translation>
+        <translation>Una bola fijada nunca se mueve: las demás rebotan en ella como en una bola demasiado pesada para empujarla.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola</translation>
     </message>
     <message>
         <source>x (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>x (%1)</translation>
     </message>
     <message>
         <source>y (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>y (%1)</translation>
     </message>
     <message>
         <source>vx (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vx (%1)</translation>
     </message>
     <message>
         <source>vy (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>vy (%1)</translation>
     </message>
     <message>
         <source>r (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>r (%1)</translation>
     </message>
     <message>
         <source>mass (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>masa (%1)</translation>
     </message>
     <message>
         <source>mass</source>
-        <translation type="unfinished"></translation>
+        <translation>masa</translation>
     </message>
     <message>
         <source>density</source>
-        <translation type="unfinished"></translation>
+        <translation>densidad</translation>
     </message>
     <message>
         <source>charge</source>
-        <translation type="unfinished"></translation>
+        <translation>carga</translation>
     </message>
     <message>
         <source>colour</source>
-        <translation type="unfinished"></translation>
+        <translation>color</translation>
     </message>
     <message>
         <source>restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>restitución</translation>
     </message>
     <message>
         <source>pinned</source>
-        <translation type="unfinished"></translation>
+        <translation>fijada</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar la bola %1</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Soltar la bola %1</translation>
     </message>
     <message>
         <source>Give ball %1 the world&apos;s restitution</source>
-        <translation type="unfinished"></translation>
+        <translation>Dar a la bola %1 la restitución del mundo</translation>
     </message>
     <message>
         <source>colour: &quot;%1&quot; is not a colour; type a name like red or #e05050</source>
-        <translation type="unfinished"></translation>
+        <translation>color: «%1» no es un color; escribe un nombre como red o #e05050</translation>
     </message>
     <message>
         <source>Colour of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Color de la bola %1</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es un número</translation>
     </message>
     <message>
         <source>Set %1 of ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar %1 de la bola %2</translation>
     </message>
     <message>
         <source>restitution: %1 is outside %2; leave it empty for the world&apos;s</source>
-        <translation type="unfinished"></translation>
+        <translation>restitución: %1 está fuera de %2; déjala vacía para usar la del mundo</translation>
     </message>
 </context>
 <context>
     <name>forcelab::Canvas</name>
     <message>
         <source>Simulation stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Escenario de la simulación</translation>
     </message>
     <message>
         <source>%1 at %2°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a %2°</translation>
     </message>
     <message>
         <source>%1°</source>
-        <translation type="unfinished"></translation>
+        <translation>%1°</translation>
     </message>
     <message>
         <source>reference (the course&apos;s code) · energy %1</source>
-        <translation type="unfinished"></translation>
+        <translation>referencia (el código del curso) · energía %1</translation>
     </message>
     <message>
         <source>your code stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tu código se ha detenido: %1</translation>
     </message>
     <message>
         <source>your code departs at step %1: %2 balls, the reference has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>tu código se separa en el paso %1: %2 bolas, la referencia tiene %3</translation>
     </message>
     <message>
         <source>your code departs at step %1 (ball %2, %3 off by %4) · energy %5</source>
-        <translation type="unfinished"></translation>
+        <translation>tu código se separa en el paso %1 (bola %2, %3 difiere en %4) · energía %5</translation>
     </message>
     <message>
         <source>your code · agrees for %1 steps · energy %2</source>
-        <translation type="unfinished"></translation>
+        <translation>tu código · coincide durante %1 pasos · energía %2</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>sí</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>no</translation>
     </message>
     <message>
         <source>your run: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tu ejecución: %1</translation>
     </message>
     <message>
         <source>departs here, step %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se separa aquí, paso %1</translation>
     </message>
     <message>
         <source>Paused at t = 0 · press Space to run</source>
-        <translation type="unfinished"></translation>
+        <translation>En pausa en t = 0 · pulsa Espacio para ejecutar</translation>
     </message>
     <message>
         <source>Tools: press %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Herramientas: pulsa %1</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>Set the velocity of ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar la velocidad de la bola %1</translation>
     </message>
     <message>
         <source>Move ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover la bola %1</translation>
     </message>
     <message>
         <source>Add a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir una bola</translation>
     </message>
     <message>
         <source>Nothing to paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nada que pegar: %1</translation>
     </message>
     <message>
         <source>Paste a ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Pegar una bola</translation>
     </message>
     <message>
         <source>Ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola %1</translation>
     </message>
     <message>
         <source>Edit its numbers…</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar sus números…</translation>
     </message>
     <message>
         <source>Stop it (v = 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pararla (v = 0)</translation>
     </message>
     <message>
         <source>Stop ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Parar la bola %1</translation>
     </message>
     <message>
         <source>Pin</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar</translation>
     </message>
     <message>
         <source>Pin ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar la bola %1</translation>
     </message>
     <message>
         <source>Free ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Soltar la bola %1</translation>
     </message>
     <message>
         <source>Duplicate</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplicar</translation>
     </message>
     <message>
         <source>Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Copiar</translation>
     </message>
     <message>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar</translation>
     </message>
     <message>
         <source>Follow it</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguirla</translation>
     </message>
     <message>
         <source>Add a ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir una bola aquí</translation>
     </message>
     <message>
         <source>Paste the copied ball here</source>
-        <translation type="unfinished"></translation>
+        <translation>Pegar aquí la bola copiada</translation>
     </message>
     <message>
         <source>Zoom in here</source>
-        <translation type="unfinished"></translation>
+        <translation>Acercar aquí</translation>
     </message>
     <message>
         <source>Zoom out</source>
-        <translation type="unfinished"></translation>
+        <translation>Alejar</translation>
     </message>
     <message>
         <source>Fit the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar a la caja</translation>
     </message>
     <message>
         <source>Fit all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar a todas las bolas</translation>
     </message>
 </context>
 <context>
     <name>forcelab::CodeDock</name>
     <message>
         <source>Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Código</translation>
     </message>
     <message>
         <source>The simulation code of this stage</source>
-        <translation type="unfinished"></translation>
+        <translation>El código de la simulación de esta etapa</translation>
     </message>
     <message>
         <source>C++</source>
-        <translation type="unfinished"></translation>
+        <translation>C++</translation>
     </message>
     <message>
         <source>The engine&apos;s own code (sim/)</source>
-        <translation type="unfinished"></translation>
+        <translation>El código propio del motor (sim/)</translation>
     </message>
     <message>
         <source>JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>JavaScript</translation>
     </message>
     <message>
         <source>The code students write in the programming course (lessons/code/)</source>
-        <translation type="unfinished"></translation>
+        <translation>El código que escriben los alumnos en el curso de programación (lessons/code/)</translation>
     </message>
     <message>
         <source>&lt;p&gt;This stage runs no marked code.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Esta etapa no ejecuta código marcado.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>, runs when %1 = %2</source>
-        <translation type="unfinished"></translation>
+        <translation>, se ejecuta cuando %1 = %2</translation>
     </message>
     <message>
         <source>&lt;p&gt;The code of this stage in JavaScript, as students write it. It runs beside the engine and moves the balls the same, to the last bit (test_script_reference).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;El código de esta etapa en JavaScript, tal como lo escriben los alumnos. Se ejecuta junto al motor y mueve las bolas igual, hasta el último bit (test_script_reference).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p class=&apos;missing&apos;&gt;Not written in JavaScript yet: %1.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p class=&apos;missing&apos;&gt;Aún no escrito en JavaScript: %1.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::EnergyBars</name>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>cinética</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potencial</translation>
     </message>
     <message>
         <source>lost</source>
-        <translation type="unfinished"></translation>
+        <translation>perdida</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>total</translation>
     </message>
     <message>
         <source>Energy bars: kinetic, potential, lost and total energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Barras de energía: energía cinética, potencial, perdida y total ahora</translation>
     </message>
     <message>
         <source>Energy now</source>
-        <translation type="unfinished"></translation>
+        <translation>Energía ahora</translation>
     </message>
     <message>
         <source>Lost: energy taken out by drag, bumpy collisions and walls since the bars were shown or the lesson restarted. Energy put in (wind, your hand, an edit) counts as negative lost energy, so the total stays the same unless the computer&apos;s steps are inaccurate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Perdida: la energía que se llevaron el rozamiento, los choques no elásticos y las paredes desde que se mostraron las barras o se reinició la lección. La energía aportada (viento, tu mano, una edición) cuenta como energía perdida negativa, así que el total no cambia salvo que los pasos del ordenador sean imprecisos.</translation>
     </message>
     <message>
         <source>energy (%1%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>energía (%1%2)</translation>
     </message>
     <message>
         <source>not counted</source>
-        <translation type="unfinished"></translation>
+        <translation>no contada</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ForceEditorDock</name>
     <message>
         <source>Force editor</source>
-        <translation type="unfinished"></translation>
+        <translation>Editor de fuerzas</translation>
     </message>
     <message>
         <source>Write your own force law. Use x, y (px), vx, vy (px/s), m, r, q, the time t, the box W and H, pi, functions such as sqrt, sin, exp, and your constants.</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribe tu propia ley de fuerza. Usa x, y (px), vx, vy (px/s), m, r, q, el tiempo t, la caja W y H, pi, funciones como sqrt, sin, exp, y tus constantes.</translation>
     </message>
     <message>
         <source>Custom force on</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza propia activada</translation>
     </message>
     <message>
         <source>the formulas give the force F (divided by m)</source>
-        <translation type="unfinished"></translation>
+        <translation>las fórmulas dan la fuerza F (dividida por m)</translation>
     </message>
     <message>
         <source>the formulas give the acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>las fórmulas dan la aceleración a</translation>
     </message>
     <message>
         <source>What the formulas give</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo que dan las fórmulas</translation>
     </message>
     <message>
         <source>F_x =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_x =</translation>
     </message>
     <message>
         <source>The x part of the force (or acceleration)</source>
-        <translation type="unfinished"></translation>
+        <translation>La parte x de la fuerza (o de la aceleración)</translation>
     </message>
     <message>
         <source>F_y =</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y =</translation>
     </message>
     <message>
         <source>The y part; y points down</source>
-        <translation type="unfinished"></translation>
+        <translation>La parte y; y apunta hacia abajo</translation>
     </message>
     <message>
         <source>U =</source>
-        <translation type="unfinished"></translation>
+        <translation>U =</translation>
     </message>
     <message>
         <source>Optional: the potential energy of a conservative law, with F = −∇U</source>
-        <translation type="unfinished"></translation>
+        <translation>Opcional: la energía potencial de una ley conservativa, con F = −∇U</translation>
     </message>
     <message>
         <source>&lt;b&gt;Constants&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Constantes&lt;/b&gt;</translation>
     </message>
     <message>
         <source>name, e.g. k</source>
-        <translation type="unfinished"></translation>
+        <translation>nombre, p. ej. k</translation>
     </message>
     <message>
         <source>New constant&apos;s name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nombre de la constante nueva</translation>
     </message>
     <message>
         <source>Add constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir constante</translation>
     </message>
     <message>
         <source>Constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Constante %1</translation>
     </message>
     <message>
         <source>Add constant %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir la constante %1</translation>
     </message>
     <message>
         <source>Custom force: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza propia: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::InspectorDock</name>
     <message>
         <source>Inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>Inspector</translation>
     </message>
     <message>
         <source>Click a ball to see its numbers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Haz clic en una bola para ver sus números.</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola</translation>
     </message>
     <message>
         <source>Position x</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición x</translation>
     </message>
     <message>
         <source>Velocity v</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad v</translation>
     </message>
     <message>
         <source>Acceleration a</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceleración a</translation>
     </message>
     <message>
         <source>Mass, radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Masa, radio</translation>
     </message>
     <message>
         <source>Draw its trail</source>
-        <translation type="unfinished"></translation>
+        <translation>Dibujar su estela</translation>
     </message>
     <message>
         <source>#%1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>n.º %1 de %2</translation>
     </message>
     <message>
         <source>m = %1 %2, r = %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1 %2, r = %3 %4</translation>
     </message>
     <message>
         <source>m = %1, r = %2 px</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1, r = %2 px</translation>
     </message>
     <message>
         <source>Forces F = m a</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerzas F = m a</translation>
     </message>
     <message>
         <source>no force acts</source>
-        <translation type="unfinished"></translation>
+        <translation>no actúa ninguna fuerza</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>total</translation>
     </message>
     <message>
         <source>in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>en %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::LessonTextView</name>
     <message>
         <source>Open a web page?</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Abrir una página web?</translation>
     </message>
     <message>
         <source>The lesson links to
 %1
 
 Open it in your web browser?</source>
-        <translation type="unfinished"></translation>
+        <translation>La lección enlaza con
+%1
+
+¿Abrirla en tu navegador?</translation>
     </message>
 </context>
 <context>
     <name>forcelab::LessonsDock</name>
     <message>
         <source>Lessons</source>
-        <translation type="unfinished"></translation>
+        <translation>Lecciones</translation>
     </message>
     <message>
         <source>Teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>Notas del profesor</translation>
     </message>
     <message>
         <source>Show the goal, expected answers and misconceptions under the lesson text</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra el objetivo, las respuestas esperadas y las ideas erróneas bajo el texto de la lección</translation>
     </message>
     <message>
         <source>Part A · Motion and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte A · Movimiento y paredes</translation>
     </message>
     <message>
         <source>Part B · Forces</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte B · Fuerzas</translation>
     </message>
     <message>
         <source>Part C · Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte C · Choques</translation>
     </message>
     <message>
         <source>Beyond the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Más allá del curso</translation>
     </message>
     <message>
         <source>Stage %1 of 29</source>
-        <translation type="unfinished"></translation>
+        <translation>Etapa %1 de 29</translation>
     </message>
     <message>
         <source>Beyond the course · %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Más allá del curso · %1</translation>
     </message>
     <message>
         <source>Try this</source>
-        <translation type="unfinished"></translation>
+        <translation>Prueba esto</translation>
     </message>
     <message>
         <source>For the teacher</source>
-        <translation type="unfinished"></translation>
+        <translation>Para el profesor</translation>
     </message>
     <message>
         <source>&lt;p&gt;This lesson has no teacher notes.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Esta lección no tiene notas del profesor.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::MainWindow</name>
     <message>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetros</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Deshacer</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rehacer</translation>
     </message>
     <message>
         <source>The computer could not keep up: simulated time was skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>El ordenador no pudo seguir el ritmo: se saltó tiempo simulado</translation>
     </message>
     <message>
         <source>Simulated time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo simulado</translation>
     </message>
     <message>
         <source>Simulated seconds per real second ([ slower, ] faster)</source>
-        <translation type="unfinished"></translation>
+        <translation>Segundos simulados por segundo real ([ más lento, ] más rápido)</translation>
     </message>
     <message>
         <source>Frames drawn per second, and the time to draw one</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotogramas dibujados por segundo y el tiempo de dibujar uno</translation>
     </message>
     <message>
         <source>Wall-clock time of the last simulation step</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo real del último paso de la simulación</translation>
     </message>
     <message>
         <source>Number of balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Número de bolas</translation>
     </message>
     <message>
         <source>Ball pairs tested for contact in the last step, and the contacts found</source>
-        <translation type="unfinished"></translation>
+        <translation>Pares de bolas probados en el último paso y contactos encontrados</translation>
     </message>
     <message>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3</translation>
     </message>
     <message>
         <source>not a saved window geometry; using the default size</source>
-        <translation type="unfinished"></translation>
+        <translation>no es una geometría de ventana guardada; se usa el tamaño por defecto</translation>
     </message>
     <message>
         <source>not a saved layout of the docks; using the default layout</source>
-        <translation type="unfinished"></translation>
+        <translation>no es una disposición de paneles guardada; se usa la disposición por defecto</translation>
     </message>
     <message>
         <source>%1 is not a folder; using the home folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no es una carpeta; se usa la carpeta personal</translation>
     </message>
     <message>
         <source>not true or false; using the plain theme</source>
-        <translation type="unfinished"></translation>
+        <translation>no es true ni false; se usa el tema normal</translation>
     </message>
     <message>
         <source>not a text size from %1 to %2; using the usual size</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un tamaño de texto de %1 a %2; se usa el tamaño habitual</translation>
     </message>
     <message>
         <source>%1: %2: %3; opened the first lesson instead</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3; se abrió la primera lección en su lugar</translation>
     </message>
     <message>
         <source>no built-in lessons were found</source>
-        <translation type="unfinished"></translation>
+        <translation>no se encontraron lecciones incluidas</translation>
     </message>
     <message>
         <source>ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>ForceLab</translation>
     </message>
     <message>
         <source>%1 — ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — ForceLab</translation>
     </message>
     <message>
         <source>Already the slowest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Ya es la velocidad más lenta, %1×</translation>
     </message>
     <message>
         <source>Already the fastest speed, %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Ya es la velocidad más rápida, %1×</translation>
     </message>
     <message>
         <source>Speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad %1×</translation>
     </message>
     <message>
         <source>Cannot open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede abrir la lección</translation>
     </message>
     <message>
         <source>The lesson could not be opened; the running lesson goes on.</source>
-        <translation type="unfinished"></translation>
+        <translation>No se pudo abrir la lección; la lección en curso continúa.</translation>
     </message>
     <message numerus="yes">
         <source>… and %n more. Show Details… lists every problem.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>… y %n más. Mostrar detalles… enumera todos los problemas.</numerusform>
+            <numerusform>… y %n más. Mostrar detalles… enumera todos los problemas.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>Text at %1% of its usual size (Ctrl+= larger, Ctrl+− smaller, Ctrl+0 usual)</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto al %1 % de su tamaño habitual (Ctrl+= más grande, Ctrl+− más pequeño, Ctrl+0 habitual)</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>speed %1×</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad %1×</translation>
     </message>
     <message>
         <source>%1 fps · draw %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fps · dibujo %2 ms</translation>
     </message>
     <message>
         <source>step %1 µs</source>
-        <translation type="unfinished"></translation>
+        <translation>paso %1 µs</translation>
     </message>
     <message>
         <source>1 ball</source>
-        <translation type="unfinished"></translation>
+        <translation>1 bola</translation>
     </message>
     <message>
         <source>%L1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 bolas</translation>
     </message>
     <message>
         <source>pairs tested %L1 · contacts %L2</source>
-        <translation type="unfinished"></translation>
+        <translation>pares probados %L1 · contactos %L2</translation>
     </message>
     <message>
         <source>&amp;Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pausa</translation>
     </message>
     <message>
         <source>&amp;Play</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ejecutar</translation>
     </message>
     <message>
         <source>Pause the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausar la simulación (Espacio)</translation>
     </message>
     <message>
         <source>Run the simulation (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar la simulación (Espacio)</translation>
     </message>
     <message>
         <source>⚠ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>⚠ %1</translation>
     </message>
     <message>
         <source>behind: %1 ms skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>con retraso: %1 ms saltados</translation>
     </message>
     <message>
         <source>About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Acerca de ForceLab</translation>
     </message>
     <message>
         <source>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;A workbench for forces and collisions of balls in two dimensions.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;ForceLab&lt;/b&gt; %1&lt;br&gt;Un banco de trabajo de fuerzas y choques de bolas en dos dimensiones.</translation>
     </message>
     <message>
         <source>Step &amp;Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso &amp;atrás</translation>
     </message>
     <message>
         <source>Pause and go back by one time step dt, to the world as it was (← or ,)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa y retrocede un paso de tiempo dt, al mundo tal como era (← o ,)</translation>
     </message>
     <message>
         <source>Timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Línea de tiempo</translation>
     </message>
     <message>
         <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Paso</translation>
     </message>
     <message>
         <source>Pause and advance by one time step dt (→ or .)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa y avanza un paso de tiempo dt (→ o .)</translation>
     </message>
     <message>
         <source>&amp;Describe the Scene</source>
@@ -1965,322 +1968,322 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>&amp;Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Reiniciar</translation>
     </message>
     <message>
         <source>Reset</source>
         <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
-        <translation type="unfinished"></translation>
+        <translation>Reinicio</translation>
     </message>
     <message>
         <source>Start the lesson again with its own values (R)</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar de nuevo la lección con sus propios valores (R)</translation>
     </message>
     <message>
         <source>S&amp;lower</source>
-        <translation type="unfinished"></translation>
+        <translation>Más &amp;lento</translation>
     </message>
     <message>
         <source>Slower</source>
         <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
-        <translation type="unfinished"></translation>
+        <translation>Lento</translation>
     </message>
     <message>
         <source>Half the speed: slow motion down to 1/16× ([)</source>
-        <translation type="unfinished"></translation>
+        <translation>La mitad de velocidad: cámara lenta hasta 1/16× ([)</translation>
     </message>
     <message>
         <source>&amp;Faster</source>
-        <translation type="unfinished"></translation>
+        <translation>Más &amp;rápido</translation>
     </message>
     <message>
         <source>Faster</source>
         <comment>the word under the button&apos;s icon: short, it has 72 px on the stage</comment>
-        <translation type="unfinished"></translation>
+        <translation>Rápido</translation>
     </message>
     <message>
         <source>Double the speed, up to %1× (])</source>
-        <translation type="unfinished"></translation>
+        <translation>El doble de velocidad, hasta %1× (])</translation>
     </message>
     <message>
         <source>&amp;Add Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Añadir bola</translation>
     </message>
     <message>
         <source>Add a ball in the middle of the box (B). Right-click the stage to add one where you click.</source>
-        <translation type="unfinished"></translation>
+        <translation>Añade una bola en el centro de la caja (B). Clic derecho en el escenario para añadirla donde hagas clic.</translation>
     </message>
     <message>
         <source>&amp;Delete Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Borrar bola</translation>
     </message>
     <message>
         <source>D&amp;uplicate Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>D&amp;uplicar bola</translation>
     </message>
     <message>
         <source>&amp;Copy Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Copiar bola</translation>
     </message>
     <message>
         <source>&amp;Paste Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pegar bola</translation>
     </message>
     <message>
         <source>Zoom &amp;In</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Acercar</translation>
     </message>
     <message>
         <source>Zoom in on the middle (+); the mouse wheel zooms in on the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Acercar el centro (+); la rueda del ratón acerca hacia el puntero</translation>
     </message>
     <message>
         <source>Zoom &amp;Out</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Alejar</translation>
     </message>
     <message>
         <source>Zoom out (−), to see balls that left the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Alejar (−), para ver las bolas que salieron de la caja</translation>
     </message>
     <message>
         <source>Fit the &amp;Box</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar a la &amp;caja</translation>
     </message>
     <message>
         <source>Show the whole box, as large as it fits (0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra toda la caja, tan grande como quepa (0)</translation>
     </message>
     <message>
         <source>Fit &amp;All Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar a &amp;todas las bolas</translation>
     </message>
     <message>
         <source>Zoom so that every ball is seen, in the box or out of it (A)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajusta el zoom para ver todas las bolas, dentro o fuera de la caja (A)</translation>
     </message>
     <message>
         <source>&amp;Follow the Selected Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Seguir la bola seleccionada</translation>
     </message>
     <message>
         <source>Keep the selected ball in the middle of the view as it moves (F)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mantiene la bola seleccionada en el centro de la vista mientras se mueve (F)</translation>
     </message>
     <message>
         <source>&amp;Open Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abrir lección…</translation>
     </message>
     <message>
         <source>Open</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir</translation>
     </message>
     <message>
         <source>Open a lesson file from disk</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir un archivo de lección del disco</translation>
     </message>
     <message>
         <source>&amp;Save Scene as Lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Guardar la escena como lección…</translation>
     </message>
     <message>
         <source>Save</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar</translation>
     </message>
     <message>
         <source>Save the balls as they are now and the live settings as a lesson file</source>
-        <translation type="unfinished"></translation>
+        <translation>Guarda las bolas tal como están y los ajustes actuales como archivo de lección</translation>
     </message>
     <message>
         <source>Screens&amp;hot…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Captura…</translation>
     </message>
     <message>
         <source>Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen</translation>
     </message>
     <message>
         <source>Save a picture of the canvas as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar una imagen del lienzo en PNG</translation>
     </message>
     <message>
         <source>Re&amp;cord Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Grabar trayectoria</translation>
     </message>
     <message>
         <source>Record</source>
-        <translation type="unfinished"></translation>
+        <translation>Grabar</translation>
     </message>
     <message>
         <source>Record the path of the selected ball (or of all balls when none is selected)</source>
-        <translation type="unfinished"></translation>
+        <translation>Graba la trayectoria de la bola seleccionada (o de todas si no hay ninguna seleccionada)</translation>
     </message>
     <message>
         <source>Recording ball #%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Grabando la bola n.º %1</translation>
     </message>
     <message>
         <source>Recording every ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Grabando todas las bolas</translation>
     </message>
     <message>
         <source>&amp;Export Trajectory…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Exportar trayectoria…</translation>
     </message>
     <message>
         <source>CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV</translation>
     </message>
     <message>
         <source>Write the recorded trajectory as CSV (time, ball, position, velocity)</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribe la trayectoria grabada en CSV (tiempo, bola, posición, velocidad)</translation>
     </message>
     <message>
         <source>Export Teacher &amp;Handbook…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar el &amp;manual del profesor…</translation>
     </message>
     <message>
         <source>Write every lesson with its teacher notes as one printable HTML page</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribe todas las lecciones con sus notas del profesor en una página HTML imprimible</translation>
     </message>
     <message>
         <source>&amp;Previous Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lección &amp;anterior</translation>
     </message>
     <message>
         <source>&amp;Next Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lección &amp;siguiente</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Salir</translation>
     </message>
     <message>
         <source>&amp;Stage View (Projector)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista de &amp;escenario (proyector)</translation>
     </message>
     <message>
         <source>The simulation fills the screen with large controls beside it, for a projector (F11; Escape leaves)</source>
-        <translation type="unfinished"></translation>
+        <translation>La simulación llena la pantalla con controles grandes al lado, para un proyector (F11; Escape sale)</translation>
     </message>
     <message>
         <source>Stage</source>
-        <translation type="unfinished"></translation>
+        <translation>Escenario</translation>
     </message>
     <message>
         <source>&amp;Larger Text</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto más &amp;grande</translation>
     </message>
     <message>
         <source>Larger text in every panel and on the stage (Ctrl+=)</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto más grande en todos los paneles y en el escenario (Ctrl+=)</translation>
     </message>
     <message>
         <source>S&amp;maller Text</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto más &amp;pequeño</translation>
     </message>
     <message>
         <source>Smaller text in every panel and on the stage (Ctrl+−)</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto más pequeño en todos los paneles y en el escenario (Ctrl+−)</translation>
     </message>
     <message>
         <source>&amp;Usual Text Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Tamaño de texto &amp;habitual</translation>
     </message>
     <message>
         <source>P&amp;rojector Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Tema de p&amp;royector</translation>
     </message>
     <message>
         <source>White box, dark thick outlines, colour-blind-safe balls and larger text everywhere (always on in the stage view)</source>
-        <translation type="unfinished"></translation>
+        <translation>Caja blanca, contornos gruesos oscuros, bolas aptas para daltónicos y texto más grande en todas partes (siempre activo en la vista de escenario)</translation>
     </message>
     <message>
         <source>Picture at &amp;Double Size…</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen a tamaño &amp;doble…</translation>
     </message>
     <message>
         <source>Save the stage at twice the screen&apos;s resolution, for print</source>
-        <translation type="unfinished"></translation>
+        <translation>Guarda el escenario al doble de la resolución de la pantalla, para imprimir</translation>
     </message>
     <message>
         <source>&amp;About ForceLab</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Acerca de ForceLab</translation>
     </message>
     <message>
         <source>&amp;Pixels</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Píxeles</translation>
     </message>
     <message>
         <source>Show px, px/s and mass units, as the program computes them</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra px, px/s y unidades de masa, tal como calcula el programa</translation>
     </message>
     <message>
         <source>&amp;SI (m, kg, N, J)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;SI (m, kg, N, J)</translation>
     </message>
     <message>
         <source>Show metres, kilograms, newtons and joules at the scale set below</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra metros, kilogramos, newtons y julios a la escala fijada abajo</translation>
     </message>
     <message>
         <source>How many pixels make a metre, and how many kilograms a mass unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuántos píxeles forman un metro y cuántos kilogramos una unidad de masa</translation>
     </message>
     <message>
         <source>SI Scale</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala SI</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> px</translation>
     </message>
     <message>
         <source> kg</source>
-        <translation type="unfinished"></translation>
+        <translation> kg</translation>
     </message>
     <message>
         <source>1 m is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 m son</translation>
     </message>
     <message>
         <source>1 mass unit is</source>
-        <translation type="unfinished"></translation>
+        <translation>1 unidad de masa son</translation>
     </message>
     <message>
         <source>SI &amp;Scale: %1 px = 1 m, 1 mass unit = %2 kg…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Escala SI: %1 px = 1 m, 1 unidad de masa = %2 kg…</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Archivo</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Editar</translation>
     </message>
     <message>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simulación</translation>
     </message>
     <message>
         <source>&amp;Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lección</translation>
     </message>
     <message>
         <source>&amp;Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Herramientas</translation>
     </message>
     <message>
         <source>&amp;Accuracy</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Precisión</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ver</translation>
     </message>
     <message>
         <source>&amp;Units</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Unidades</translation>
     </message>
     <message>
         <source>&amp;Language</source>
@@ -2288,95 +2291,96 @@ Open it in your web browser?</source>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>A&amp;yuda</translation>
     </message>
     <message>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulación</translation>
     </message>
     <message>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar</translation>
     </message>
     <message>
         <source>Show: what the stage draws</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar: lo que dibuja el escenario</translation>
     </message>
     <message>
         <source>File</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo</translation>
     </message>
     <message>
         <source>Open Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir lección</translation>
     </message>
     <message>
         <source>Lesson files (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos de lección (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>Lesson not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lección no guardada: %1</translation>
     </message>
     <message numerus="yes">
         <source>Saved %n ball(s) and the settings to %1 as “%2”. %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Guardada %n bola y los ajustes en %1 como «%2». %3</numerusform>
+            <numerusform>Guardadas %n bolas y los ajustes en %1 como «%2». %3</numerusform>
         </translation>
     </message>
     <message>
         <source>Picture not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen no guardada: %1</translation>
     </message>
     <message>
         <source>Saved the picture to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Imagen guardada en %1</translation>
     </message>
     <message>
         <source>Save Picture at Double Size</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar la imagen a tamaño doble</translation>
     </message>
     <message>
         <source>Save Picture</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar la imagen</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>Imágenes PNG (*.png)</translation>
     </message>
     <message>
         <source>Export Teacher Handbook</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar el manual del profesor</translation>
     </message>
     <message>
         <source>HTML (*.html)</source>
-        <translation type="unfinished"></translation>
+        <translation>HTML (*.html)</translation>
     </message>
     <message>
         <source>%1
 The handbook was not written; an old file there is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+No se escribió el manual; el archivo antiguo que había sigue igual.</translation>
     </message>
     <message>
         <source>Handbook written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Manual escrito en %1</translation>
     </message>
     <message>
         <source>Nothing recorded yet: switch on Record Trajectory (Ctrl+Shift+R) first</source>
-        <translation type="unfinished"></translation>
+        <translation>Aún no se ha grabado nada: activa primero Grabar trayectoria (Ctrl+Shift+R)</translation>
     </message>
     <message>
         <source>Export Trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar trayectoria</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos CSV (*.csv)</translation>
     </message>
     <message>
         <source>Wrote %L1 rows to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 filas escritas en %2</translation>
     </message>
 </context>
 <context>
@@ -2394,1249 +2398,1249 @@ The handbook was not written; an old file there is unchanged.</source>
     <name>forcelab::OverlayActions</name>
     <message>
         <source>&amp;Show</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Mostrar</translation>
     </message>
     <message>
         <source>&amp;Velocity arrows</source>
-        <translation type="unfinished"></translation>
+        <translation>Flechas de &amp;velocidad</translation>
     </message>
     <message>
         <source>&amp;Acceleration arrows (a = F/m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Flechas de &amp;aceleración (a = F/m)</translation>
     </message>
     <message>
         <source>&amp;Force arrows (net force F = m a)</source>
-        <translation type="unfinished"></translation>
+        <translation>Flechas de &amp;fuerza (fuerza neta F = m a)</translation>
     </message>
     <message>
         <source>Forces &amp;by source (one arrow per force)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerzas por &amp;origen (una flecha por fuerza)</translation>
     </message>
     <message>
         <source>&amp;Paths</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Trayectorias</translation>
     </message>
     <message>
         <source>&amp;Centre of mass and its path</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Centro de masas y su trayectoria</translation>
     </message>
     <message>
         <source>M&amp;omenta diagram (p = m v, tip to tail)</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagrama de m&amp;omentos (p = m v, uno tras otro)</translation>
     </message>
     <message>
         <source>Tops of the flights, with their &amp;heights</source>
-        <translation type="unfinished"></translation>
+        <translation>Puntos más altos de los vuelos, con sus &amp;alturas</translation>
     </message>
     <message>
         <source>&amp;Readout of the selected ball</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Valores de la bola seleccionada</translation>
     </message>
     <message>
         <source>&amp;Totals: energy and momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Totales: energía y momento</translation>
     </message>
     <message>
         <source>&amp;Mark touching balls</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Marcar las bolas que se tocan</translation>
     </message>
     <message>
         <source>&amp;Grid</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Cuadrícula</translation>
     </message>
     <message>
         <source>&amp;Markers (centres, anchors, homes)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ma&amp;rcas (centros, anclajes, casas)</translation>
     </message>
     <message>
         <source>Arrow &amp;length</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Longitud de las flechas</translation>
     </message>
     <message>
         <source>&amp;Auto: readable (about 45 px)</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Automática: legible (unos 45 px)</translation>
     </message>
     <message>
         <source>The lesson&apos;s scale (×1)</source>
-        <translation type="unfinished"></translation>
+        <translation>La escala de la lección (×1)</translation>
     </message>
     <message>
         <source>×%1 the lesson&apos;s scale</source>
-        <translation type="unfinished"></translation>
+        <translation>×%1 la escala de la lección</translation>
     </message>
     <message>
         <source>Arrow scale ×&amp;2</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala de flechas ×&amp;2</translation>
     </message>
     <message>
         <source>Arrow scale ÷2</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala de flechas ÷2</translation>
     </message>
     <message>
         <source>Arrow scale &amp;from now</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala de flechas &amp;desde ahora</translation>
     </message>
 </context>
 <context>
     <name>forcelab::ParameterPanel</name>
     <message>
         <source>Show all parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar todos los parámetros</translation>
     </message>
     <message>
         <source>Besides the lesson&apos;s own controls, show every setting of the world</source>
-        <translation type="unfinished"></translation>
+        <translation>Además de los controles de la lección, muestra todos los ajustes del mundo</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravedad</translation>
     </message>
     <message>
         <source>Box and walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Caja y paredes</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation>Rozamiento del aire</translation>
     </message>
     <message>
         <source>Wind</source>
-        <translation type="unfinished"></translation>
+        <translation>Viento</translation>
     </message>
     <message>
         <source>Random acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceleración aleatoria</translation>
     </message>
     <message>
         <source>Point force</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza de un punto</translation>
     </message>
     <message>
         <source>Spring</source>
-        <translation type="unfinished"></translation>
+        <translation>Muelle</translation>
     </message>
     <message>
         <source>Gravity between balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravedad entre bolas</translation>
     </message>
     <message>
         <source>Homing</source>
-        <translation type="unfinished"></translation>
+        <translation>Regreso a casa</translation>
     </message>
     <message>
         <source>Pointer force</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza del puntero</translation>
     </message>
     <message>
         <source>Speed limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Límite de rapidez</translation>
     </message>
     <message>
         <source>Collisions</source>
-        <translation type="unfinished"></translation>
+        <translation>Choques</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas</translation>
     </message>
     <message numerus="yes">
         <source>%n more setting(s) under &quot;Show all parameters&quot;.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n ajuste más en «Mostrar todos los parámetros».</numerusform>
+            <numerusform>%n ajustes más en «Mostrar todos los parámetros».</numerusform>
         </translation>
     </message>
     <message>
         <source>Change %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambiar %1</translation>
     </message>
     <message>
         <source>Tick to switch %1 on</source>
-        <translation type="unfinished"></translation>
+        <translation>Marca para activar %1</translation>
     </message>
     <message>
         <source>%1 to %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a %2%3</translation>
     </message>
     <message>
         <source>left</source>
-        <translation type="unfinished"></translation>
+        <translation>izquierda</translation>
     </message>
     <message>
         <source>right</source>
-        <translation type="unfinished"></translation>
+        <translation>derecha</translation>
     </message>
     <message>
         <source>top</source>
-        <translation type="unfinished"></translation>
+        <translation>arriba</translation>
     </message>
     <message>
         <source>bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>abajo</translation>
     </message>
     <message>
         <source>Walls</source>
-        <translation type="unfinished"></translation>
+        <translation>Paredes</translation>
     </message>
     <message>
         <source>A wall that is not ticked is open</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared sin marcar está abierta</translation>
     </message>
     <message>
         <source>time.seed: &quot;%1&quot; is not a whole number from 0 to 18446744073709551615</source>
-        <translation type="unfinished"></translation>
+        <translation>time.seed: «%1» no es un número entero de 0 a 18446744073709551615</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished"></translation>
+        <translation>Semilla</translation>
     </message>
     <message>
         <source>Random numbers (wind, random acceleration) start from this seed when the balls are placed again</source>
-        <translation type="unfinished"></translation>
+        <translation>Los números aleatorios (viento, aceleración aleatoria) empiezan desde esta semilla cuando se vuelven a colocar las bolas</translation>
     </message>
     <message numerus="yes">
         <source>Place %n random ball(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Colocar %n bola aleatoria</numerusform>
+            <numerusform>Colocar %n bolas aleatorias</numerusform>
         </translation>
     </message>
     <message>
         <source>Place random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Colocar bolas aleatorias</translation>
     </message>
     <message>
         <source>Random balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas aleatorias</translation>
     </message>
     <message>
         <source>How many balls are placed at random (besides the lesson&apos;s own); changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuántas bolas se colocan al azar (además de las de la lección); cambiarlo empieza de nuevo</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más lenta</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más rápida</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at least this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Las bolas aleatorias empiezan con al menos esta rapidez; cambiarlo empieza de nuevo</translation>
     </message>
     <message>
         <source>Random balls start with a speed of at most this; changing it starts again</source>
-        <translation type="unfinished"></translation>
+        <translation>Las bolas aleatorias empiezan con como mucho esta rapidez; cambiarlo empieza de nuevo</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Colocar las bolas del todo dentro</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Dejar que las bolas empiecen en parte fuera</translation>
     </message>
     <message>
         <source>Start fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar del todo dentro</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall (stage 4&apos;s bug). Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Desactivado: el centro de una bola puede estar en cualquier punto de la caja, así que puede empezar en parte fuera de una pared (el error de la etapa 4). Cambiarlo vuelve a colocar las bolas</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad</translation>
     </message>
     <message>
         <source>Simulated seconds per real second: below 1 is slow motion (%1× to %2×)</source>
-        <translation type="unfinished"></translation>
+        <translation>Segundos simulados por segundo real: por debajo de 1 es cámara lenta (de %1× a %2×)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PlotsDock</name>
     <message>
         <source>Plots</source>
-        <translation type="unfinished"></translation>
+        <translation>Gráficas</translation>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>cinética</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potencial</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>total</translation>
     </message>
     <message>
         <source>|p|</source>
-        <translation type="unfinished"></translation>
+        <translation>|p|</translation>
     </message>
     <message>
         <source>p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>p_x</translation>
     </message>
     <message>
         <source>p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>p_y</translation>
     </message>
     <message>
         <source>one step</source>
-        <translation type="unfinished"></translation>
+        <translation>un paso</translation>
     </message>
     <message>
         <source>Plots of energy, momentum and step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Gráficas de energía, momento y coste por paso</translation>
     </message>
     <message>
         <source>Energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Energía</translation>
     </message>
     <message>
         <source>Energy bars</source>
-        <translation type="unfinished"></translation>
+        <translation>Barras de energía</translation>
     </message>
     <message>
         <source>Graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Gráfica</translation>
     </message>
     <message>
         <source>Momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Momento</translation>
     </message>
     <message>
         <source>Cost of a step</source>
-        <translation type="unfinished"></translation>
+        <translation>Coste de un paso</translation>
     </message>
     <message>
         <source>Step cost</source>
-        <translation type="unfinished"></translation>
+        <translation>Coste por paso</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>tiempo (s)</translation>
     </message>
     <message>
         <source>Momentum (×10¹² mass·px²/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>Momento (×10¹² masa·px²/s²)</translation>
     </message>
     <message>
         <source>Speeds</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapideces</translation>
     </message>
     <message>
         <source>Computer time per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo de cálculo por paso</translation>
     </message>
     <message>
         <source>µs</source>
-        <translation type="unfinished"></translation>
+        <translation>µs</translation>
     </message>
 </context>
 <context>
     <name>forcelab::PredictDock</name>
     <message>
         <source>Predict</source>
-        <translation type="unfinished"></translation>
+        <translation>Predicción</translation>
     </message>
     <message>
         <source>Your prediction</source>
-        <translation type="unfinished"></translation>
+        <translation>Tu predicción</translation>
     </message>
     <message>
         <source>your guess</source>
-        <translation type="unfinished"></translation>
+        <translation>tu estimación</translation>
     </message>
     <message>
         <source>Lock in and run</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar y ejecutar</translation>
     </message>
     <message>
         <source>Show the answer now</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar la respuesta ya</translation>
     </message>
     <message>
         <source>Next question</source>
-        <translation type="unfinished"></translation>
+        <translation>Siguiente pregunta</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelar</translation>
     </message>
     <message>
         <source>This lesson asks no question before it runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Esta lección no hace ninguna pregunta antes de ejecutarse.</translation>
     </message>
     <message>
         <source>Make your prediction while the lesson waits at t = 0, then run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Haz tu predicción mientras la lección espera en t = 0 y luego ejecútala.</translation>
     </message>
     <message>
         <source>Type a number first (for example 200).</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribe primero un número (por ejemplo 200).</translation>
     </message>
     <message>
         <source>Pick an answer first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Elige primero una respuesta.</translation>
     </message>
     <message>
         <source>Still stopping the last measurement; try again in a moment.</source>
-        <translation type="unfinished"></translation>
+        <translation>Todavía se está parando la última medición; vuelve a intentarlo en un momento.</translation>
     </message>
     <message>
         <source>Locked in. Working out the answer…</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijada. Calculando la respuesta…</translation>
     </message>
     <message>
         <source>Cancelled. Change your answer or lock it in again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelado. Cambia tu respuesta o vuelve a fijarla.</translation>
     </message>
     <message>
         <source>Locked in. Watch: the answer comes at t = %1 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijada. Atento: la respuesta llega en t = %1 s.</translation>
     </message>
     <message>
         <source>It could not be measured in this run (the lesson&apos;s sentence “%1”). Did a setting change it?</source>
-        <translation type="unfinished"></translation>
+        <translation>No se pudo medir en esta ejecución (la frase de la lección «%1»). ¿La ha cambiado algún ajuste?</translation>
     </message>
     <message>
         <source>You chose &lt;b&gt;%1&lt;/b&gt;. Measured: &lt;b&gt;%2 %3&lt;/b&gt;, so the answer is &lt;b&gt;%4&lt;/b&gt;. %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Elegiste &lt;b&gt;%1&lt;/b&gt;. Medido: &lt;b&gt;%2 %3&lt;/b&gt;, así que la respuesta es &lt;b&gt;%4&lt;/b&gt;. %5</translation>
     </message>
     <message>
         <source>Well predicted!</source>
-        <translation type="unfinished"></translation>
+        <translation>¡Bien predicho!</translation>
     </message>
     <message>
         <source>Why was it different?</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Por qué ha sido distinto?</translation>
     </message>
     <message>
         <source> (%1%)</source>
-        <translation type="unfinished"></translation>
+        <translation> (%1 %)</translation>
     </message>
     <message>
         <source>You said &lt;b&gt;%1 %2&lt;/b&gt;. Measured: &lt;b&gt;%3 %2&lt;/b&gt;. You were %4 %2 off%5.</source>
-        <translation type="unfinished"></translation>
+        <translation>Dijiste &lt;b&gt;%1 %2&lt;/b&gt;. Medido: &lt;b&gt;%3 %2&lt;/b&gt;. Te equivocaste en %4 %2%5.</translation>
     </message>
     <message>
         <source>&lt;br&gt;&lt;small&gt;The run measured what the lesson says: “%1”.&lt;/small&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;br&gt;&lt;small&gt;La ejecución midió lo que dice la lección: «%1».&lt;/small&gt;</translation>
     </message>
 </context>
 <context>
     <name>forcelab::QuantityGraph</name>
     <message>
         <source>x position</source>
-        <translation type="unfinished"></translation>
+        <translation>posición x</translation>
     </message>
     <message>
         <source>y position</source>
-        <translation type="unfinished"></translation>
+        <translation>posición y</translation>
     </message>
     <message>
         <source>velocity v_x</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad v_x</translation>
     </message>
     <message>
         <source>velocity v_y</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad v_y</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>rapidez</translation>
     </message>
     <message>
         <source>kinetic energy</source>
-        <translation type="unfinished"></translation>
+        <translation>energía cinética</translation>
     </message>
     <message>
         <source>potential energy</source>
-        <translation type="unfinished"></translation>
+        <translation>energía potencial</translation>
     </message>
     <message>
         <source>total energy</source>
-        <translation type="unfinished"></translation>
+        <translation>energía total</translation>
     </message>
     <message>
         <source>momentum p_x</source>
-        <translation type="unfinished"></translation>
+        <translation>momento p_x</translation>
     </message>
     <message>
         <source>momentum p_y</source>
-        <translation type="unfinished"></translation>
+        <translation>momento p_y</translation>
     </message>
     <message>
         <source>Quantity to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnitud que representar</translation>
     </message>
     <message>
         <source>Ball to graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola que representar</translation>
     </message>
     <message>
         <source>of</source>
-        <translation type="unfinished"></translation>
+        <translation>de</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished"></translation>
+        <translation>medido</translation>
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>tiempo (s)</translation>
     </message>
     <message>
         <source>all balls</source>
-        <translation type="unfinished"></translation>
+        <translation>todas las bolas</translation>
     </message>
     <message>
         <source>ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>bola %1</translation>
     </message>
     <message>
         <source>theory: E₀, nothing takes energy away</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: E₀, nada quita energía</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: x₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: x₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: x₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t + ½gt²</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: y₀ + v₀t + ½gt²</translation>
     </message>
     <message>
         <source>theory: y₀ + v₀t</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: y₀ + v₀t</translation>
     </message>
     <message>
         <source>theory: v₀ + gt</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: v₀ + gt</translation>
     </message>
     <message>
         <source>theory: v₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: v₀, constante</translation>
     </message>
     <message>
         <source>theory: |v₀ + gt|</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: |v₀ + gt|</translation>
     </message>
     <message>
         <source>theory: |v₀|, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: |v₀|, constante</translation>
     </message>
     <message>
         <source>theory: ½m|v₀ + gt|²</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: ½m|v₀ + gt|²</translation>
     </message>
     <message>
         <source>theory: ½m|v₀|², constant</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: ½m|v₀|², constante</translation>
     </message>
     <message>
         <source>theory: mgh, h of the flight</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: mgh, h del vuelo</translation>
     </message>
     <message>
         <source>theory: 0, no gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: 0, sin gravedad</translation>
     </message>
     <message>
         <source>theory: E₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: E₀, constante</translation>
     </message>
     <message>
         <source>theory: m(v₀ + gt)</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: m(v₀ + gt)</translation>
     </message>
     <message>
         <source>theory: mv₀, constant</source>
-        <translation type="unfinished"></translation>
+        <translation>teoría: mv₀, constante</translation>
     </message>
     <message>
         <source>%1 of %2 (%3%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 de %2 (%3%4)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SaveLessonDialog</name>
     <message>
         <source>Save Scene as Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar la escena como lección</translation>
     </message>
     <message>
         <source>The scene is saved as a new lesson with your title and text. Of the claims and questions of “%1”, only those that still hold in this scene are kept; the others are listed after saving.</source>
-        <translation type="unfinished"></translation>
+        <translation>La escena se guarda como una lección nueva con tu título y tu texto. De las afirmaciones y preguntas de «%1» solo se conservan las que siguen siendo ciertas en esta escena; las demás se enumeran después de guardar.</translation>
     </message>
     <message>
         <source>Plain text; an empty line starts a new paragraph.</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto sencillo; una línea vacía empieza un párrafo nuevo.</translation>
     </message>
     <message>
         <source>&amp;Keep the teacher notes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Conservar las notas del profesor</translation>
     </message>
     <message>
         <source>The goal, the minutes and the misconceptions. The answers to the challenges are never kept: the new lesson has no challenges.</source>
-        <translation type="unfinished"></translation>
+        <translation>El objetivo, los minutos y las ideas erróneas. Las respuestas a los retos nunca se conservan: la lección nueva no tiene retos.</translation>
     </message>
     <message>
         <source>C&amp;hoose…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Elegir…</translation>
     </message>
     <message>
         <source>&amp;Title:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Título:</translation>
     </message>
     <message>
         <source>Te&amp;xt:</source>
-        <translation type="unfinished"></translation>
+        <translation>Te&amp;xto:</translation>
     </message>
     <message>
         <source>&amp;File:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Archivo:</translation>
     </message>
     <message>
         <source>Lesson files (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivos de lección (*.json)</translation>
     </message>
     <message>
         <source>The lesson needs a title.</source>
-        <translation type="unfinished"></translation>
+        <translation>La lección necesita un título.</translation>
     </message>
     <message>
         <source>“%1” has a number or a comparison (“%2”) that nothing measures on this scene, and a lesson must not say what it does not check. Write it without, or add a claim to the file later.</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» tiene un número o una comparación («%2») que nada mide en esta escena, y una lección no debe decir lo que no comprueba. Escríbela sin él, o añade después una afirmación al archivo.</translation>
     </message>
     <message>
         <source>Choose the file to save to.</source>
-        <translation type="unfinished"></translation>
+        <translation>Elige el archivo donde guardar.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SettingsEditor</name>
     <message>
         <source>Random balls from %1 to %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas aleatorias de %1 a %2 px/s</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>mass: %1 is outside %2</source>
-        <translation type="unfinished"></translation>
+        <translation>masa: %1 está fuera de %2</translation>
     </message>
     <message>
         <source>Not placed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No colocada: %1</translation>
     </message>
     <message>
         <source>Moved to (%1, %2) px, touching, so it does not overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>Movida a (%1, %2) px, tocando, para que no se solape</translation>
     </message>
     <message>
         <source>Not added: the world holds at most %1 balls</source>
-        <translation type="unfinished"></translation>
+        <translation>No añadida: el mundo admite como mucho %1 bolas</translation>
     </message>
     <message>
         <source>Delete ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar la bola %1</translation>
     </message>
     <message>
         <source>Duplicate ball %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplicar la bola %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SimulationController</name>
     <message>
         <source>%1 pane: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>panel %1: %2</translation>
     </message>
     <message>
         <source>your code</source>
-        <translation type="unfinished"></translation>
+        <translation>tu código</translation>
     </message>
     <message>
         <source>spawn.count: %1 listed + %2 random balls is more than the limit of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>spawn.count: %1 bolas de la lista + %2 aleatorias superan el límite de %3</translation>
     </message>
     <message>
         <source>time scale: %1 is outside %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>escala de tiempo: %1 está fuera de %2 a %3</translation>
     </message>
     <message>
         <source>ghost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>fantasma: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::SpeedHistogram</name>
     <message>
         <source>Histogram of the balls&apos; speeds with the Maxwell–Boltzmann curve</source>
-        <translation type="unfinished"></translation>
+        <translation>Histograma de las rapideces de las bolas con la curva de Maxwell-Boltzmann</translation>
     </message>
     <message>
         <source>balls</source>
-        <translation type="unfinished"></translation>
+        <translation>bolas</translation>
     </message>
     <message>
         <source>Maxwell–Boltzmann (2D), same energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Maxwell-Boltzmann (2D), misma energía</translation>
     </message>
     <message>
         <source>speed (px/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>rapidez (px/s)</translation>
     </message>
     <message>
         <source>speed (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>rapidez (%1)</translation>
     </message>
     <message>
         <source>%1balls per %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1bolas por %2 %3</translation>
     </message>
     <message>
         <source>Speeds of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Rapideces de %1</translation>
     </message>
     <message>
         <source>ball</source>
-        <translation type="unfinished"></translation>
+        <translation>bola</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageSliders</name>
     <message>
         <source>Left</source>
-        <translation type="unfinished"></translation>
+        <translation>Izquierda</translation>
     </message>
     <message>
         <source>Right</source>
-        <translation type="unfinished"></translation>
+        <translation>Derecha</translation>
     </message>
     <message>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>Arriba</translation>
     </message>
     <message>
         <source>Bottom</source>
-        <translation type="unfinished"></translation>
+        <translation>Abajo</translation>
     </message>
     <message>
         <source>A wall whose button is not pressed is open: a ball leaves through it</source>
-        <translation type="unfinished"></translation>
+        <translation>Una pared cuyo botón no está pulsado está abierta: una bola sale por ella</translation>
     </message>
     <message>
         <source>Off: a ball&apos;s centre may be anywhere in the box, so it can start partly outside a wall. Changing it places the balls again</source>
-        <translation type="unfinished"></translation>
+        <translation>Desactivado: el centro de una bola puede estar en cualquier punto de la caja, así que puede empezar en parte fuera de una pared. Cambiarlo vuelve a colocar las bolas</translation>
     </message>
     <message>
         <source>Place balls fully inside</source>
-        <translation type="unfinished"></translation>
+        <translation>Colocar las bolas del todo dentro</translation>
     </message>
     <message>
         <source>Let balls start partly outside</source>
-        <translation type="unfinished"></translation>
+        <translation>Dejar que las bolas empiecen en parte fuera</translation>
     </message>
     <message>
         <source>Slowest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más lenta</translation>
     </message>
     <message>
         <source>Fastest random ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más rápida</translation>
     </message>
     <message>
         <source>Walls: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Paredes: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguna</translation>
     </message>
     <message>
         <source>Slowest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más lenta: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Fastest random ball: &lt;b&gt;%1&lt;/b&gt; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola aleatoria más rápida: &lt;b&gt;%1&lt;/b&gt; %2</translation>
     </message>
     <message>
         <source>Switch off</source>
-        <translation type="unfinished"></translation>
+        <translation>Desactivar</translation>
     </message>
     <message>
         <source>Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>Activar</translation>
     </message>
     <message>
         <source>Start fully inside: &lt;b&gt;%1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar del todo dentro: &lt;b&gt;%1&lt;/b&gt;</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>sí</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>no</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageToolTitle</name>
     <message>
         <source>Close (the tool&apos;s key again)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cerrar (otra vez la tecla de la herramienta)</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StageView</name>
     <message>
         <source>Sliders</source>
-        <translation type="unfinished"></translation>
+        <translation>Deslizadores</translation>
     </message>
     <message>
         <source>Show the lesson&apos;s sliders under the box in the stage view (S)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra los deslizadores de la lección bajo la caja en la vista de escenario (S)</translation>
     </message>
     <message>
         <source>Balls</source>
-        <translation type="unfinished"></translation>
+        <translation>Bolas</translation>
     </message>
     <message>
         <source>Show every ball&apos;s numbers under the box, to type new ones (T)</source>
-        <translation type="unfinished"></translation>
+        <translation>Muestra los números de cada bola bajo la caja, para escribir otros nuevos (T)</translation>
     </message>
     <message>
         <source>&lt;b&gt;Stopped:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Detenido:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>t = %1 s   %2× speed</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s   velocidad %2×</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StepApartDock</name>
     <message>
         <source>One Step Apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Un paso por dentro</translation>
     </message>
     <message>
         <source>all</source>
-        <translation type="unfinished"></translation>
+        <translation>todos</translation>
     </message>
     <message>
         <source>Sub-step shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Subpaso mostrado</translation>
     </message>
     <message>
         <source>Sub-step shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Subpaso mostrado:</translation>
     </message>
     <message>
         <source>◀ Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Paso atrás</translation>
     </message>
     <message>
         <source>Step ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso ▶</translation>
     </message>
     <message>
         <source>Pause to take a step apart: it is worked out for one step at a time, not for every frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa para ver un paso por dentro: se calcula paso a paso, no en cada fotograma.</translation>
     </message>
     <message>
         <source>There is no ball to follow.</source>
-        <translation type="unfinished"></translation>
+        <translation>No hay ninguna bola que seguir.</translation>
     </message>
     <message>
         <source>Sub-step %1 of %2: h = %3 s, starting at</source>
-        <translation type="unfinished"></translation>
+        <translation>Subpaso %1 de %2: h = %3 s, empezando en</translation>
     </message>
     <message>
         <source>The step starts: h = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Empieza el paso: h = %1 s</translation>
     </message>
     <message>
         <source>Force: %1 adds its acceleration</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuerza: %1 suma su aceleración</translation>
     </message>
     <message>
         <source>its own part: (%1, %2) px/s²</source>
-        <translation type="unfinished"></translation>
+        <translation>su parte: (%1, %2) px/s²</translation>
     </message>
     <message>
         <source>Acceleration: all the forces added up</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceleración: todas las fuerzas sumadas</translation>
     </message>
     <message>
         <source>Acceleration k%1, at a trial state (Runge-Kutta)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceleración k%1, en un estado de prueba (Runge-Kutta)</translation>
     </message>
     <message>
         <source>no force is switched on: the acceleration stays 0</source>
-        <translation type="unfinished"></translation>
+        <translation>no hay ninguna fuerza activada: la aceleración sigue en 0</translation>
     </message>
     <message>
         <source>Velocity changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambia la velocidad</translation>
     </message>
     <message>
         <source>Position moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Se mueve la posición</translation>
     </message>
     <message>
         <source>with the %1 accelerations above, weighted 1, 2, 2, 1</source>
-        <translation type="unfinished"></translation>
+        <translation>con las %1 aceleraciones de arriba, con pesos 1, 2, 2, 1</translation>
     </message>
     <message>
         <source>no wall touched: nothing changed</source>
-        <translation type="unfinished"></translation>
+        <translation>no se ha tocado ninguna pared: nada ha cambiado</translation>
     </message>
     <message>
         <source>nothing changed for this ball</source>
-        <translation type="unfinished"></translation>
+        <translation>nada ha cambiado para esta bola</translation>
     </message>
     <message>
         <source>Detection: which balls touch?</source>
-        <translation type="unfinished"></translation>
+        <translation>Detección: ¿qué bolas se tocan?</translation>
     </message>
     <message>
         <source>ball %1 and ball %2</source>
-        <translation type="unfinished"></translation>
+        <translation>bola %1 y bola %2</translation>
     </message>
     <message>
         <source>no ball touches ball %1 (%2 touching pairs in all)</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguna bola toca la bola %1 (%2 pares en contacto en total)</translation>
     </message>
     <message>
         <source>touching: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>en contacto: %1</translation>
     </message>
     <message>
         <source>Response with ball %1: the velocities change</source>
-        <translation type="unfinished"></translation>
+        <translation>Respuesta con la bola %1: cambian las velocidades</translation>
     </message>
     <message>
         <source>they are moving apart already: no change</source>
-        <translation type="unfinished"></translation>
+        <translation>ya se están separando: nada cambia</translation>
     </message>
     <message>
         <source>Δvx = %1 px/s, Δvy = %2 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Δvx = %1 px/s, Δvy = %2 px/s</translation>
     </message>
     <message>
         <source>Push-apart from ball %1: out of each other</source>
-        <translation type="unfinished"></translation>
+        <translation>Separación de la bola %1: una fuera de la otra</translation>
     </message>
     <message>
         <source>overlap %1 px; Δx = %2 px, Δy = %3 px</source>
-        <translation type="unfinished"></translation>
+        <translation>solapamiento %1 px; Δx = %2 px, Δy = %3 px</translation>
     </message>
     <message>
         <source>Check: the script&apos;s step against the engine&apos;s (C++)</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobación: el paso del script frente al del motor (C++)</translation>
     </message>
     <message>
         <source>matches the engine bit for bit</source>
-        <translation type="unfinished"></translation>
+        <translation>coincide con el motor bit a bit</translation>
     </message>
     <message>
         <source>differs from the engine by Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</source>
-        <translation type="unfinished"></translation>
+        <translation>difiere del motor en Δx = %1, Δy = %2 px, Δvx = %3, Δvy = %4 px/s</translation>
     </message>
     <message>
         <source>One step, taken apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Un paso, por dentro</translation>
     </message>
     <message>
         <source>Ball %1, step %2 → %3, in the order the JavaScript runs it. Changed values are highlighted.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola %1, paso %2 → %3, en el orden en que lo ejecuta el JavaScript. Los valores que cambian están resaltados.</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StopwatchDock</name>
     <message>
         <source>Stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Cronómetro</translation>
     </message>
     <message>
         <source>by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>a mano</translation>
     </message>
     <message>
         <source>on the event</source>
-        <translation type="unfinished"></translation>
+        <translation>con el evento</translation>
     </message>
     <message>
         <source>Start the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Poner en marcha el cronómetro</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Iniciar</translation>
     </message>
     <message>
         <source>after events:</source>
-        <translation type="unfinished"></translation>
+        <translation>tras eventos:</translation>
     </message>
     <message>
         <source>Stop the stopwatch</source>
-        <translation type="unfinished"></translation>
+        <translation>Parar el cronómetro</translation>
     </message>
     <message>
         <source>Events before the stopwatch stops</source>
-        <translation type="unfinished"></translation>
+        <translation>Eventos antes de que se pare el cronómetro</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Parar</translation>
     </message>
     <message>
         <source>a bounce (moving down, then up)</source>
-        <translation type="unfinished"></translation>
+        <translation>un rebote (bajando y luego subiendo)</translation>
     </message>
     <message>
         <source>the top of a flight</source>
-        <translation type="unfinished"></translation>
+        <translation>lo más alto de un vuelo</translation>
     </message>
     <message>
         <source>crossing the line x =</source>
-        <translation type="unfinished"></translation>
+        <translation>cruzar la línea x =</translation>
     </message>
     <message>
         <source>crossing the line y =</source>
-        <translation type="unfinished"></translation>
+        <translation>cruzar la línea y =</translation>
     </message>
     <message>
         <source>a full turn round the centre</source>
-        <translation type="unfinished"></translation>
+        <translation>una vuelta completa alrededor del centro</translation>
     </message>
     <message>
         <source>Event</source>
-        <translation type="unfinished"></translation>
+        <translation>Evento</translation>
     </message>
     <message>
         <source>Line position</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición de la línea</translation>
     </message>
     <message>
         <source>Line at</source>
-        <translation type="unfinished"></translation>
+        <translation>Línea en</translation>
     </message>
     <message>
         <source>Ball watched</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola observada</translation>
     </message>
     <message>
         <source>Ball</source>
-        <translation type="unfinished"></translation>
+        <translation>Bola</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Reiniciar</translation>
     </message>
     <message>
         <source>Arm</source>
-        <translation type="unfinished"></translation>
+        <translation>Armar</translation>
     </message>
     <message>
         <source>Waiting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperando…</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar de nuevo</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Last times: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Últimos tiempos: %1</translation>
     </message>
 </context>
 <context>
     <name>forcelab::StudentCodeDock</name>
     <message>
         <source>Your Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Tu código</translation>
     </message>
     <message>
         <source>Rewrite:</source>
-        <translation type="unfinished"></translation>
+        <translation>Reescribir:</translation>
     </message>
     <message>
         <source>JavaScript file to rewrite</source>
-        <translation type="unfinished"></translation>
+        <translation>Archivo JavaScript que reescribir</translation>
     </message>
     <message>
         <source>The stage&apos;s code, one file per rule. Pick one and write your own version.</source>
-        <translation type="unfinished"></translation>
+        <translation>El código de la etapa, un archivo por regla. Elige uno y escribe tu propia versión.</translation>
     </message>
     <message>
         <source>Your JavaScript</source>
-        <translation type="unfinished"></translation>
+        <translation>Tu JavaScript</translation>
     </message>
     <message>
         <source>Run beside the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar junto a la referencia</translation>
     </message>
     <message>
         <source>Runs your version in place of the course&apos;s, beside the reference (Ctrl+Return)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecuta tu versión en lugar de la del curso, junto a la referencia (Ctrl+Return)</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Parar</translation>
     </message>
     <message>
         <source>Takes your code off the canvas</source>
-        <translation type="unfinished"></translation>
+        <translation>Quita tu código del lienzo</translation>
     </message>
     <message>
         <source>Back to the course&apos;s file</source>
-        <translation type="unfinished"></translation>
+        <translation>Volver al archivo del curso</translation>
     </message>
     <message>
         <source>Throws away your changes to this file</source>
-        <translation type="unfinished"></translation>
+        <translation>Descarta tus cambios en este archivo</translation>
     </message>
     <message>
         <source>%1 (yours)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (tuyo)</translation>
     </message>
     <message>
         <source>Change the code above, then press Run: your version runs beside the course&apos;s.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cambia el código de arriba y pulsa Ejecutar: tu versión se ejecuta junto a la del curso.</translation>
     </message>
     <message>
         <source>Your changes: %1. Press Run to see them beside the reference.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tus cambios: %1. Pulsa Ejecutar para verlos junto a la referencia.</translation>
     </message>
     <message>
         <source>Your code stopped. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Tu código se ha detenido. %1</translation>
     </message>
     <message>
         <source>Departs at step %1: your code has %2 balls, the reference %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Se separa en el paso %1: tu código tiene %2 bolas y la referencia %3.</translation>
     </message>
     <message>
         <source>Departs at step %1 (t = %2 s), ball %3: %4 is %5 in your code and %6 in the reference, %7 apart. Now the balls are up to %8 apart.</source>
-        <translation type="unfinished"></translation>
+        <translation>Se separa en el paso %1 (t = %2 s), bola %3: %4 vale %5 en tu código y %6 en la referencia, una diferencia de %7. Ahora la distancia entre las bolas llega a %8.</translation>
     </message>
     <message>
         <source>Agrees with the reference for all %1 steps so far (x, y, vx and vy to 9 significant digits).</source>
-        <translation type="unfinished"></translation>
+        <translation>Coincide con la referencia en los %1 pasos hasta ahora (x, y, vx y vy con 9 cifras significativas).</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TimelineBar</name>
     <message>
         <source>Step back: pause and show the world one step dt earlier</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso atrás: pausa y muestra el mundo un paso dt antes</translation>
     </message>
     <message>
         <source>Step: re-run the next recorded step, or take a new one at the latest</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso: vuelve a ejecutar el siguiente paso grabado, o da uno nuevo al final</translation>
     </message>
     <message>
         <source>The recorded past: drag to see the world at any step of it</source>
-        <translation type="unfinished"></translation>
+        <translation>El pasado grabado: arrastra para ver el mundo en cualquiera de sus pasos</translation>
     </message>
     <message>
         <source>Step back</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso atrás</translation>
     </message>
     <message>
         <source>Step forward</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso adelante</translation>
     </message>
     <message>
         <source>Timeline: the recorded steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Línea de tiempo: los pasos grabados</translation>
     </message>
     <message>
         <source>Time shown, of the time recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo mostrado, del tiempo grabado</translation>
     </message>
     <message>
         <source>t = %1 s of %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s de %2 s</translation>
     </message>
 </context>
 <context>
     <name>forcelab::TraceCheck</name>
     <message>
         <source>Check a Student&apos;s &amp;Trace…</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobar la &amp;traza de un alumno…</translation>
     </message>
     <message>
         <source>Check a trace a student&apos;s own program wrote (CSV or JSON: step, ball, x, y, vx, vy) against this run: where it first departs, and why</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprueba una traza que escribió el propio programa de un alumno (CSV o JSON: step, ball, x, y, vx, vy) frente a esta ejecución: dónde se separa por primera vez y por qué</translation>
     </message>
     <message>
         <source>Check a Student&apos;s Trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobar la traza de un alumno</translation>
     </message>
     <message>
         <source>Traces (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Trazas (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
         <source>%1: a trace is still being checked; wait for its result</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: todavía se está comprobando una traza; espera a su resultado</translation>
     </message>
     <message>
         <source>%1 cannot be checked: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no se puede comprobar: %2</translation>
     </message>
     <message>
         <source>%1 agrees with the run at every one of its %2 rows (to step %3, t = %4 s): the largest difference is %5.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 coincide con la ejecución en sus %2 filas (hasta el paso %3, t = %4 s): la mayor diferencia es %5.</translation>
     </message>
     <message>
         <source>%1 departs from the run at step %2 (t = %3 s), ball %4: %5 is %6 where the run has %7, off by %8.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 se separa de la ejecución en el paso %2 (t = %3 s), bola %4: %5 vale %6 donde la ejecución tiene %7, una diferencia de %8.</translation>
     </message>
     <message>
         <source>Likely cause: %1. The numbers follow the run with %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Causa probable: %1. Los números siguen la ejecución con %2: %3</translation>
     </message>
     <message>
         <source>No known mistake explains it: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún error conocido lo explica: %1</translation>
     </message>
     <message>
         <source>The canvas does not go there: step %1 is past the %2 steps it runs to at once.</source>
-        <translation type="unfinished"></translation>
+        <translation>El lienzo no llega hasta ahí: el paso %1 está más allá de los %2 pasos que ejecuta de una vez.</translation>
     </message>
     <message>
         <source>Student&apos;s trace</source>
-        <translation type="unfinished"></translation>
+        <translation>Traza del alumno</translation>
     </message>
     <message>
         <source>student&apos;s ball %1, step %2</source>
-        <translation type="unfinished"></translation>
+        <translation>bola %1 del alumno, paso %2</translation>
     </message>
 </context>
 </TS>
