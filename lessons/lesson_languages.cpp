@@ -169,7 +169,7 @@ std::vector<double> numbersOf(const QString& plainText, const QString& language)
     static const QRegularExpression point(
         QStringLiteral(R"((?<![\p{L}\p{N}_.])(\d{1,3}(?:,\d{3})+|\d+)(?:\.(\d+))?(?![\p{L}\p{N}_]|-\p{L}))"));
     static const QRegularExpression decimalComma(
-        QStringLiteral(R"((?<![\p{L}\p{N}_,])(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?![\p{L}\p{N}_]|-\p{L}))"));
+        QStringLiteral(R"((?<![\p{L}\p{N}_,.])(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?![\p{L}\p{N}_]|-\p{L}))"));
     static const QRegularExpression separators(QStringLiteral("[.,\\x{202F}\\x{00A0}]"));
     std::vector<double> out;
     auto it = (comma ? decimalComma : point).globalMatch(plainText);

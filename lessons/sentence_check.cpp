@@ -100,7 +100,7 @@ const QRegularExpression& numberPattern(const QString& language = QStringLiteral
     static const QRegularExpression point(
         QStringLiteral(R"((?<![\p{L}\p{N}_.])[−-]?(\d{1,3}(?:,\d{3})+|\d+)(?:\.(\d+))?(?:/(\d+(?:\.\d+)?))?(?![\p{L}\p{N}_]|-\p{L}))"));
     static const QRegularExpression comma(
-        QStringLiteral(R"((?<![\p{L}\p{N}_,])[−-]?(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?:/(\d+(?:,\d+)?))?(?![\p{L}\p{N}_]|-\p{L}))"));
+        QStringLiteral(R"((?<![\p{L}\p{N}_,.])[−-]?(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?:/(\d+(?:,\d+)?))?(?![\p{L}\p{N}_]|-\p{L}))"));
     return decimalComma(language) ? comma : point;
 }
 
