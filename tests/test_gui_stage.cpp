@@ -94,6 +94,10 @@ bool presentAt(MainWindow& window, QSize size)
 }
 
 // A projector's sizes: 4:3 and 16:9, and full HD when asked.
+/// What a QToolButton's style keeps free beside its text (Fusion: a frame
+/// and a margin on each side).
+constexpr int kButtonTextMargin = 6;
+
 void addProjectorSizes(bool fullHd)
 {
     QTest::addColumn<QSize>("size");
@@ -649,6 +653,20 @@ void GuiStageTest::stageTextIsNeverCut()
                 QVERIFY2(challenge->text().endsWith(QStringLiteral("…")), qPrintable(name));
                 QCOMPARE(challenge->toolTip(), window.lesson().challenges.value(0));
             }
+        }
+        // Every stage button's word fits under its icon: Qt elides a word too
+        // long for the button ("Des…res" was a Spanish "Deslizadores").
+        for (QToolButton* button : bar->findChildren<QToolButton*>()) {
+            if (!button->isVisible() || button->toolButtonStyle() != Qt::ToolButtonTextUnderIcon)
+                continue;
+            QString word = button->text();
+            word.remove(QLatin1Char('&'));
+            const int need = QFontMetrics(button->font()).horizontalAdvance(word);
+            QVERIFY2(need <= button->width() - kButtonTextMargin,
+                     qPrintable(QStringLiteral("%1: the button word '%2' needs %3 px, the button is %4 px")
+                                    .arg(name, word)
+                                    .arg(need)
+                                    .arg(button->width())));
         }
         // Every word of a stage slider's label fits its width (a label may
         // wrap, but "restitution" must not lose its end).

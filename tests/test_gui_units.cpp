@@ -259,6 +259,27 @@ void GuiUnitsTest::readoutsTableInspectorSpeakSi()
     // Ball 0 at x = 120 px is 1.2 m.
     QVERIFY2(readout.contains(QStringLiteral("1.2")), qPrintable(readout));
 
+    // The grid's labels speak metres down the left as well as across the
+    // top (they said 100, 200, 300 beside 1 m, 2, 3).
+    Overlays withGrid = w.window.canvas()->overlays();
+    withGrid.grid = true;
+    w.window.canvas()->setOverlays(withGrid);
+    w.window.canvas()->repaint();
+    const PaintedFrame& frame = w.window.canvas()->painter().lastFrame();
+    QVERIFY(frame.gridStep > 0.0 && !frame.gridLabelsX.isEmpty() && !frame.gridLabelsY.isEmpty());
+    QVERIFY2(frame.gridLabelsX.front().endsWith(QStringLiteral(" m")), qPrintable(frame.gridLabelsX.front()));
+    double last = -1.0;
+    for (const QString& label : frame.gridLabelsY) {
+        // Each label is a whole number of grid steps, in m at 100 px = 1 m,
+        // inside the 4 m tall box, one step below the last.
+        const double metres = humanNumberValue(label).value_or(-1.0);
+        const double steps = metres * 100.0 / frame.gridStep;
+        QVERIFY2(metres >= 0.0 && metres <= 4.0 && std::abs(steps - std::round(steps)) < 1e-6 &&
+                     (last < 0.0 || std::abs((metres - last) * 100.0 - frame.gridStep) < 1e-6),
+                 qPrintable(frame.gridLabelsY.join(QLatin1Char(' '))));
+        last = metres;
+    }
+
     // The ball table: headers in m and m/s, numbers in m, a typed 2.5 m is 250 px.
     BallTableModel* model = w.window.findChild<BallTable*>()->model();
     QCOMPARE(model->headerData(BallTableModel::X, Qt::Horizontal).toString(), QStringLiteral("x (m)"));

@@ -169,6 +169,8 @@ struct PaintedFrame {
     double momentumScale = 0.0;       ///< widget px per mass·px/s in the inset
     bool pathLayerRebuilt = false;    ///< the path layer was drawn afresh this frame (not appended to)
     double gridStep = 0.0;            ///< world px between the grid's labelled lines (0: no grid drawn)
+    QStringList gridLabelsX;          ///< the labels along the top, as drawn ("1 m", "2", …)
+    QStringList gridLabelsY;          ///< the labels down the left, as drawn
     double scaleBarLength = 0.0;      ///< world px the scale bar stands for (0: no bar drawn)
     QLineF scaleBar;                  ///< widget px, the scale bar as drawn
 };

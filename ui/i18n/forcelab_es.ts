@@ -3213,7 +3213,7 @@ No se escribió el manual; el archivo antiguo que había sigue igual.</translati
     <name>forcelab::StageView</name>
     <message>
         <source>Sliders</source>
-        <translation>Deslizadores</translation>
+        <translation>Mandos</translation>
     </message>
     <message>
         <source>Show the lesson&apos;s sliders under the box in the stage view (S)</source>

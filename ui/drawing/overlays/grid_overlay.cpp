@@ -87,11 +87,15 @@ void paintGrid(const PaintContext& c)
             text += QLatin1Char(' ') + length.text;
         unit = false;
         p.drawText(QPointF(view.toWidget(sim::Vec2(x, 0.0)).x() + 3, shown.top() + 13 * k), text);
+        c.frame.gridLabelsX << text;
     }
+    // Down the left in the same unit as across the top (in SI: 1, 2, … m,
+    // not the pixels behind them).
     for (long long i = (firstY + 1) / 2; 2 * i <= lastY; ++i) {
         const double y = static_cast<double>(i) * major;
-        p.drawText(QPointF(shown.left() + 4, view.toWidget(sim::Vec2(0.0, y)).y() - 3),
-                   QString::number(y, 'f', decimals));
+        const QString text = converted ? humanNumber(length.toShown(y), 4) : QString::number(y, 'f', decimals);
+        p.drawText(QPointF(shown.left() + 4, view.toWidget(sim::Vec2(0.0, y)).y() - 3), text);
+        c.frame.gridLabelsY << text;
     }
 }
 
