@@ -162,7 +162,6 @@ void parseStudentCode(Reader& r, const QJsonObject& o, QMap<QString, QString>& o
         out = files;
 }
 
-
 /// One translation under "languages": the lesson's fields in another
 /// language (lesson_languages.h). Its shape is checked against the lesson's
 /// own words once they are all read.
