@@ -1,8 +1,8 @@
 #include "lesson_languages.h"
 
 #include "lesson_markup.h"
+#include "sentence_check.h"
 
-#include <QLocale>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -163,24 +163,11 @@ QStringList shapeProblems(const Lesson& lesson, const LessonWords& w, const QStr
 
 std::vector<double> numbersOf(const QString& plainText, const QString& language)
 {
-    // A point (English) or a comma (German, Spanish, …) before the decimals,
-    // the other one, or a space, between groups of three digits.
-    const bool comma = QLocale(language).decimalPoint() == QStringLiteral(",");
-    static const QRegularExpression point(
-        QStringLiteral(R"((?<![\p{L}\p{N}_.])(\d{1,3}(?:,\d{3})+|\d+)(?:\.(\d+))?(?![\p{L}\p{N}_]|-\p{L}))"));
-    static const QRegularExpression decimalComma(
-        QStringLiteral(R"((?<![\p{L}\p{N}_,.])(\d{1,3}(?:[.\x{202F}\x{00A0}]\d{3})+|\d+)(?:,(\d+))?(?![\p{L}\p{N}_]|-\p{L}))"));
-    static const QRegularExpression separators(QStringLiteral("[.,\\x{202F}\\x{00A0}]"));
-    std::vector<double> out;
-    auto it = (comma ? decimalComma : point).globalMatch(plainText);
-    while (it.hasNext()) {
-        const auto m = it.next();
-        QString whole = m.captured(1);
-        whole.remove(separators);
-        const QString decimals = m.captured(2);
-        const double v = (whole + (decimals.isEmpty() ? QString() : QLatin1Char('.') + decimals)).toDouble();
-        out.push_back(std::round(v * 1e12) / 1e12);
-    }
+    // Read as the sentence check reads them, rounded so that the same value
+    // written two ways (0.8, 0,8) compares equal.
+    std::vector<double> out = numberValues(plainText, language);
+    for (double& v : out)
+        v = std::round(v * 1e12) / 1e12;
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -48,9 +48,9 @@ Lesson shownIn(const Lesson& lesson, const QString& code);
 /// ("languages.de.challenges: 2 entries; the lesson has 3"); empty when it can.
 QStringList shapeProblems(const Lesson& lesson, const LessonWords& words, const QString& path);
 
-/// The numbers of a text as values, sorted: "0.8" and "1,200" in English,
-/// "0,8" and "1.200" in German and Spanish (a number standing alone, not
-/// the 2 of "2D" or "RK4").
+/// The numbers of a text as values, sorted, as the sentence check reads
+/// them (lessons::numberValues): "0.8", "1,200" and "1/60" in English,
+/// "0,8" and "1.200" in German and Spanish.
 std::vector<double> numbersOf(const QString& plainText, const QString& language);
 
 /// The fields of the translation `code` whose numbers differ from the same

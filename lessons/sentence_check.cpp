@@ -275,6 +275,14 @@ QString shortQuote(const QString& s)
 
 } // namespace
 
+std::vector<double> numberValues(const QString& plainText, const QString& language)
+{
+    std::vector<double> out;
+    for (const TextNumber& n : numbersIn(plainText, language))
+        out.push_back(n.value);
+    return out;
+}
+
 QString numberOrComparison(const QString& sentence, const QString& language)
 {
     const auto n = numberPattern(language).match(sentence);

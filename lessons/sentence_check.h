@@ -49,6 +49,12 @@ SentenceReport checkSentences(const Lesson& lesson);
 /// comparison words are checked in the English it translates.
 QString numberOrComparison(const QString& sentence, const QString& language = QStringLiteral("en"));
 
+/// The numbers of a plain text as values, in order, each a word of its own
+/// ("300", "0.9", "1,200", "1/60" as 1/60; not the 2 of "2D" or "RK4"),
+/// read the way `language` writes them: "0,9" and "1.200" where it writes
+/// a decimal comma (German, Spanish). A sign is not part of the value.
+std::vector<double> numberValues(const QString& plainText, const QString& language);
+
 /// `text` (lesson markup) as plain sentences, in order.
 QStringList splitSentences(const QString& text);
 
