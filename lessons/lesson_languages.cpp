@@ -172,15 +172,12 @@ std::vector<double> numbersOf(const QString& plainText, const QString& language)
     return out;
 }
 
-QStringList numberProblems(const Lesson& lesson, const QString& code)
+QStringList numberProblems(const LessonWords& own, const QString& ownLanguage, const LessonWords& translation,
+                           const QString& code)
 {
-    const Lesson own = shownIn(lesson, lesson.fileLanguage);
-    const auto it = own.languages.constFind(code);
-    if (it == own.languages.cend())
-        return {};
     QStringList problems;
-    eachPair(wordsOf(own), *it, [&](const QString& path, const QString& a, const QString& b) {
-        const std::vector<double> na = numbersOf(markupToPlainText(a), own.language);
+    eachPair(own, translation, [&](const QString& path, const QString& a, const QString& b) {
+        const std::vector<double> na = numbersOf(markupToPlainText(a), ownLanguage);
         const std::vector<double> nb = numbersOf(markupToPlainText(b), code);
         if (na != nb)
             problems << QStringLiteral("languages.%1.%2: numbers %3 where the lesson has %4")

@@ -54,8 +54,9 @@ QStringList shapeProblems(const Lesson& lesson, const LessonWords& words, const 
 std::vector<double> numbersOf(const QString& plainText, const QString& language);
 
 /// The fields of the translation `code` whose numbers differ from the same
-/// field in the file's own words: "languages.de.text: numbers 0.8, 400 where
-/// the lesson has 0.8, 500".
-QStringList numberProblems(const Lesson& lesson, const QString& code);
+/// field of the lesson's own words (`own`, in `ownLanguage`):
+/// "languages.de.text: numbers 0.8, 400 where the lesson has 0.8, 500".
+QStringList numberProblems(const LessonWords& own, const QString& ownLanguage, const LessonWords& translation,
+                           const QString& code);
 
 } // namespace forcelab::lessons

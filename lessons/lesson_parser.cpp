@@ -58,39 +58,36 @@ void nameList(Reader& r, const QJsonObject& root, const QString& key, const QStr
 }
 
 /// Every text a reader sees is in the markup subset and within its length
-/// (lesson_markup.h): a problem names the field and the character.
-void checkProse(Reader& r, const Lesson& lesson)
+/// (lesson_markup.h): a problem names the field and the character. The
+/// lesson's own words and each translation's are checked alike.
+void checkProse(Reader& r, const LessonWords& w)
 {
     auto check = [&r](const QString& path, const QString& text, qsizetype maxChars) {
         if (const auto problem = checkMarkup(text, maxChars))
             r.fail(path, QStringLiteral("character %1: %2").arg(problem->at + 1).arg(problem->message));
     };
-    auto checkList = [&](const QString& path, const QStringList& texts) {
+    auto checkList = [&](const QString& path, const QStringList& texts, const char* key = nullptr) {
         for (qsizetype i = 0; i < texts.size(); ++i)
-            check(join(path, i), texts[i], kMaxProseChars);
+            check(key ? join(join(path, i), key) : join(path, i), texts[i], kMaxProseChars);
     };
-    check(QStringLiteral("title"), lesson.title, kMaxProseChars);
-    check(QStringLiteral("text"), lesson.text, kMaxTextChars);
-    checkList(QStringLiteral("challenges"), lesson.challenges);
-    check(QStringLiteral("teacher.goal"), lesson.teacher.goal, kMaxProseChars);
-    checkList(QStringLiteral("teacher.misconceptions"), lesson.teacher.misconceptions);
-    checkList(QStringLiteral("teacher.answers"), lesson.teacher.answers);
-    for (std::size_t k = 0; k < lesson.predict.size(); ++k) {
-        const QString path = join(QStringLiteral("predict"), static_cast<qsizetype>(k));
-        check(join(path, "ask"), lesson.predict[k].ask, kMaxProseChars);
-        for (qsizetype c = 0; c < lesson.predict[k].choices.size(); ++c)
-            check(join(join(join(path, "choices"), c), "label"), lesson.predict[k].choices[c], kMaxProseChars);
+    check(QStringLiteral("title"), w.title, kMaxProseChars);
+    check(QStringLiteral("text"), w.text, kMaxTextChars);
+    checkList(QStringLiteral("challenges"), w.challenges);
+    check(QStringLiteral("teacher.goal"), w.goal, kMaxProseChars);
+    checkList(QStringLiteral("teacher.misconceptions"), w.misconceptions);
+    checkList(QStringLiteral("teacher.answers"), w.answers);
+    for (qsizetype k = 0; k < w.predictAsks.size(); ++k) {
+        const QString path = join(QStringLiteral("predict"), k);
+        check(join(path, "ask"), w.predictAsks[k], kMaxProseChars);
+        if (std::size_t(k) < w.predictChoices.size())
+            checkList(join(path, "choices"), w.predictChoices[std::size_t(k)], "label");
     }
-    for (std::size_t k = 0; k < lesson.compare.size(); ++k)
-        check(join(join(QStringLiteral("compare"), static_cast<qsizetype>(k)), "label"), lesson.compare[k].label,
-              kMaxProseChars);
-    for (std::size_t k = 0; k < lesson.claims.size(); ++k)
-        check(join(join(QStringLiteral("claims"), static_cast<qsizetype>(k)), "says"),
-              QString::fromStdString(lesson.claims[k].text), kMaxProseChars);
-    for (std::size_t k = 0; k < lesson.notMeasured.size(); ++k) {
-        const QString path = join(QStringLiteral("not_measured"), static_cast<qsizetype>(k));
-        check(join(path, "says"), lesson.notMeasured[k].says, kMaxProseChars);
-        check(join(path, "why"), lesson.notMeasured[k].why, kMaxProseChars);
+    checkList(QStringLiteral("compare"), w.compare, "label");
+    checkList(QStringLiteral("claims"), w.claims, "says");
+    for (qsizetype k = 0; k < w.notMeasuredSays.size(); ++k) {
+        const QString path = join(QStringLiteral("not_measured"), k);
+        check(join(path, "says"), w.notMeasuredSays[k], kMaxProseChars);
+        check(join(path, "why"), w.notMeasuredWhy.value(k), kMaxProseChars);
     }
 }
 
@@ -261,6 +258,7 @@ void checkLanguages(Reader& r, const Lesson& lesson)
         const qsizetype colon = line.indexOf(QStringLiteral(": "));
         r.fail(line.left(colon), line.mid(colon + 2));
     };
+    const LessonWords own = wordsOf(lesson);
     for (auto it = lesson.languages.cbegin(); it != lesson.languages.cend(); ++it) {
         const QString path = join(QStringLiteral("languages"), it.key());
         const QStringList shape = shapeProblems(lesson, *it, path);
@@ -268,14 +266,12 @@ void checkLanguages(Reader& r, const Lesson& lesson)
             failLine(line);
         if (!shape.isEmpty())
             continue;
-        Lesson shown = lesson;
-        showIn(shown, it.key());
         ParseResult prose;
         Reader proseReader(prose);
-        checkProse(proseReader, shown);
+        checkProse(proseReader, *it);
         for (const KeyProblem& k : prose.problems)
             r.fail(join(path, k.keyPath), k.problem);
-        for (const QString& line : numberProblems(lesson, it.key()))
+        for (const QString& line : numberProblems(own, lesson.language, *it, it.key()))
             failLine(line);
     }
 }
@@ -354,7 +350,7 @@ ParseResult parseLesson(const QJsonObject& root)
         parseCompare(r, *a, lesson.compare);
     if (const auto a = r.array(root, top, "predict", QStringLiteral("an array of questions")))
         parsePredict(r, *a, static_cast<int>(lesson.claims.size()), lesson.predict);
-    checkProse(r, lesson);
+    checkProse(r, wordsOf(lesson));
     checkToolsNamed(r, lesson);
     checkControlsNamed(r, lesson);
     checkClaimWork(r, lesson);
