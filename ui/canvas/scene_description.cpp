@@ -33,7 +33,6 @@ QString colourName(const QString& english)
     return english;
 }
 
-
 // Screen directions (y grows downwards) in eight words.
 QString direction(const sim::Vec2& v)
 {

@@ -88,12 +88,12 @@ QString teacherNotesHtml(const Lesson& lesson)
 
 QString handbookHtml(const QList<Lesson>& lessons, const QString& language)
 {
-    QString html = QStringLiteral("<!DOCTYPE html><html lang='%1'>").arg(language) + QStringLiteral("<head><meta charset='utf-8'><title>%1</title><style>"
+    QString html = QStringLiteral("<!DOCTYPE html><html lang='%1'><head><meta charset='utf-8'><title>%2</title><style>"
                                   "body{font-family:sans-serif;max-width:46em;margin:2em auto;line-height:1.45;}"
                                   "section{page-break-after:always;border-top:2px solid #333;margin-top:2em;}"
                                   ".stage{color:#555;} .notes{background:#f4f4f4;padding:0.5em 1em;}"
                                   "</style></head><body>")
-                       .arg(QObject::tr("ForceLab: teacher's handbook"));
+                       .arg(language, QObject::tr("ForceLab: teacher's handbook"));
     html += QStringLiteral("<h1>%1</h1><p>%2</p>")
                 .arg(QObject::tr("ForceLab: teacher's handbook"),
                      QObject::tr("One section per lesson: the goal, the time it takes, the text students read, the "
