@@ -121,12 +121,13 @@ QByteArray blockArray(const QList<QByteArray>& items, int indent)
     return out + QByteArray(indent, ' ') + ']';
 }
 
-QByteArray strings(const QStringList& list, bool block)
+/// Strings on one line, or one per line indented by `indent` spaces.
+QByteArray strings(const QStringList& list, bool block, int indent = 2)
 {
     QList<QByteArray> items;
     for (const QString& s : list)
         items << str(s);
-    return block ? blockArray(items, 2) : inlineArray(items);
+    return block ? blockArray(items, indent) : inlineArray(items);
 }
 
 /// A model's fields, with "enabled": false in front when it is off. A model
@@ -322,18 +323,12 @@ QByteArray ballLine(const sim::Ball& b)
 /// One language's words under "languages", with the fields the lesson has.
 QByteArray wordsBlock(const Lesson& lesson, const LessonWords& w)
 {
-    auto block = [](const QStringList& texts, int indent) {
-        QList<QByteArray> items;
-        for (const QString& text : texts)
-            items << str(text);
-        return blockArray(items, indent);
-    };
     QList<QByteArray> fields;
     fields << "\"title\": " + str(w.title);
     if (!lesson.text.isEmpty())
         fields << "\"text\": " + str(w.text);
     if (!lesson.challenges.isEmpty())
-        fields << "\"challenges\": " + block(w.challenges, 6);
+        fields << "\"challenges\": " + strings(w.challenges, true, 6);
     if (!lesson.predict.empty()) {
         QList<QByteArray> questions;
         for (qsizetype k = 0; k < w.predictAsks.size(); ++k) {
@@ -348,13 +343,13 @@ QByteArray wordsBlock(const Lesson& lesson, const LessonWords& w)
     if (!lesson.teacher.goal.isEmpty())
         teacher << "\"goal\": " + str(w.goal);
     if (!lesson.teacher.misconceptions.isEmpty())
-        teacher << "\"misconceptions\": " + block(w.misconceptions, 8);
+        teacher << "\"misconceptions\": " + strings(w.misconceptions, true, 8);
     if (!lesson.teacher.answers.isEmpty())
-        teacher << "\"answers\": " + block(w.answers, 8);
+        teacher << "\"answers\": " + strings(w.answers, true, 8);
     if (!teacher.isEmpty())
         fields << "\"teacher\": {\n        " + teacher.join(",\n        ") + "\n      }";
     if (!lesson.claims.empty())
-        fields << "\"claims\": " + block(w.claims, 6);
+        fields << "\"claims\": " + strings(w.claims, true, 6);
     if (!lesson.notMeasured.empty()) {
         QList<QByteArray> entries;
         for (qsizetype k = 0; k < w.notMeasuredSays.size(); ++k) {
@@ -446,16 +441,10 @@ QByteArray saveLesson(const Lesson& shown)
             fields << "\"goal\": " + str(t.goal);
         if (t.minutes > 0)
             fields << "\"minutes\": " + num(t.minutes);
-        auto list = [](const QStringList& texts) {
-            QList<QByteArray> items;
-            for (const QString& text : texts)
-                items << str(text);
-            return blockArray(items, 4);
-        };
         if (!t.misconceptions.isEmpty())
-            fields << "\"misconceptions\": " + list(t.misconceptions);
+            fields << "\"misconceptions\": " + strings(t.misconceptions, true, 4);
         if (!t.answers.isEmpty())
-            fields << "\"answers\": " + list(t.answers);
+            fields << "\"answers\": " + strings(t.answers, true, 4);
         top.push_back({"teacher", "{\n    " + fields.join(",\n    ") + "\n  }"});
     }
     if (!lesson.claims.empty()) {
