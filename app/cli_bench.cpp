@@ -56,6 +56,11 @@ void declareBench(QCommandLineParser& p)
          QStringLiteral("T")},
         {QStringLiteral("no-peers"), QStringLiteral("Leave out the comparison table.")},
         {QStringLiteral("peers-only"), QStringLiteral("Only the comparison table.")},
+        {QStringLiteral("spawn"),
+         QStringLiteral("Add the spawn scene: N balls spawned in a 3500 px box, the solver against one pass over its "
+                        "first 20 and 200 steps."),
+         QStringLiteral("N")},
+        {QStringLiteral("spawn-only"), QStringLiteral("Only the spawn scene (with --spawn).")},
     });
 }
 
@@ -116,6 +121,22 @@ int benchCommand(const QCommandLineParser& parser, std::ostream& out, std::ostre
     if (has("peers-only")) {
         o.main = false;
         o.bandwidth = false;
+    }
+    if (has("spawn")) {
+        const auto n = parseSizes(valueOf(parser, "spawn"));
+        if (!n || n->size() != 1 || (*n)[0] < 1) {
+            err << "forcelab-cli bench: --spawn: expected a positive integer, got '" << echo(valueOf(parser, "spawn"))
+                << "'\n";
+            return 2;
+        }
+        o.spawnSize = (*n)[0];
+    }
+    if (has("spawn-only")) {
+        if (o.spawnSize == 0) {
+            err << "forcelab-cli bench: --spawn-only needs --spawn N\n";
+            return 2;
+        }
+        o.main = o.peers = o.bandwidth = false;
     }
     std::unique_ptr<sim::ThreadLimit> limit;
     if (has("threads")) {

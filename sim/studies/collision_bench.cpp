@@ -10,6 +10,7 @@
 #include <cstring>
 #include <iomanip>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -330,6 +331,65 @@ std::vector<Row> runPeerTable(const CollisionBenchOptions& o, std::ostream& out)
     return rows;
 }
 
+// The spawn scene of issue #39: n balls spawned at random (overlapping
+// where they land) in a 3500 px box, radii 2-4 px, speeds 0-50 px/s,
+// gravity 300 px/s^2, e = 0.9, sweep and prune. A gas that falls into a pile.
+Scene spawnScene(int n)
+{
+    Scene s;
+    s.settings.box = BoxSettings{3500.0, 3500.0};
+    s.settings.walls = WallSettings{true, true, true, true, WallModel::Clamp, 0.9};
+    s.settings.gravity.enabled = true;
+    s.settings.gravity.g = Vec2(0.0, 300.0);
+    s.settings.collisions.detection = Detection::Sweep;
+    s.settings.collisions.response = Response::Impulse2D;
+    s.settings.collisions.restitution = 0.9;
+    s.settings.time.integrator = IntegratorKind::SemiImplicitEuler;
+    s.settings.time.dt = 1.0 / 60.0;
+    s.settings.time.substeps = 1;
+    s.spawn.count = n;
+    s.spawn.minRadius = 2.0;
+    s.spawn.maxRadius = 4.0;
+    s.spawn.minSpeed = 0.0;
+    s.spawn.maxSpeed = 50.0;
+    s.spawn.seed = 7;
+    return s;
+}
+
+// Mean thread-CPU ms per step over the first k steps of the spawn scene, for
+// each k of o.spawnSteps, with the resting-contact solver (the default) and
+// with one pass (collisions.resting off), and their ratio.
+void runSpawnTable(const CollisionBenchOptions& o, std::ostream& out)
+{
+    const int n = o.spawnSize;
+    out << "\nSpawn scene: " << n
+        << " balls spawned at random in a 3500 px box (r 2-4 px, speeds 0-50 px/s), gravity 300 px/s^2,\n"
+        << "e = 0.9, sweep, dt = 1/60 s, 1 sub-step. Mean thread CPU ms per step over the first K steps;\n"
+        << "1-pass: collisions.resting off.\n\n";
+    const int last = *std::max_element(o.spawnSteps.begin(), o.spawnSteps.end());
+    std::vector<double> perStep[2];
+    for (int k = 0; k < 2; ++k) {
+        Scene scene = spawnScene(n);
+        scene.settings.collisions.resting = k == 0;
+        World w(scene);
+        for (int s = 0; s < last; ++s) {
+            const double c0 = threadCpuMilliseconds();
+            w.step();
+            perStep[k].push_back(threadCpuMilliseconds() - c0);
+        }
+    }
+    out << std::left << std::setw(10) << "steps" << std::right << std::setw(14) << "default ms" << std::setw(14)
+        << "1-pass ms" << std::setw(10) << "ratio" << "\n";
+    for (int steps : o.spawnSteps) {
+        double mean[2];
+        for (int k = 0; k < 2; ++k)
+            mean[k] = std::accumulate(perStep[k].begin(), perStep[k].begin() + steps, 0.0) / steps;
+        out << std::left << std::setw(10) << steps << std::right << std::fixed << std::setprecision(2)
+            << std::setw(14) << mean[0] << std::setw(14) << mean[1] << std::setw(10) << mean[0] / mean[1] << "\n"
+            << std::flush;
+    }
+}
+
 // A streaming copy between two buffers of `bytes`: the rate at which one core
 // can read and write memory of that size (bytes read + bytes written per second).
 double copyGigabytesPerSecond(std::size_t bytes, int runs)
@@ -401,6 +461,8 @@ void runCollisionBench(const CollisionBenchOptions& o, std::ostream& out, std::o
         runProfile(o, out);
     if (o.bandwidth)
         runBandwidth(rows, o, out);
+    if (o.spawnSize > 0)
+        runSpawnTable(o, out);
     if (o.peers) {
         const auto peer = runPeerTable(o, out);
         rows.insert(rows.end(), peer.begin(), peer.end());

@@ -24,6 +24,8 @@ struct CollisionBenchOptions {
     bool bandwidth = true;                                ///< the memory bandwidth line
     bool profile = false;                                 ///< per-stage times at the largest size
     double speculative = -1.0;                            ///< 1, the solver's speculative growth; < 0: its default
+    int spawnSize = 0;                                    ///< balls of the spawn table (0: no spawn table)
+    std::vector<int> spawnSteps{20, 200};                 ///< the spawn table's step counts, from the start
 };
 
 /// Runs the benchmark, printing its tables to `out` as it goes; with `csv`,
