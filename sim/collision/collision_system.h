@@ -84,6 +84,10 @@ public:
     /// Balls asleep now, and per ball whether it sleeps (nullptr: none).
     int sleepingCount() const { return m_sleep.count(); }
     const unsigned char* sleeping() const { return m_sleep.asleep(); }
+    /// Per ball, whether a row of the last resting solve pushed it (the
+    /// balls the staged solve moved; a free island's balls are not among
+    /// them: free_impacts.h). Empty before the first resting solve.
+    const std::vector<unsigned char>& lastHeld() const { return m_resting.held(); }
     /// Balls that a pair approaching woke in the last step().
     int lastWoken() const { return m_sleep.lastWoken(); }
 

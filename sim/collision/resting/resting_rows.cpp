@@ -180,6 +180,15 @@ void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
     }
 }
 
+// Whether ball i may get a wall row (buildWallRows): not farther from every
+// wall than the slop plus the distance gravity and its own speed move it in
+// one sub-step. The quick test, on the largest margin.
+static bool nearAWall(double px, double py, double r, double vx, double vy, const SubStepContext& c)
+{
+    const double far = c.solver.slop * r + c.gravity * c.h * c.h + (std::abs(vx) + std::abs(vy)) * c.h;
+    return !(px - r >= far && c.box.width - r - px >= far && py - r >= far && c.box.height - r - py >= far);
+}
+
 // Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
 // rows, so the impulses of pairs still in contact are found by a merge). The
 // line of impact and the gap come from the centres at the start of the
@@ -187,6 +196,12 @@ void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
 // drop below −allowed (0 for pairs that overlap). The
 // pairs that overlap now are copied to `touching` without a branch: each is
 // written, and the count moves on by the result of the test.
+//
+// In the staged solve, rows are made only for the islands that need the
+// resting solver (contact_islands.h): a first loop over the pairs finds
+// each pair's start geometry and joins the islands, a second makes the
+// rows of the islands that need them and lists the meeting pairs of the
+// free islands for their exact impulses (free_impacts.h).
 void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                                   std::vector<Contact>* touching)
 {
@@ -204,24 +219,33 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
     for (auto* values : {&m_spareImpulse, &vn0})
         if (values->size() < m)
             values->resize(m);
-    std::size_t old = 0, count = 0, overlapping = 0, dormant = 0;
+    if (m_pairStart.size() < m)
+        m_pairStart.resize(m);
+    std::size_t old = 0, overlapping = 0, dormant = 0;
     const std::size_t oldCount = rowCount;
     const Contact* oldBalls = m_rowBalls.data();
     const double* oldImpulse = impulse.data();
     const std::size_t dormantCount = m_dormantBalls.size();
     m_spareDormantBalls.clear();
     m_spareDormantImpulse.clear();
+    freePairs.clear();
     auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     if (touching && touching->size() < m)
         touching->resize(m);
     unsigned char* colliding = balls.colliding.data();
+    // Islands only in the staged solve; the one-stage solve makes every row.
+    const bool islands = c.solver.stages > 1;
+    if (islands)
+        m_islands.reset(balls.size());
     for (std::size_t p = 0; p < m; ++p) {
         const Contact ct = pairs[p];
+        PairStart& ps = m_pairStart[p];
+        ps.kind = PairStart::kNone;
         const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+        const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
         if (touching) {
-            const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
             (*touching)[overlapping] = ct;
             overlapping += overlap;
             colliding[a] |= static_cast<unsigned char>(overlap);
@@ -239,6 +263,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         double warm = (old < oldCount && oldBalls[old] == ct) ? oldImpulse[old] : 0.0;
         if (dormant < dormantCount && m_dormantBalls[dormant] == ct)
             warm = m_dormantImpulse[dormant];
+        bool sleeper = false;
         if (m_asleep) {
             const bool sa = m_asleep[a], sb = m_asleep[b];
             if (sa && sb) { // two sleepers: no row, the impulse kept
@@ -246,6 +271,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
                 m_spareDormantImpulse.push_back(warm);
                 continue;
             }
+            sleeper = sa || sb;
             wa = sa ? 0.0 : wa;
             wb = sb ? 0.0 : wb;
         }
@@ -265,25 +291,89 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         // gave a ball that contacts held in the last solve: those contacts
         // take it out again (a ball landing on a resting pile meets a ball
         // at rest, not one falling at g·h).
-        const double heldA = a < m_held.size() && m_held[a] ? 1.0 : 0.0;
-        const double heldB = b < m_held.size() && m_held[b] ? 1.0 : 0.0;
-        const double approach = (dvx - (heldB - heldA) * c.gravityX * c.h) * nrm.x() +
-                                (dvy - (heldB - heldA) * c.gravityY * c.h) * nrm.y();
+        const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
+        const double held = (heldB ? 1.0 : 0.0) - (heldA ? 1.0 : 0.0);
+        const double approach = (dvx - held * c.gravityX * c.h) * nrm.x() + (dvy - held * c.gravityY * c.h) * nrm.y();
         const double gapStart = len - s;
-        // A gap may close within the sub-step and no more: its normal speed
-        // may not drop below −gap/h (0 for a pair that overlapped already).
-        const double allowed = gapStart > 0.0 ? gapStart * c.inverseH : 0.0;
-        const int ba = bodyFor(a, balls), bb = bodyFor(b, balls);
-        m_spareRows[count] = {ba, bb, nrm.x(), nrm.y(), static_cast<float>(1.0 / (wa + wb)), static_cast<float>(allowed)};
-        m_spareBalls[count] = ct;
-        m_spareImpulse[count] = warm;
-        // A pair that pushed on each other in the last sub-step rests: only a
-        // new contact bounces (a pile's pairs do not trade small bounces).
-        vn0[count] = warm > 0.0 ? 0.0 : approach;
-        ++count;
+        ps = {nrm.x(), nrm.y(), gapStart, approach, warm, wa, wb, PairStart::kRow};
+        if (!islands)
+            continue;
+        // Its island needs the solver when the pair pushed in the last
+        // sub-step, has a sleeper or a ball of infinite mass, or meets
+        // slower than v_rest along its line; a ball near a wall anchors its
+        // island too. A pair meets when it overlaps, or when its gap is
+        // less than it closes within the sub-step plus what gravity closes
+        // in it if one ball is held (|g|·h²: a column of balls standing at
+        // touching distance meets). A pair that does none of this (a
+        // speculative pair that does not meet) joins no islands.
+        const bool meets = overlap || gapStart + approach * c.h < c.gravity * c.h * c.h;
+        const bool rests = warm > 0.0 || sleeper || (meets && (heldA || heldB)) || !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb) ||
+                           (meets && std::abs(approach) <= c.restingSpeed);
+        const bool wallA = nearAWall(x[2 * a], x[2 * a + 1], radius[a], v[2 * a], v[2 * a + 1], c);
+        const bool wallB = nearAWall(x[2 * b], x[2 * b + 1], radius[b], v[2 * b], v[2 * b + 1], c);
+        if (meets || rests) {
+            ps.kind = meets ? PairStart::kMeets : PairStart::kRow;
+            m_islands.join(ct.a, ct.b);
+            if (rests || wallA || wallB)
+                m_islands.markNeedy(ct.a);
+        } else {
+            ps.kind = PairStart::kQuiet;
+            if (wallA)
+                m_islands.markNeedy(ct.a);
+            if (wallB)
+                m_islands.markNeedy(ct.b);
+        }
     }
     if (touching)
         touching->resize(overlapping);
+    // A pair that does not meet, between an island that needs the solver
+    // and one that does not, brings the other island into the solve: the
+    // solver may push a ball of the first into it. One step only (the
+    // marks are those of the first loop), so a gas next to a pile does not
+    // join it ball by ball.
+    if (islands) {
+        m_attached.clear();
+        for (std::size_t p = 0; p < m; ++p) {
+            if (m_pairStart[p].kind != PairStart::kQuiet)
+                continue;
+            const Contact ct = pairs[p];
+            const bool na = m_islands.needy(ct.a), nb = m_islands.needy(ct.b);
+            if (na != nb)
+                m_attached.push_back(na ? ct.b : ct.a);
+        }
+        for (const int i : m_attached)
+            m_islands.markNeedy(i);
+    }
+    std::size_t count = 0;
+    for (std::size_t p = 0; p < m; ++p) {
+        const PairStart& ps = m_pairStart[p];
+        if (ps.kind == PairStart::kNone)
+            continue;
+        const Contact ct = pairs[p];
+        // A pair that does not meet is a row only between two balls whose
+        // islands the solver takes (a speculative contact of a pile); the
+        // pairs of free islands that meet get their exact impulses.
+        if (islands && ps.kind == PairStart::kQuiet) {
+            if (!m_islands.needy(ct.a) || !m_islands.needy(ct.b))
+                continue;
+        } else if (islands && !m_islands.needy(ct.a)) {
+            if (ps.kind == PairStart::kMeets)
+                freePairs.push_back({ct.a, ct.b, ps.nx, ps.ny, ps.gapStart});
+            continue;
+        }
+        const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
+        // A gap may close within the sub-step and no more: its normal speed
+        // may not drop below −gap/h (0 for a pair that overlapped already).
+        const double allowed = ps.gapStart > 0.0 ? ps.gapStart * c.inverseH : 0.0;
+        const int ba = bodyFor(a, balls), bb = bodyFor(b, balls);
+        m_spareRows[count] = {ba, bb, ps.nx, ps.ny, static_cast<float>(1.0 / (ps.wa + ps.wb)), static_cast<float>(allowed)};
+        m_spareBalls[count] = ct;
+        m_spareImpulse[count] = ps.warm;
+        // A pair that pushed on each other in the last sub-step rests: only a
+        // new contact bounces (a pile's pairs do not trade small bounces).
+        vn0[count] = ps.warm > 0.0 ? 0.0 : ps.approach;
+        ++count;
+    }
     pairRows.swap(m_spareRows);
     m_rowBalls.swap(m_spareBalls);
     impulse.swap(m_spareImpulse);
@@ -341,8 +431,7 @@ void RestingRows::buildWallRows(const BallState& balls, const SubStepContext& c)
         for (int i = 0; i < balls.size(); ++i) {
             const double r = radius[i], w = inverseMass[i];
             const double px = x[2 * i], py = x[2 * i + 1], vx = v[2 * i], vy = v[2 * i + 1];
-            const double far = c.solver.slop * r + reach + (std::abs(vx) + std::abs(vy)) * h;
-            if (px - r >= far && size[0] - r - px >= far && py - r >= far && size[1] - r - py >= far)
+            if (!nearAWall(px, py, r, vx, vy, c))
                 continue;
             if (!(w > 0.0) || !std::isfinite(w) || (m_asleep && m_asleep[i]))
                 continue; // a sleeper needs no wall: nothing moves it

@@ -20,6 +20,8 @@
 #include "sim/world/ball_state.h"
 #include "sim/collision/collision_profile.h"
 #include "sim/collision/contact.h"
+#include "sim/collision/resting/contact_islands.h"
+#include "sim/collision/resting/free_impacts.h"
 #include "sim/collision/resting/row_strips.h"
 #include "sim/collision/resting/sub_step_context.h"
 
@@ -157,6 +159,7 @@ public:
     RowStrips strips;                     // the rows cut into strips for the passes (row_strips.h)
     std::vector<unsigned char> stripMoved; // per strip, this pass: a ball changed by more than the tolerance
     std::vector<std::int64_t> stripSolves; // per strip, this pass: rows solved
+    std::vector<FreePair> freePairs;      // the meeting pairs of the free islands, in (a, b) order (no rows)
     int bodyCount = 0;
 
 private:
@@ -168,6 +171,15 @@ private:
     void buildWallRows(const BallState& balls, const SubStepContext& c);
     void sortRowsByStrip();
 
+    // A pair's start geometry, found in the first loop of buildPairRows.
+    struct PairStart {
+        enum Kind : unsigned char { kNone, kQuiet, kRow, kMeets }; // no row; does not meet; rests; meets this sub-step
+        double nx, ny, gapStart, approach, warm, wa, wb;
+        Kind kind;
+    };
+    std::vector<PairStart> m_pairStart;
+    ContactIslands m_islands;
+    std::vector<int> m_attached; // balls whose islands a pair that does not meet brings into the solve
     std::vector<PairRow> m_spareRows;
     std::vector<Contact> m_rowBalls, m_spareBalls;
     std::vector<double> m_spareImpulse, m_spareVn0;

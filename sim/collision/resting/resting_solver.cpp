@@ -15,6 +15,11 @@ void RestingSolver::solve(BallState& balls, const SubStepContext& c, const std::
         solveStaged(balls, c, clock, profile);
     else
         solveOneStage(balls, c, clock, profile);
+    // The free islands' pairs: their balls have no body, so this may come
+    // after the write-back.
+    if (!m_rows.freePairs.empty() && resolveFreePairs(balls, c, m_rows.freePairs))
+        m_last.bounced = true;
+    clock.lap(profile.correction);
 }
 
 void RestingSolver::solveStaged(BallState& balls, const SubStepContext& c, StageClock& clock,
