@@ -3,10 +3,11 @@
 // may push on each other this sub-step (union–find over ball indices), and
 // per island whether it needs the resting solver (contact_solver.h, point 8).
 // An island needs it when one of its pairs rests (pushed in the last
-// sub-step, or touches or is about to while slow along its line of impact),
-// or when one of its balls is near a wall, asleep, held by a contact in the
-// last solve or of infinite mass. Every other island is free: its pairs are
-// fast impacts and separating overlaps (free_impacts.h) or do not meet.
+// sub-step, or touches or is about to while slow along its line of impact
+// or against a ball a contact held in the last solve), or when one of its
+// balls is near a wall, asleep or of infinite mass. Every other island is
+// free: its pairs are fast impacts and separating overlaps
+// (free_impacts.h) or do not meet. RestingRows::buildPairRows decides.
 //
 // Deterministic: the root of an island is its lowest ball index, whatever
 // the order of the joins.

@@ -105,10 +105,10 @@
 //    The pairs that may push this sub-step (they overlap, close their gap
 //    within it or within what gravity closes on a held ball, |g|·h², or
 //    pushed in the last one) join their balls into islands. An island needs
-//    the solver when one of its pairs meets slower than v_rest or pushed in
-//    the last sub-step, or one of its balls is near a wall, asleep or of
-//    infinite mass; an island next to one that needs it, across a pair that
-//    does not meet, is taken too. Only those islands get rows, bodies and
+//    the solver when one of its pairs meets slower than v_rest, meets a
+//    ball held in the last solve or pushed in the last sub-step, or one of
+//    its balls is near a wall, asleep or of infinite mass; an island next
+//    to one that needs it, across a pair that does not meet, is taken too. Only those islands get rows, bodies and
 //    passes. In the free islands each pair that meets gets the exact
 //    impulse of two free balls at the moment it meets (free_impacts.h),
 //    and a speculative pair that does not meet costs nothing after the

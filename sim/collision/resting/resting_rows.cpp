@@ -298,17 +298,19 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         ps = {nrm.x(), nrm.y(), gapStart, approach, warm, wa, wb, PairStart::kRow};
         if (!islands)
             continue;
-        // Its island needs the solver when the pair pushed in the last
-        // sub-step, has a sleeper or a ball of infinite mass, or meets
-        // slower than v_rest along its line; a ball near a wall anchors its
-        // island too. A pair meets when it overlaps, or when its gap is
-        // less than it closes within the sub-step plus what gravity closes
-        // in it if one ball is held (|g|·h²: a column of balls standing at
-        // touching distance meets). A pair that does none of this (a
-        // speculative pair that does not meet) joins no islands.
+        // Its island needs the solver when the pair rests: it pushed in the
+        // last sub-step, has a sleeper or a ball of infinite mass, or meets
+        // a ball held in the last solve or slower than v_rest along its
+        // line. A ball near a wall anchors its island too. A pair meets when
+        // it overlaps, or when its gap is less than it closes within the
+        // sub-step plus what gravity closes in it if one ball is held
+        // (|g|·h²: a column of balls standing at touching distance meets).
+        // A pair that neither meets nor rests (a speculative pair) joins no
+        // islands.
         const bool meets = overlap || gapStart + approach * c.h < c.gravity * c.h * c.h;
-        const bool rests = warm > 0.0 || sleeper || (meets && (heldA || heldB)) || !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb) ||
-                           (meets && std::abs(approach) <= c.restingSpeed);
+        const bool infinite = !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb);
+        const bool rests = warm > 0.0 || sleeper || infinite ||
+                           (meets && (heldA || heldB || std::abs(approach) <= c.restingSpeed));
         const bool wallA = nearAWall(x[2 * a], x[2 * a + 1], radius[a], v[2 * a], v[2 * a + 1], c);
         const bool wallB = nearAWall(x[2 * b], x[2 * b + 1], radius[b], v[2 * b], v[2 * b + 1], c);
         if (meets || rests) {
