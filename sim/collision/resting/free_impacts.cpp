@@ -4,6 +4,7 @@
 
 #include "sim/collision/resting/resting_rows.h"
 #include "sim/collision/response/positional_correction.h"
+#include "sim/collision/response/response.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,23 +22,23 @@ bool resolveFreePairs(BallState& balls, const SubStepContext& c, const std::vect
     for (const FreePair& p : pairs) {
         const auto a = static_cast<std::size_t>(p.a), b = static_cast<std::size_t>(p.b);
         const double wa = inverseMass[a], wb = inverseMass[b];
-        const double vn = (v[2 * b] - v[2 * a]) * p.nx + (v[2 * b + 1] - v[2 * a + 1]) * p.ny;
-        if (vn < 0.0) {
-            const double e = c.ownRestitution ? pairRestitution(c.ownRestitution[a], c.ownRestitution[b], c.restitution)
-                                              : c.restitution;
-            const double j = -(1.0 + e) * vn / (wa + wb);
-            const double dax = -wa * j * p.nx, day = -wa * j * p.ny;
-            const double dbx = wb * j * p.nx, dby = wb * j * p.ny;
-            v[2 * a] += dax;
-            v[2 * a + 1] += day;
-            v[2 * b] += dbx;
-            v[2 * b + 1] += dby;
+        const Vec2 n(p.nx, p.ny);
+        const Vec2 va0(v[2 * a], v[2 * a + 1]), vb0(v[2 * b], v[2 * b + 1]);
+        const double vn = (vb0 - va0).dot(n);
+        const double e = c.ownRestitution ? pairRestitution(c.ownRestitution[a], c.ownRestitution[b], c.restitution)
+                                          : c.restitution;
+        Vec2 va = va0, vb = vb0;
+        if (impulse2D(e, n, wa, wb, va, vb)) { // the response model's own impulse (response.h)
+            v[2 * a] = va.x();
+            v[2 * a + 1] = va.y();
+            v[2 * b] = vb.x();
+            v[2 * b + 1] = vb.y();
             // The pair met τ into the sub-step; from then on each ball
             // moved with its new velocity.
             const double met = p.gapStart > 0.0 ? std::min(p.gapStart / -vn, c.h) : 0.0;
-            const double rest = c.h - met;
-            moveWithinWalls(x[2 * a], x[2 * a + 1], radius[a], dax * rest, day * rest, c);
-            moveWithinWalls(x[2 * b], x[2 * b + 1], radius[b], dbx * rest, dby * rest, c);
+            const Vec2 da = (va - va0) * (c.h - met), db = (vb - vb0) * (c.h - met);
+            moveWithinWalls(x[2 * a], x[2 * a + 1], radius[a], da.x(), da.y(), c);
+            moveWithinWalls(x[2 * b], x[2 * b + 1], radius[b], db.x(), db.y(), c);
             bounced = true;
         }
         Vec2 pa(x[2 * a], x[2 * a + 1]), pb(x[2 * b], x[2 * b + 1]);
