@@ -1018,6 +1018,51 @@ TEST_CASE("TestCollisionWorld::editsAndChangingForcesKeepBallsAwake")
 }
 
 
+// A pile whose every ball sleeps costs no detection and no solve: its steps
+// leave every ball where it is, to the bit, with the same touching pairs,
+// and find no pair. A ball added to it (an edit) wakes it at the next step.
+TEST_CASE("TestCollisionWorld::aPileAsleepIsNotDetected")
+{
+    World w(boxScene(300, 5.0, 5.0, 0.0, 0.9, Detection::Grid, 5));
+    int steps = 0;
+    while (w.collisionSystem().sleepingCount() < w.balls().size() && steps < 1200) {
+        w.step();
+        ++steps;
+    }
+    REQUIRE(w.collisionSystem().sleepingCount() == w.balls().size());
+    w.step(); // the step that finds the pairs where the balls now sleep
+    VERIFY(w.lastStep().pairsTested > 0);
+    const Matrix2X position = w.balls().position, velocity = w.balls().velocity;
+    const std::vector<Contact> touching = w.contacts();
+    REQUIRE(!touching.empty());
+    const double t0 = w.time();
+    std::int64_t tested = 0;
+    for (int step = 0; step < 120; ++step) {
+        w.step();
+        tested += w.lastStep().pairsTested;
+        VERIFY(w.lastStep().contacts == static_cast<std::int64_t>(touching.size()));
+    }
+    forcelab::test::report("300 balls all asleep after %d steps; 120 steps later: %lld pairs tested, %zu touching",
+                           steps, static_cast<long long>(tested), touching.size());
+    VERIFY(tested == 0);
+    VERIFY(std::abs(w.time() - t0 - 120.0 / 60.0) < 1e-9);
+    VERIFY(w.balls().position == position); // to the bit
+    VERIFY(w.balls().velocity == velocity);
+    VERIFY(w.contacts().size() == touching.size());
+    for (std::size_t k = 0; k < touching.size(); ++k)
+        VERIFY(w.contacts()[k].a == touching[k].a && w.contacts()[k].b == touching[k].b);
+
+    // A ball laid on the pile wakes it: the next step finds pairs again.
+    Ball dropped;
+    dropped.radius = 5.0;
+    dropped.position = Vec2(0.5 * w.settings().box.width, 20.0);
+    w.mutableBalls().append(dropped);
+    VERIFY(w.collisionSystem().sleepingCount() == 0);
+    w.step();
+    VERIFY(w.lastStep().pairsTested > 0);
+}
+
+
 namespace {
 
 // A pile of 30 balls of r = 10 px in four close-packed rows (8, 7, 8, 7)

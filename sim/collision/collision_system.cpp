@@ -67,6 +67,28 @@ void CollisionSystem::allowSleep(bool on)
     m_sleepAllowed = on;
 }
 
+bool CollisionSystem::everyBallSleeps(const CollisionSettings& settings, int n, const Vec2& gravity,
+                                      double dt) const
+{
+    if (n == 0 || !m_sleptThrough || m_sleep.count() != n)
+        return false;
+    const StepPlan plan = planStep(settings, settings.continuous, gravity, dt);
+    return plan.path == StepPath::Speculative && plan.sleeping;
+}
+
+CollisionStats CollisionSystem::stayAsleep()
+{
+    m_lastLimitReached = false;
+    m_lastPasses = 0;
+    m_lastBounceRows = 0;
+    m_lastBounced = false;
+    if (m_profiling)
+        ++m_profile.calls;
+    CollisionStats stats;
+    stats.contacts = static_cast<std::int64_t>(m_contacts.size());
+    return stats;
+}
+
 // How far x − v·h misses the start of a sub-step under gravity, in g·h², as
 // the solver takes it back (sub_step_context.h).
 static double startLag(IntegratorKind integrator)
@@ -198,6 +220,7 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
     const int n = balls.size();
     balls.colliding.assign(static_cast<std::size_t>(n), 0);
     const StepPlan plan = planStep(settings, settings.continuous && startPositions.cols() == n, gravity, dt);
+    m_sleptThrough = false; // until the sleeping path finds it so
     // Only the speculative path lets balls sleep; every other step (but one
     // that does nothing) wakes them all.
     if (plan.path == StepPath::InTimeOrder || (plan.path != StepPath::Nothing && !plan.sleeping))
@@ -234,6 +257,7 @@ void CollisionSystem::stepSpeculative(BallState& balls, const CollisionSettings&
 {
     const double g = gravity.norm();
     const bool sleeping = plan.sleeping;
+    const bool allAsleep = sleeping && m_sleep.count() == balls.size() && balls.size() > 0;
     if (sleeping) {
         m_sleep.hold(balls); // the sleepers back where they sleep, before anything reads them
         clock.lap(m_profile.sleep);
@@ -262,6 +286,7 @@ void CollisionSystem::stepSpeculative(BallState& balls, const CollisionSettings&
     if (sleeping) {
         m_sleep.settle(balls, m_speculative, m_resting.held(), dt, stillSpeed, m_solver.sleepTime);
         clock.lap(m_profile.sleep);
+        m_sleptThrough = allAsleep && m_sleep.count() == balls.size();
     }
     noteRestingSolve();
     stats.contacts = static_cast<std::int64_t>(m_contacts.size());

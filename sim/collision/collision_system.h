@@ -91,6 +91,19 @@ public:
     /// Balls that a pair approaching woke in the last step().
     int lastWoken() const { return m_sleep.lastWoken(); }
 
+    /// Whether step() with these arguments would leave all `n` balls as they
+    /// are: it would take the sleeping path, and every ball slept through
+    /// the whole of the last step() (its sleepers were put back where they
+    /// fell asleep at speed 0, no pair woke one, and its pairs were found
+    /// where they are now). The world then calls stayAsleep() instead.
+    bool everyBallSleeps(const CollisionSettings& settings, int n, const Vec2& gravity, double dt) const;
+    /// The step of a world whose every ball sleeps (everyBallSleeps): no
+    /// detection and no solve, and nothing changes but the counters of the
+    /// last step (no passes, no bounce, no ball woken). contacts() and the
+    /// balls' flags stay those of the last step, found at these same
+    /// positions. Returns this call's counters: the touching pairs, none tested.
+    CollisionStats stayAsleep();
+
     /// Detection alone: every touching pair (distance < r_a + r_b), sorted by
     /// (a, b) and identical for every method.
     CollisionStats detect(const BallState& balls, Detection method, std::vector<Contact>& out);
@@ -157,6 +170,7 @@ private:
     RestingSolver m_resting;
     SleepingBalls m_sleep;
     bool m_sleepAllowed = false;
+    bool m_sleptThrough = false; // the last step() began and ended with every ball asleep, none woken
     SpeculativeMargin m_margin;
     std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts
     std::vector<Contact> m_speculative;  // touching and speculative pairs, sorted by (a, b)

@@ -379,10 +379,6 @@ void World::step()
         bookEditsSinceLastStep();
     const Books booksBefore = m_books; // a step that is undone is taken off the books too
     m_last = StepStats{};
-    // Keep the state so a step that blows up can be taken back. A copy of two
-    // 2×N matrices: small next to the step itself.
-    m_savedPosition = m_balls.position;
-    m_savedVelocity = m_balls.velocity;
     drawStepRandomness();
     m_subTime = 0.0;
     m_gaveUp = false;
@@ -401,6 +397,16 @@ void World::step()
     for (const ForceModelInfo& model : forceModels())
         steady = steady && (!model.on(m_settings) || model.steadyAtRest);
     m_collisions.allowSleep(steady);
+    if (steady && m_settings.collisions.response != Response::None &&
+        m_collisions.everyBallSleeps(m_settings.collisions, m_balls.size(),
+                                     m_settings.gravity.enabled ? m_settings.gravity.g : Vec2::Zero(), h)) {
+        stepAsleep(substeps, started);
+        return;
+    }
+    // Keep the state so a step that blows up can be taken back. A copy of two
+    // 2×N matrices: small next to the step itself.
+    m_savedPosition = m_balls.position;
+    m_savedVelocity = m_balls.velocity;
     for (int k = 0; k < substeps && !m_gaveUp; ++k)
         subStep(h);
     // A fixed-step integrator does not notice that it skips over a close
@@ -443,6 +449,25 @@ void World::step()
         m_collisions.wakeAll();
         return;
     }
+    finishStep(started);
+}
+
+// Every ball asleep (CollisionSystem::everyBallSleeps): each sub-step would
+// move every ball, put it back where it fell asleep at speed 0 and find the
+// same pairs again, so the step is the same to the bit without them. The
+// pile costs nothing until an edit, a new ball or a change of settings
+// wakes it. What is drawn each step (the wind, random kicks) is still drawn,
+// so the run after it wakes is the run it would have been.
+void World::stepAsleep(int substeps, std::chrono::steady_clock::time_point started)
+{
+    for (int k = 0; k < substeps; ++k)
+        m_last.contacts += m_collisions.stayAsleep().contacts;
+    m_integrator.invalidate(); // as the sub-steps' contacts would have
+    finishStep(started);
+}
+
+void World::finishStep(std::chrono::steady_clock::time_point started)
+{
     spawnOverTime(); // a new ball's energy and momentum are booked with the edits, at the next step
     ++m_stepCount;
     advanceTime(m_settings.time.dt);

@@ -10,6 +10,7 @@
 #include "sim/world/scene.h"
 #include "sim/world/world_settings.h"
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -142,6 +143,8 @@ public:
 
 private:
     void subStep(double h);
+    void stepAsleep(int substeps, std::chrono::steady_clock::time_point started);
+    void finishStep(std::chrono::steady_clock::time_point started);
     void holdPinned();
     void advanceTime(double dt);
     void drawStepRandomness();
