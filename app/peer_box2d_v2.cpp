@@ -64,10 +64,7 @@ void runBox2D(const sim::Scene& scene)
         body->CreateFixture(&f);
         bodies.push_back(body);
     }
-    const double c0 = nowMilliseconds();
-    for (int s = 0; s < kSteps; ++s)
-        world.Step(static_cast<float>(scene.settings.time.dt), 8, 3);
-    const double ms = (nowMilliseconds() - c0) / kSteps;
+    const StepTimes ms = timeSteps([&] { world.Step(static_cast<float>(scene.settings.time.dt), 8, 3); });
     const std::size_t n = bodies.size();
     std::vector<double> x(n), y(n), vx(n), vy(n), r(n);
     for (std::size_t i = 0; i < n; ++i) {

@@ -66,10 +66,7 @@ void runOnce(const sim::Scene& scene, int subSteps, float contactHertz, const ch
         bodies.push_back(id);
     }
 
-    const double t0 = nowMilliseconds();
-    for (int s = 0; s < kSteps; ++s)
-        b2World_Step(world, static_cast<float>(scene.settings.time.dt), subSteps);
-    const double ms = (nowMilliseconds() - t0) / kSteps;
+    const StepTimes ms = timeSteps([&] { b2World_Step(world, static_cast<float>(scene.settings.time.dt), subSteps); });
 
     const std::size_t n = bodies.size();
     std::vector<double> x(n), y(n), vx(n), vy(n), r(n);
