@@ -3,7 +3,10 @@
 // finds a Box2D: Debian's 2.4 (libbox2d-dev; peer_box2d_v2.cpp) or a Box2D 3
 // installed by hand and named with -DCMAKE_PREFIX_PATH (peer_box2d_v3.cpp).
 //
-//   forcelab-peer-box2d [N ...]      (default 5000 20000; 600 steps at 60 Hz)
+//   forcelab-peer-box2d [--profile] [N ...]   (default 5000 20000; 600 steps at 60 Hz)
+//
+// --profile adds, per N, where ForceLab's step spends its time (one more run
+// on one thread with the collision stage's clocks on).
 
 #include "peer_box2d.h"
 
@@ -41,6 +44,29 @@ void runForceLab(const sim::Scene& scene, int threads)
     print(name, w.balls().size(), ms, measurePile(w));
 }
 
+// ForceLab on one thread again, with the collision stage's clocks on
+// (collision_profile.h): where a step's time goes, in ms per step over the
+// whole run. What the collision stage does not count (integrating, the
+// walls, the world's checks) is the step's time less the stages'.
+void profileForceLab(const sim::Scene& scene)
+{
+    using namespace forcelab::sim;
+    const ThreadLimit limit(1);
+    World w(scene);
+    CollisionSystem& collisions = w.collisionSystem();
+    collisions.setProfiling(true);
+    const StepTimes ms = timeSteps([&] { w.step(); });
+    const CollisionProfile& p = collisions.profile();
+    const double perStep = 1000.0 / kSteps; // s over the run to ms a step
+    const double broad = p.load + p.broadSort + p.pairs + p.contactSort;
+    const double passes = p.velocity + p.restitution + p.position;
+    std::printf("  profile %d: %.2f ms a step = broad phase %.2f + rows %.2f + passes %.2f + correction %.2f + "
+                "sleeping %.2f + the rest of the step %.2f; %lld rows and %lld passes a step\n",
+                w.balls().size(), ms.all, broad * perStep, (p.build + p.wallScan) * perStep, passes * perStep,
+                p.correction * perStep, p.sleep * perStep, ms.all - p.total() * perStep,
+                static_cast<long long>(p.rows / kSteps), static_cast<long long>(p.passes / kSteps));
+}
+
 } // namespace forcelab::peer
 
 int main(int argc, char** argv)
@@ -48,7 +74,12 @@ int main(int argc, char** argv)
     using namespace forcelab::peer;
     std::setvbuf(stdout, nullptr, _IOLBF, 0); // each row as soon as it is measured
     std::vector<int> sizes;
+    bool profile = false;
     for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--profile") {
+            profile = true;
+            continue;
+        }
         char* end = nullptr;
         const long n = std::strtol(argv[i], &end, 10);
         if (*end != '\0' || n < 1 || n > 1000000) {
@@ -69,6 +100,8 @@ int main(int argc, char** argv)
         runForceLab(scene, 1);
         runForceLab(scene, 2);
         runBox2D(scene);
+        if (profile)
+            profileForceLab(scene);
     }
     return 0;
 }

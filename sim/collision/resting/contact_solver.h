@@ -99,7 +99,10 @@
 //    depends on where it is alone (gravity, drag, point force, spring,
 //    homing, magnetic field; not wind, the pointer, random kicks, mutual
 //    gravity or a custom force), so a sleeper would feel the same force as
-//    when it fell asleep.
+//    when it fell asleep. A world whose every ball has slept through a
+//    whole step skips its sub-steps until something wakes a ball
+//    (CollisionSystem::everyBallSleeps): each would put every ball back
+//    where it is and find the same pairs.
 // 8. Islands (staged solve; contact_islands.h). Points 1-7 are for piles,
 //    and a gas under gravity has none: its balls meet now and then, fast.
 //    The pairs that may push this sub-step (they overlap, close their gap
