@@ -456,8 +456,7 @@ void World::step()
 // move every ball, put it back where it fell asleep at speed 0 and find the
 // same pairs again, so the step is the same to the bit without them. The
 // pile costs nothing until an edit, a new ball or a change of settings
-// wakes it. What is drawn each step (the wind, random kicks) is still drawn,
-// so the run after it wakes is the run it would have been.
+// wakes it. The step's random draws (drawStepRandomness) are made as before.
 void World::stepAsleep(int substeps, std::chrono::steady_clock::time_point started)
 {
     for (int k = 0; k < substeps; ++k)
