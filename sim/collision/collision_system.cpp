@@ -76,7 +76,8 @@ bool CollisionSystem::everyBallSleeps(const CollisionSettings& settings, int n, 
     return plan.path == StepPath::Speculative && plan.sleeping;
 }
 
-CollisionStats CollisionSystem::stayAsleep()
+// What every step starts from: the last step's counters cleared.
+void CollisionSystem::beginStep()
 {
     m_lastLimitReached = false;
     m_lastPasses = 0;
@@ -84,6 +85,11 @@ CollisionStats CollisionSystem::stayAsleep()
     m_lastBounced = false;
     if (m_profiling)
         ++m_profile.calls;
+}
+
+CollisionStats CollisionSystem::stayAsleep()
+{
+    beginStep();
     CollisionStats stats;
     stats.contacts = static_cast<std::int64_t>(m_contacts.size());
     return stats;
@@ -210,13 +216,8 @@ CollisionStats CollisionSystem::step(BallState& balls, const Matrix2X& startPosi
                                      const StepMotion& motion)
 {
     CollisionStats stats;
-    m_lastLimitReached = false;
-    m_lastPasses = 0;
-    m_lastBounceRows = 0;
-    m_lastBounced = false;
+    beginStep();
     StageClock clock(m_profiling);
-    if (m_profiling)
-        ++m_profile.calls;
     const int n = balls.size();
     balls.colliding.assign(static_cast<std::size_t>(n), 0);
     const StepPlan plan = planStep(settings, settings.continuous && startPositions.cols() == n, gravity, dt);

@@ -142,6 +142,7 @@ private:
         bool sleeping = false;     // balls at rest may sleep (Speculative only)
         double restingSpeed = 0.0; // px/s, v_rest of the resting paths
     };
+    void beginStep();
     StepPlan planStep(const CollisionSettings& settings, bool continuous, const Vec2& gravity, double dt) const;
     void stepSpeculative(BallState& balls, const CollisionSettings& settings, const BoxSettings& box,
                          const WallSettings& walls, double dt, const Vec2& gravity, const StepMotion& motion,

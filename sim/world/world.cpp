@@ -396,10 +396,8 @@ void World::step()
     bool steady = true;
     for (const ForceModelInfo& model : forceModels())
         steady = steady && (!model.on(m_settings) || model.steadyAtRest);
-    m_collisions.allowSleep(steady);
-    if (steady && m_settings.collisions.response != Response::None &&
-        m_collisions.everyBallSleeps(m_settings.collisions, m_balls.size(),
-                                     m_settings.gravity.enabled ? m_settings.gravity.g : Vec2::Zero(), h)) {
+    m_collisions.allowSleep(steady); // not steady: every ball wakes, so none sleeps below
+    if (m_collisions.everyBallSleeps(m_settings.collisions, m_balls.size(), m_settings.gravity.acting(), h)) {
         stepAsleep(substeps, started);
         return;
     }
@@ -659,8 +657,7 @@ void World::subStep(double h)
     // 4. Collisions: only when the scene asks for them.
     CollisionStats collisions;
     if (s.collisions.response != Response::None)
-        collisions = m_collisions.step(m_balls, m_startPosition, s.collisions, s.box, s.walls, h,
-                                       s.gravity.enabled ? s.gravity.g : Vec2::Zero(),
+        collisions = m_collisions.step(m_balls, m_startPosition, s.collisions, s.box, s.walls, h, s.gravity.acting(),
                                        StepMotion{&m_startVelocity, s.time.integrator});
     hits += collisions.wallHits;
     holdPinned();

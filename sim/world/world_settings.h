@@ -44,6 +44,9 @@ struct WallSettings {
 struct GravitySettings {
     bool enabled = false;
     Vec2 g{0.0, 980.0}; ///< px/s², uniform acceleration (y down)
+
+    /// px/s², the acceleration gravity gives now: g while on, zero while off.
+    Vec2 acting() const { return enabled ? g : Vec2::Zero(); }
 };
 
 enum class ForceScale {

@@ -125,7 +125,7 @@ double QuantityGraph::valueOf(const sim::World& world, Quantity q, int ball)
     const double m = b.mass[ball];
     s.p = m * s.v;
     // A ball's potential energy is gravity's alone (m g h).
-    const sim::Vec2 g = world.settings().gravity.enabled ? world.settings().gravity.g : sim::Vec2::Zero();
+    const sim::Vec2 g = world.settings().gravity.acting();
     s.kinetic = 0.5 * m * s.v.squaredNorm();
     s.potential = -m * g.dot(s.x);
     return pick(s, q);
@@ -262,7 +262,7 @@ void QuantityGraph::startTheory()
     for (const sim::World::SourceAcceleration& source : world.accelerationBySource(m_ball))
         if (source.model != "gravity")
             return;
-    const sim::Vec2 g = world.settings().gravity.enabled ? world.settings().gravity.g : sim::Vec2::Zero();
+    const sim::Vec2 g = world.settings().gravity.acting();
     m_theoryKind = Theory::ConstantAcceleration;
     m_mass = b.mass[m_ball];
     for (int k = 0; k < 2; ++k) {
