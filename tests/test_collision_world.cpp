@@ -1237,3 +1237,39 @@ TEST_CASE("TestCollisionWorld::fastPairInMidAirGetsTheExactImpulse")
     VERIFY(std::abs((b.position(0, 1) - b.position(0, 0) - 2.0 * r) - (2.0 * e * speed * (h - met))) <= 1e-9);
     VERIFY(std::abs((b.position(1, 0)) - (300.0 + g * h * h)) <= 1e-9);
 }
+
+// Under gravity alone two touching balls in mid-air fall as one: nothing
+// presses them together, so a slow pair between them is an impact (it
+// bounces at e) and needs no rows. With drag on, the balls' accelerations
+// differ, and the same slow pair rests (e = 0 below v_rest, in rows).
+TEST_CASE("TestCollisionWorld::slowPairFallingFreelyIsAnImpact")
+{
+    const double r = 5.0, gap = 0.01, speed = 1.0, e = 0.9;
+    auto scene = [&](bool drag) {
+        Scene s = openScene({ballAt(500.0, 300.0, speed, 0.0, r), ballAt(500.0 + 2.0 * r + gap, 300.0, -speed, 0.0, r)});
+        s.settings.box = BoxSettings{1000.0, 1000.0};
+        s.settings.gravity.enabled = true;
+        s.settings.drag.enabled = drag;
+        s.settings.collisions.response = Response::Impulse2D;
+        s.settings.collisions.restitution = e;
+        s.settings.collisions.detection = Detection::Sweep;
+        return s;
+    };
+    // v_rest = 2·|g|·h = 32.7 px/s: the pair (2 px/s) is far slower, and its
+    // gap closes within the step (2 px/s · h = 0.033 px > 0.01 px).
+    World free(scene(false));
+    free.collisionSystem().setProfiling(true);
+    free.step();
+    VERIFY(free.collisionSystem().profile().rows == 0);
+    VERIFY(std::abs(free.balls().velocity(0, 0) - (-e * speed)) <= 1e-9);
+    VERIFY(std::abs(free.balls().velocity(0, 1) - (e * speed)) <= 1e-9);
+    VERIFY(std::abs(free.balls().velocity(1, 0) - free.balls().velocity(1, 1)) <= 1e-12);
+
+    World dragged(scene(true));
+    dragged.collisionSystem().setProfiling(true);
+    dragged.step();
+    VERIFY(dragged.collisionSystem().profile().rows > 0);
+    // Resting: the pair no longer approaches, and does not bounce either.
+    const double along = dragged.balls().velocity(0, 1) - dragged.balls().velocity(0, 0);
+    VERIFY(std::abs(along) <= 0.05);
+}

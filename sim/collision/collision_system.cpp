@@ -119,6 +119,7 @@ SubStepContext CollisionSystem::subStep(const CollisionSettings& settings, const
     c.gravityY = gravity.y();
     c.solver = m_solver;
     c.startLag = startLag(motion.integrator);
+    c.sameForce = m_sameForce;
     return c;
 }
 

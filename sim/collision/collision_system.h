@@ -79,6 +79,12 @@ public:
     /// world allows it while every force on a ball at rest depends on where
     /// it is alone. Off by default; switching it off wakes every ball.
     void allowSleep(bool on);
+    /// Whether every force acting gives every ball the same acceleration
+    /// (gravity alone): then a group of balls with no wall, sleeper or
+    /// pinned ball among them falls as one, and its contacts are impacts,
+    /// not resting contacts (contact_solver.h, point 8). Off by default:
+    /// every slow contact rests.
+    void setSameForceOnEveryBall(bool on) { m_sameForce = on; }
     /// Wakes every sleeping ball (an edit between steps).
     void wakeAll() { m_sleep.wakeAll(); }
     /// Balls asleep now, and per ball whether it sleeps (nullptr: none).
@@ -171,6 +177,7 @@ private:
     RestingSolver m_resting;
     SleepingBalls m_sleep;
     bool m_sleepAllowed = false;
+    bool m_sameForce = false; // setSameForceOnEveryBall
     bool m_sleptThrough = false; // the last step() began and ended with every ball asleep, none woken
     SpeculativeMargin m_margin;
     std::vector<double> m_grow;          // per ball: how much its radius grows for speculative contacts

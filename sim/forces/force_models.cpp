@@ -193,7 +193,8 @@ const ForceModelInfo kModels[] = {
      },
      .potential = &gravityPotential,
      .switchOff = [](WorldSettings& s) { s.gravity.enabled = false; },
-     .steadyAtRest = true},
+     .steadyAtRest = true,
+     .sameForEveryBall = true},
     {.name = "drag",
      .on = [](const WorldSettings& s) { return s.drag.enabled; },
      .add = [](const ForceContext& c, const Matrix2X&, const Matrix2X& v, double, Matrix2X& a) {

@@ -59,6 +59,11 @@ struct ForceModelInfo {
     /// an input or other balls), so a resting ball may sleep while it is on
     /// (contact_solver.h, point 7).
     bool steadyAtRest = false;
+    /// It gives every ball the same acceleration, wherever it is and however
+    /// it moves (uniform gravity), so it never pushes two balls together: a
+    /// group of touching balls that only such forces act on falls as one, and
+    /// none of its contacts rests (contact_solver.h, point 8).
+    bool sameForEveryBall = false;
 };
 
 /// Every force model, in the order their accelerations are added.

@@ -392,11 +392,17 @@ void World::step()
     const bool adaptive = integratorInfo(m_settings.time.integrator).adaptive;
     const bool watch = !adaptive && !m_settings.time.stepPastClosePasses;
     // A ball at rest may sleep only while every force on it at rest stays
-    // what it was when it fell asleep.
-    bool steady = true;
-    for (const ForceModelInfo& model : forceModels())
-        steady = steady && (!model.on(m_settings) || model.steadyAtRest);
+    // what it was when it fell asleep; a group of touching balls in mid-air
+    // falls as one only while every force gives every ball the same
+    // acceleration.
+    bool steady = true, same = true;
+    for (const ForceModelInfo& model : forceModels()) {
+        const bool on = model.on(m_settings);
+        steady = steady && (!on || model.steadyAtRest);
+        same = same && (!on || model.sameForEveryBall);
+    }
     m_collisions.allowSleep(steady); // not steady: every ball wakes, so none sleeps below
+    m_collisions.setSameForceOnEveryBall(same);
     if (m_collisions.everyBallSleeps(m_settings.collisions, m_balls.size(), m_settings.gravity.acting(), h)) {
         stepAsleep(substeps, started);
         return;

@@ -5,7 +5,9 @@
 // An island needs it when one of its pairs rests (pushed in the last
 // sub-step, or touches or is about to while slow along its line of impact
 // or against a ball a contact held in the last solve), or when one of its
-// balls is near a wall, asleep or of infinite mass. Every other island is
+// balls is near a wall, asleep or of infinite mass; when every force gives
+// every ball the same acceleration, only the second kind (an anchor) counts,
+// since an island without one falls as one. Every other island is
 // free: its pairs are fast impacts and separating overlaps
 // (free_impacts.h) or do not meet. RestingRows::buildPairRows decides.
 //

@@ -116,7 +116,13 @@
 //    impulse of two free balls at the moment it meets (free_impacts.h),
 //    and a speculative pair that does not meet costs nothing after the
 //    broad phase. A standing pile is an island that needs the solver, and
-//    it is solved as before.
+//    it is solved as before. When every force gives every ball the same
+//    acceleration (gravity alone; ForceModelInfo::sameForEveryBall), an
+//    island needs the solver only through an anchor: a ball near a wall,
+//    asleep or of infinite mass. Without one the island falls as one, and
+//    nothing presses its balls together: a slow pair in it (balls spawned
+//    overlapping, two balls that drift into each other in mid-air) is a
+//    slow impact, and bounces at e, not at 0 as a resting pair would.
 
 namespace forcelab::sim {
 

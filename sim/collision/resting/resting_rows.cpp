@@ -301,7 +301,8 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         // Its island needs the solver when the pair rests: it pushed in the
         // last sub-step, has a sleeper or a ball of infinite mass, or meets
         // a ball held in the last solve or slower than v_rest along its
-        // line. A ball near a wall anchors its island too. A pair meets when
+        // line (under gravity alone, only an anchor: see `needy` below). A
+        // ball near a wall anchors its island too. A pair meets when
         // it overlaps, or when its gap is less than it closes within the
         // sub-step plus what gravity closes in it if one ball is held
         // (|g|·h²: a column of balls standing at touching distance meets).
@@ -309,14 +310,22 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         // islands.
         const bool meets = overlap || gapStart + approach * c.h < c.gravity * c.h * c.h;
         const bool infinite = !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb);
-        const bool rests = warm > 0.0 || sleeper || infinite ||
+        const bool anchored = sleeper || infinite;
+        const bool rests = anchored || warm > 0.0 ||
                            (meets && (heldA || heldB || std::abs(approach) <= c.restingSpeed));
+        // When every force gives every ball the same acceleration, a resting
+        // pair joins its island but only an anchor (a sleeper, a ball of
+        // infinite mass, a ball near a wall) makes the island need the
+        // solver: without one the island falls as one, nothing presses its
+        // balls together, and a slow pair in it is a slow impact that
+        // bounces at e.
+        const bool needy = c.sameForce ? anchored : rests;
         const bool wallA = nearAWall(x[2 * a], x[2 * a + 1], radius[a], v[2 * a], v[2 * a + 1], c);
         const bool wallB = nearAWall(x[2 * b], x[2 * b + 1], radius[b], v[2 * b], v[2 * b + 1], c);
         if (meets || rests) {
             ps.kind = meets ? PairStart::kMeets : PairStart::kRow;
             m_islands.join(ct.a, ct.b);
-            if (rests || wallA || wallB)
+            if (needy || wallA || wallB)
                 m_islands.markNeedy(ct.a);
         } else {
             ps.kind = PairStart::kQuiet;

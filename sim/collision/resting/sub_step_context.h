@@ -33,6 +33,9 @@ struct SubStepContext {
     /// energy (restitutionOneKeepsEnergyWithTheSolver), and their piles stand
     /// and bounce as well without it.
     double startLag = 0.0;
+    /// Every force acting gives every ball the same acceleration (gravity
+    /// alone): an island with no anchor falls as one (contact_islands.h).
+    bool sameForce = false;
 };
 
 } // namespace forcelab::sim
