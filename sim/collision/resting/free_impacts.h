@@ -2,9 +2,9 @@
 // The pairs of free islands (contact_islands.h): balls that meet fast, or
 // overlap while they separate, with no resting contact, wall, sleeper or
 // pinned ball among them (under gravity alone, balls that meet at any
-// speed, with no wall, sleeper or pinned ball). They do not need the resting solver's rows,
-// stages and passes: each gets the exact impulse of two free balls, at the
-// moment it meets within the sub-step.
+// speed, with no wall, sleeper or pinned ball). They do not need the
+// resting solver's rows, stages and passes: each gets the exact impulse of
+// two free balls, at the moment it meets within the sub-step.
 //
 // Per pair, in (a, b) order, with n the line of impact at the start of the
 // sub-step and v_n = (v_b − v_a)·n:
