@@ -167,12 +167,14 @@ void RestingRows::takeBackWallBounces(BallState& balls, const SubStepContext& c)
                 continue;
             double& vk = v[2 * i + k];
             const double p = x[2 * i + k];
+            // On a wall and leaving it first: few balls are, so the branch
+            // is seldom taken and well predicted.
+            if (!((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)))
+                continue;
             // The staged solve takes back only the small bounces of a ball
             // resting on a wall; a faster one stays the wall stage's, which
             // keeps a restitution-1 ball's energy exactly.
-            if (staged && !(std::abs(vk) <= ew * c.restingSpeed))
-                continue;
-            if ((on[k][0] && p - r == 0.0 && vk > 0.0) || (on[k][1] && size[k] - r - p == 0.0 && vk < 0.0)) {
+            if (!staged || std::abs(vk) <= ew * c.restingSpeed) {
                 vk = -vk / ew;
                 tookBack[2 * static_cast<std::size_t>(i) + static_cast<std::size_t>(k)] = 1;
             }
@@ -189,11 +191,53 @@ static bool nearAWall(double px, double py, double r, double vx, double vy, cons
     return !(px - r >= far && c.box.width - r - px >= far && py - r >= far && c.box.height - r - py >= far);
 }
 
+double RestingRows::WarmStarts::of(const Contact& ct)
+{
+    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
+    const std::size_t oldCount = m_rows.rowCount, dormantCount = m_rows.m_dormantBalls.size();
+    const Contact* oldBalls = m_rows.m_rowBalls.data();
+    while (m_old < oldCount && before(oldBalls[m_old], ct))
+        ++m_old;
+    while (m_dormant < dormantCount && before(m_rows.m_dormantBalls[m_dormant], ct))
+        ++m_dormant;
+    double warm = (m_old < oldCount && oldBalls[m_old] == ct) ? m_rows.impulse[m_old] : 0.0;
+    if (m_dormant < dormantCount && m_rows.m_dormantBalls[m_dormant] == ct)
+        warm = m_rows.m_dormantImpulse[m_dormant];
+    return warm;
+}
+
+// The line of impact and the gap at the start of the sub-step: the
+// integrator moved each ball by v·h before this stage, so the centres were
+// d − (v_b − v_a)·h apart. A fast ball may already sit deep in (or beyond)
+// the other at the end, where the direction means little.
+inline RestingRows::PairStart RestingRows::startOf(const double* v, const Contact& ct, double dx, double dy,
+                                                   double s, double warm, double wa, double wb,
+                                                   const SubStepContext& c) const
+{
+    const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
+    const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
+    const double sx = dx - dvx * c.h, sy = dy - dvy * c.h;
+    const double len = std::sqrt(sx * sx + sy * sy);
+    Vec2 nrm;
+    if (len > 1e-12 * s && std::isfinite(len))
+        nrm = Vec2(sx / len, sy / len);
+    else
+        nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
+    // The approach the pair ends the step with, less the speed gravity gave
+    // a ball that contacts held in the last solve: those contacts take it
+    // out again (a ball landing on a resting pile meets a ball at rest, not
+    // one falling at g·h).
+    const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
+    const double held = (heldB ? 1.0 : 0.0) - (heldA ? 1.0 : 0.0);
+    const double approach = (dvx - held * c.gravityX * c.h) * nrm.x() + (dvy - held * c.gravityY * c.h) * nrm.y();
+    return {nrm.x(), nrm.y(), len - s, approach, warm, wa, wb};
+}
+
 // Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
 // rows, so the impulses of pairs still in contact are found by a merge). The
 // line of impact and the gap come from the centres at the start of the
-// sub-step. A pair may close that gap and no more: its normal speed may not
-// drop below −allowed (0 for pairs that overlap). The
+// sub-step (startOf). A pair may close that gap and no more: its normal
+// speed may not drop below −allowed (0 for pairs that overlap). The
 // pairs that overlap now are copied to `touching` without a branch: each is
 // written, and the count moves on by the result of the test.
 //
@@ -219,17 +263,14 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
     for (auto* values : {&m_spareImpulse, &vn0})
         if (values->size() < m)
             values->resize(m);
-    if (m_pairStart.size() < m)
-        m_pairStart.resize(m);
-    std::size_t old = 0, overlapping = 0, dormant = 0;
-    const std::size_t oldCount = rowCount;
-    const Contact* oldBalls = m_rowBalls.data();
-    const double* oldImpulse = impulse.data();
-    const std::size_t dormantCount = m_dormantBalls.size();
+    if (m_pairKind.size() < m)
+        m_pairKind.resize(m);
+    m_pairStart.clear();
+    std::size_t overlapping = 0;
+    WarmStarts warmStarts(*this);
     m_spareDormantBalls.clear();
     m_spareDormantImpulse.clear();
     freePairs.clear();
-    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     if (touching && touching->size() < m)
         touching->resize(m);
     unsigned char* colliding = balls.colliding.data();
@@ -239,8 +280,16 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         m_islands.reset(balls.size());
     for (std::size_t p = 0; p < m; ++p) {
         const Contact ct = pairs[p];
-        PairStart& ps = m_pairStart[p];
-        ps.kind = PairStart::kNone;
+        m_pairKind[p] = kNone;
+        // Ball b of a pair is anywhere in the arrays: its lines are asked
+        // for a few pairs ahead, so their misses overlap.
+        if (p + kPrefetchPairs < m) {
+            const auto ahead = static_cast<std::size_t>(pairs[p + kPrefetchPairs].b);
+            __builtin_prefetch(&x[2 * ahead]);
+            __builtin_prefetch(&v[2 * ahead]);
+            __builtin_prefetch(&radius[ahead]);
+            __builtin_prefetch(&inverseMass[ahead]);
+        }
         const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
@@ -256,13 +305,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
             continue;
         // Last sub-step's impulse of this pair, whether it was a row or a
         // pair of two sleepers.
-        while (old < oldCount && before(oldBalls[old], ct))
-            ++old;
-        while (dormant < dormantCount && before(m_dormantBalls[dormant], ct))
-            ++dormant;
-        double warm = (old < oldCount && oldBalls[old] == ct) ? oldImpulse[old] : 0.0;
-        if (dormant < dormantCount && m_dormantBalls[dormant] == ct)
-            warm = m_dormantImpulse[dormant];
+        const double warm = warmStarts.of(ct);
         bool sleeper = false;
         if (m_asleep) {
             const bool sa = m_asleep[a], sb = m_asleep[b];
@@ -275,29 +318,12 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
             wa = sa ? 0.0 : wa;
             wb = sb ? 0.0 : wb;
         }
-        // The line of impact and the gap at the start of the sub-step: the
-        // integrator moved each ball by v·h before this stage, so the centres
-        // were d − (v_b − v_a)·h apart. A fast ball may already sit deep in
-        // (or beyond) the other at the end, where the direction means little.
-        const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
-        const double sx = dx - dvx * c.h, sy = dy - dvy * c.h;
-        const double len = std::sqrt(sx * sx + sy * sy);
-        Vec2 nrm;
-        if (len > 1e-12 * s && std::isfinite(len))
-            nrm = Vec2(sx / len, sy / len);
-        else
-            nrm = lineOfImpact(Vec2(dx, dy), s, ct.a, ct.b);
-        // The approach the pair ends the step with, less the speed gravity
-        // gave a ball that contacts held in the last solve: those contacts
-        // take it out again (a ball landing on a resting pile meets a ball
-        // at rest, not one falling at g·h).
-        const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
-        const double held = (heldB ? 1.0 : 0.0) - (heldA ? 1.0 : 0.0);
-        const double approach = (dvx - held * c.gravityX * c.h) * nrm.x() + (dvy - held * c.gravityY * c.h) * nrm.y();
-        const double gapStart = len - s;
-        ps = {nrm.x(), nrm.y(), gapStart, approach, warm, wa, wb, PairStart::kRow};
-        if (!islands)
+        const PairStart ps = startOf(v, ct, dx, dy, s, warm, wa, wb, c);
+        if (!islands) {
+            m_pairKind[p] = kRow;
+            m_pairStart.push_back(ps);
             continue;
+        }
         // Its island needs the solver when the pair rests: it pushed in the
         // last sub-step, has a sleeper or a ball of infinite mass, or meets
         // a ball held in the last solve or slower than v_rest along its
@@ -308,11 +334,12 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         // (|g|·h²: a column of balls standing at touching distance meets).
         // A pair that neither meets nor rests (a speculative pair) joins no
         // islands.
-        const bool meets = overlap || gapStart + approach * c.h < c.gravity * c.h * c.h;
+        const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
+        const bool meets = overlap || ps.gapStart + ps.approach * c.h < c.gravity * c.h * c.h;
         const bool infinite = !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb);
         const bool anchored = sleeper || infinite;
         const bool rests = anchored || warm > 0.0 ||
-                           (meets && (heldA || heldB || std::abs(approach) <= c.restingSpeed));
+                           (meets && (heldA || heldB || std::abs(ps.approach) <= c.restingSpeed));
         // When every force gives every ball the same acceleration, a resting
         // pair joins its island but only an anchor (a sleeper, a ball of
         // infinite mass, a ball near a wall) makes the island need the
@@ -323,12 +350,13 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         const bool wallA = nearAWall(x[2 * a], x[2 * a + 1], radius[a], v[2 * a], v[2 * a + 1], c);
         const bool wallB = nearAWall(x[2 * b], x[2 * b + 1], radius[b], v[2 * b], v[2 * b + 1], c);
         if (meets || rests) {
-            ps.kind = meets ? PairStart::kMeets : PairStart::kRow;
+            m_pairKind[p] = meets ? kMeets : kRow;
+            m_pairStart.push_back(ps);
             m_islands.join(ct.a, ct.b);
             if (needy || wallA || wallB)
                 m_islands.markNeedy(ct.a);
         } else {
-            ps.kind = PairStart::kQuiet;
+            m_pairKind[p] = kQuiet;
             if (wallA)
                 m_islands.markNeedy(ct.a);
             if (wallB)
@@ -337,6 +365,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
     }
     if (touching)
         touching->resize(overlapping);
+    const unsigned char* kinds = m_pairKind.data();
     // A pair that does not meet, between an island that needs the solver
     // and one that does not, brings the other island into the solve: the
     // solver may push a ball of the first into it. One step only (the
@@ -345,7 +374,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
     if (islands) {
         m_attached.clear();
         for (std::size_t p = 0; p < m; ++p) {
-            if (m_pairStart[p].kind != PairStart::kQuiet)
+            if (kinds[p] != kQuiet)
                 continue;
             const Contact ct = pairs[p];
             const bool na = m_islands.needy(ct.a), nb = m_islands.needy(ct.b);
@@ -355,24 +384,34 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         for (const int i : m_attached)
             m_islands.markNeedy(i);
     }
-    std::size_t count = 0;
+    std::size_t count = 0, stored = 0;
+    WarmStarts quietWarmStarts(*this); // for the pairs that do not meet but become rows
     for (std::size_t p = 0; p < m; ++p) {
-        const PairStart& ps = m_pairStart[p];
-        if (ps.kind == PairStart::kNone)
+        const unsigned char kind = kinds[p];
+        if (kind == kNone)
             continue;
         const Contact ct = pairs[p];
+        const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
+        PairStart ps;
         // A pair that does not meet is a row only between two balls whose
         // islands the solver takes (a speculative contact of a pile); the
         // pairs of free islands that meet get their exact impulses.
-        if (islands && ps.kind == PairStart::kQuiet) {
+        if (kind == kQuiet) {
             if (!m_islands.needy(ct.a) || !m_islands.needy(ct.b))
                 continue;
-        } else if (islands && !m_islands.needy(ct.a)) {
-            if (ps.kind == PairStart::kMeets)
-                freePairs.push_back({ct.a, ct.b, ps.nx, ps.ny, ps.gapStart});
-            continue;
+            // Neither ball sleeps nor has infinite mass (the pair would
+            // rest): the first loop's geometry, found again.
+            const double s = radius[a] + radius[b];
+            const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
+            ps = startOf(v, ct, dx, dy, s, quietWarmStarts.of(ct), inverseMass[a], inverseMass[b], c);
+        } else {
+            ps = m_pairStart[stored++];
+            if (islands && !m_islands.needy(ct.a)) {
+                if (kind == kMeets)
+                    freePairs.push_back({ct.a, ct.b, ps.nx, ps.ny, ps.gapStart});
+                continue;
+            }
         }
-        const auto a = static_cast<std::size_t>(ct.a), b = static_cast<std::size_t>(ct.b);
         // A gap may close within the sub-step and no more: its normal speed
         // may not drop below −gap/h (0 for a pair that overlapped already).
         const double allowed = ps.gapStart > 0.0 ? ps.gapStart * c.inverseH : 0.0;

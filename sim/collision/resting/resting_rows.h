@@ -171,13 +171,31 @@ private:
     void buildWallRows(const BallState& balls, const SubStepContext& c);
     void sortRowsByStrip();
 
-    // A pair's start geometry, found in the first loop of buildPairRows.
+    // What the first loop of buildPairRows found for each pair: its kind,
+    // and for a pair that rests or meets its start geometry (a pair that
+    // does not meet, the commonest in a gas, keeps one byte; the rare one
+    // that becomes a row finds its geometry again, to the same bits).
+    enum PairKind : unsigned char { kNone, kQuiet, kRow, kMeets }; // no row; does not meet; rests; meets this sub-step
     struct PairStart {
-        enum Kind : unsigned char { kNone, kQuiet, kRow, kMeets }; // no row; does not meet; rests; meets this sub-step
         double nx, ny, gapStart, approach, warm, wa, wb;
-        Kind kind;
     };
-    std::vector<PairStart> m_pairStart;
+    // Last sub-step's impulse of each pair, found by walking the rows and
+    // the pairs of two sleepers it kept beside this sub-step's pairs, in
+    // (a, b) order.
+    class WarmStarts {
+    public:
+        WarmStarts(const RestingRows& rows) : m_rows(rows) {}
+        double of(const Contact& ct);
+
+    private:
+        const RestingRows& m_rows;
+        std::size_t m_old = 0, m_dormant = 0;
+    };
+    PairStart startOf(const double* v, const Contact& ct, double dx, double dy, double s, double warm, double wa,
+                      double wb, const SubStepContext& c) const;
+    static constexpr std::size_t kPrefetchPairs = 16; // how far ahead buildPairRows asks for ball b's lines
+    std::vector<unsigned char> m_pairKind; // per pair: its PairKind
+    std::vector<PairStart> m_pairStart;    // per pair that rests or meets, in pair order
     ContactIslands m_islands;
     std::vector<int> m_attached; // balls whose islands a pair that does not meet brings into the solve
     std::vector<PairRow> m_spareRows;
