@@ -191,7 +191,7 @@ static bool nearAWall(double px, double py, double r, double vx, double vy, cons
     return !(px - r >= far && c.box.width - r - px >= far && py - r >= far && c.box.height - r - py >= far);
 }
 
-double RestingRows::WarmStarts::of(const Contact& ct)
+inline double RestingRows::WarmStarts::of(const Contact& ct)
 {
     auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     const std::size_t oldCount = m_rows.rowCount, dormantCount = m_rows.m_dormantBalls.size();

@@ -179,12 +179,12 @@ private:
     struct PairStart {
         double nx, ny, gapStart, approach, warm, wa, wb;
     };
-    // Last sub-step's impulse of each pair, found by walking the rows and
-    // the pairs of two sleepers it kept beside this sub-step's pairs, in
-    // (a, b) order.
+    // Last sub-step's impulse of a pair (0: none), from its rows and its
+    // pairs of two sleepers, both in (a, b) order: one walk beside the
+    // pairs, so ask for the pairs in (a, b) order.
     class WarmStarts {
     public:
-        WarmStarts(const RestingRows& rows) : m_rows(rows) {}
+        explicit WarmStarts(const RestingRows& rows) : m_rows(rows) {}
         double of(const Contact& ct);
 
     private:
