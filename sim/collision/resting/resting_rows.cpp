@@ -227,7 +227,7 @@ inline RestingRows::PairStart RestingRows::startOf(const double* v, const Contac
     // a ball that contacts held in the last solve: those contacts take it
     // out again (a ball landing on a resting pile meets a ball at rest, not
     // one falling at g·h).
-    const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
+    const bool heldA = wasHeld(a), heldB = wasHeld(b);
     const double held = (heldB ? 1.0 : 0.0) - (heldA ? 1.0 : 0.0);
     const double approach = (dvx - held * c.gravityX * c.h) * nrm.x() + (dvy - held * c.gravityY * c.h) * nrm.y();
     return {nrm.x(), nrm.y(), len - s, approach, warm, wa, wb};
@@ -334,7 +334,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         // (|g|·h²: a column of balls standing at touching distance meets).
         // A pair that neither meets nor rests (a speculative pair) joins no
         // islands.
-        const bool heldA = a < m_held.size() && m_held[a], heldB = b < m_held.size() && m_held[b];
+        const bool heldA = wasHeld(a), heldB = wasHeld(b);
         const bool meets = overlap || ps.gapStart + ps.approach * c.h < c.gravity * c.h * c.h;
         const bool infinite = !(wa > 0.0 && wb > 0.0) || !std::isfinite(wa + wb);
         const bool anchored = sleeper || infinite;

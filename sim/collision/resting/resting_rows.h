@@ -203,6 +203,9 @@ private:
     std::vector<double> m_spareImpulse, m_spareVn0;
     std::vector<WallRow> m_spareWalls;
     std::vector<unsigned char> m_held;       // per ball: an impulse touched it in the last solve
+    // Ball i was held in the last solve. m_held is shorter than the balls
+    // before the first solve and after balls were added (writeBack sizes it).
+    bool wasHeld(std::size_t i) const { return i < m_held.size() && m_held[i] != 0; }
     const unsigned char* m_asleep = nullptr; // per ball, this solve: it sleeps (nullptr: none does)
     const double* m_ownRestitution = nullptr; // per ball, this solve: SubStepContext::ownRestitution
     // The pairs of two sleepers, not solved, in (a, b) order, with the
