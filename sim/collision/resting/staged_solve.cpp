@@ -74,8 +74,10 @@ void StagedSolve::start(RestingRows& r, const SubStepContext& c)
     }
     // Each row's line of impact and gap from its bodies' start positions (the
     // wall stage may have moved one ball of a pair back onto a wall).
-    if (m_gap.size() < r.rowCount)
+    if (m_gap.size() < r.rowCount) {
         m_gap.resize(r.rowCount);
+        m_gapNow.resize(r.rowCount);
+    }
     for (std::size_t k = 0; k < r.rowCount; ++k) {
         PairRow& row = r.pairRows[k];
         const BodyPosition& A = r.bodyPositions[static_cast<std::size_t>(row.a)];
@@ -88,6 +90,7 @@ void StagedSolve::start(RestingRows& r, const SubStepContext& c)
         }
         m_gap[k] = len - reach;
     }
+    updateGaps(r);
     m_pushed.assign(r.rowCount, 0);
     m_hitSpeed.assign(r.rowCount, 0.0);
     m_hitNoted.assign(r.rowCount, 0);
@@ -174,6 +177,7 @@ void StagedSolve::runStage(RestingRows& r, const SubStepContext& c, const StageS
         m_bodyMoved[2 * k] = p.x - m_bodyStart[2 * k];
         m_bodyMoved[2 * k + 1] = p.y - m_bodyStart[2 * k + 1];
     }
+    updateGaps(r);
     // 5. Relax: passes without the push, so the speed that pushed the
     //    overlaps apart does not stay in the bodies.
     for (int pass = 0; pass < relaxPasses; ++pass)
@@ -289,9 +293,28 @@ bool StagedSolve::markBounceRegion(const RestingRows& r, int layers, const std::
     return 2 * m_bounceRows.size() < r.rowCount;
 }
 
-// One pass over the rows. A row's gap now is its gap at the start of the
-// sub-step plus what its bodies moved along its line since (no square root:
-// the line is the one at the start). A gap may close within the stage and
+// A row's gap now is its gap at the start of the sub-step plus what its
+// bodies moved along its line since (no square root: the line is the one at
+// the start). The bodies move only in step 4, so the passes between two
+// moves (five at the defaults, more after an impact or a bounce) read one
+// gap per row from m_gapNow instead of both bodies' moves: the same sums, to
+// the bit. Each strip writes its own rows' entries.
+void StagedSolve::updateGaps(RestingRows& r)
+{
+    const PairRow* rows = r.pairRows.data();
+    const double* gap = m_gap.data();
+    const double* moved = m_bodyMoved.data();
+    double* gapNow = m_gapNow.data();
+    r.strips.run([&](int, int begin, int end) {
+        for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
+            const auto a = static_cast<std::size_t>(rows[k].a), b = static_cast<std::size_t>(rows[k].b);
+            gapNow[k] = gap[k] + ((moved[2 * b] - moved[2 * a]) * rows[k].nx +
+                                  (moved[2 * b + 1] - moved[2 * a + 1]) * rows[k].ny);
+        }
+    });
+}
+
+// One pass over the rows. A gap (m_gapNow) may close within the stage and
 // no more (v_n ≥ −gap/hs); an overlap with `push` asks the soft contact's
 // separating speed; with `bounce`, a bouncing row asks its bounce speed.
 void StagedSolve::stagePass(RestingRows& r, const SubStepContext& c, const StageStep& step, bool push, bool bounce,
@@ -299,10 +322,9 @@ void StagedSolve::stagePass(RestingRows& r, const SubStepContext& c, const Stage
 {
     const PairRow* rows = r.pairRows.data();
     double* impulse = r.impulse.data();
-    const double* gap = m_gap.data();
+    const double* gapNow = m_gapNow.data();
     RestingBody* body = r.bodies.data();
     const BodyPosition* position = r.bodyPositions.data();
-    const double* moved = m_bodyMoved.data();
     unsigned char* pushed = m_pushed.data();
     double* hitSpeed = m_hitSpeed.data();
     const double* stageVelocity = m_stageVelocity.data();
@@ -326,8 +348,7 @@ void StagedSolve::stagePass(RestingRows& r, const SubStepContext& c, const Stage
         RestingBody& A = body[row.a];
         RestingBody& B = body[row.b];
         const auto a = static_cast<std::size_t>(row.a), b = static_cast<std::size_t>(row.b);
-        const double sep =
-            gap[k] + ((moved[2 * b] - moved[2 * a]) * row.nx + (moved[2 * b + 1] - moved[2 * a + 1]) * row.ny);
+        const double sep = gapNow[k];
         const bool bouncing = bounce && pushed[k] == 2;
         double bias, massScale, impulseScale;
         target(sep, bias, massScale, impulseScale);

@@ -7,7 +7,8 @@
 //   start        the bodies back where the sub-step began, each row's line
 //                and gap from there
 //   runStage     per stage: gravity's share, warm start, soft passes
-//                (soft_contact.h), the passes a hard impact adds, move, relax
+//                (soft_contact.h), the passes a hard impact adds, move
+//                (and the rows' gaps after it: updateGaps), relax
 //   markBounces  the pairs and walls that bounce, at the speed they hit with
 //   finalPasses  the passes over every row, and the bounce region's extras
 //
@@ -47,11 +48,15 @@ private:
     void finalPasses(RestingRows& r, const SubStepContext& c, const StageStep& step, bool any);
     // The rows near a bounce, for the passes a bounce adds.
     bool markBounceRegion(const RestingRows& r, int layers, const std::vector<int>* seedRows = nullptr);
+    // Each row's gap now, from its gap at the start and its bodies' moves
+    // (constant between two moves, so worked out once per move, not per pass).
+    void updateGaps(RestingRows& r);
     // One pass over every row (onlyRows null) or over the rows listed.
     void stagePass(RestingRows& r, const SubStepContext& c, const StageStep& step, bool push, bool bounce, bool last,
                    const std::vector<int>* onlyRows = nullptr);
 
     std::vector<double> m_gap;             // per row: centre distance less the radii at the start
+    std::vector<double> m_gapNow;          // per row: m_gap plus its bodies' moves along its line (updateGaps)
     std::vector<unsigned char> m_pushed;   // per row: its impulse was above 0 in some stage (2: it bounces)
     std::vector<double> m_hitSpeed;        // per row: v_n at the start of the stage it first pushed in
     std::vector<unsigned char> m_hitNoted; // per row: its first push was looked at
