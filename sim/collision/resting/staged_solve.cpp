@@ -377,10 +377,12 @@ void StagedSolve::stagePass(RestingRows& r, const SubStepContext& c, const Stage
                           (stageVelocity[2 * b + 1] - stageVelocity[2 * a + 1]) * row.ny;
         }
     };
-    // A region's rows are few: in row order on this thread.
+    // A region's rows are few: on this thread, four quarters of its list
+    // interleaved like a strip's rows.
     if (onlyRows) {
-        for (const int k : *onlyRows)
-            solveRow(static_cast<std::size_t>(k));
+        const int* list = onlyRows->data();
+        forEachInterleaved(0, static_cast<int>(onlyRows->size()),
+                           [&](std::size_t i) { solveRow(static_cast<std::size_t>(list[i])); });
     } else {
         r.strips.run([&](int, int begin, int end) { forEachInterleaved(begin, end, solveRow); });
     }
