@@ -45,10 +45,8 @@ void StagedSolve::start(RestingRows& r, const SubStepContext& c)
     const auto bodies = static_cast<std::size_t>(r.bodyCount);
     if (m_bodyStart.size() < 2 * bodies) {
         m_bodyStart.resize(2 * bodies);
-        m_bodyMoved.resize(2 * bodies);
         m_stageVelocity.resize(2 * bodies);
     }
-    std::fill_n(m_bodyMoved.begin(), 2 * bodies, 0.0);
     // A ball the wall stage has just bounced (its new velocity would take it
     // back beyond the wall) starts where the wall stage left it along that
     // axis.
@@ -88,9 +86,11 @@ void StagedSolve::start(RestingRows& r, const SubStepContext& c)
             row.nx = dx / len;
             row.ny = dy / len;
         }
+        // Nothing has moved yet, so the gap now is the gap at the start
+        // (updateGaps would add an exact zero to a gap that is never −0).
         m_gap[k] = len - reach;
+        m_gapNow[k] = m_gap[k];
     }
-    updateGaps(r);
     m_pushed.assign(r.rowCount, 0);
     m_hitSpeed.assign(r.rowCount, 0.0);
     m_hitNoted.assign(r.rowCount, 0);
@@ -174,8 +174,6 @@ void StagedSolve::runStage(RestingRows& r, const SubStepContext& c, const StageS
         keepInsideWalls(from, to, p.r, c.box, c.walls);
         p.x = to.x();
         p.y = to.y();
-        m_bodyMoved[2 * k] = p.x - m_bodyStart[2 * k];
-        m_bodyMoved[2 * k + 1] = p.y - m_bodyStart[2 * k + 1];
     }
     updateGaps(r);
     // 5. Relax: passes without the push, so the speed that pushed the
@@ -303,13 +301,15 @@ void StagedSolve::updateGaps(RestingRows& r)
 {
     const PairRow* rows = r.pairRows.data();
     const double* gap = m_gap.data();
-    const double* moved = m_bodyMoved.data();
+    const BodyPosition* at = r.bodyPositions.data();
+    const double* start = m_bodyStart.data();
     double* gapNow = m_gapNow.data();
     r.strips.run([&](int, int begin, int end) {
         for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
             const auto a = static_cast<std::size_t>(rows[k].a), b = static_cast<std::size_t>(rows[k].b);
-            gapNow[k] = gap[k] + ((moved[2 * b] - moved[2 * a]) * rows[k].nx +
-                                  (moved[2 * b + 1] - moved[2 * a + 1]) * rows[k].ny);
+            const double movedAx = at[a].x - start[2 * a], movedAy = at[a].y - start[2 * a + 1];
+            const double movedBx = at[b].x - start[2 * b], movedBy = at[b].y - start[2 * b + 1];
+            gapNow[k] = gap[k] + ((movedBx - movedAx) * rows[k].nx + (movedBy - movedAy) * rows[k].ny);
         }
     });
 }

@@ -62,7 +62,6 @@ private:
     std::vector<unsigned char> m_hitNoted; // per row: its first push was looked at
     std::vector<double> m_stageVelocity;   // per body: v at the start of this stage
     std::vector<double> m_bodyStart;       // per body: x, y at the start of the sub-step
-    std::vector<double> m_bodyMoved;       // per body: x, y now less x, y at the start
     std::vector<unsigned char> m_bodyLayer; // per body: rows between it and a bounce (kFarFromBounce: more)
     std::vector<int> m_bounceRows;         // the rows near a bounce, in row order
     std::vector<int> m_stageHits;          // the rows a hard impact first pushed in this stage
