@@ -4,6 +4,8 @@
 
 #include "sim/collision/narrow_phase.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -177,26 +179,57 @@ void UniformGrid::findPairs(const BroadPhaseInput& in, const Test&, std::vector<
     clock.lap(profile.broadSort);
     // Pairs in each cell. Both boxes cover the cell, so the overlap's lower
     // corner is in this cell exactly when this is the first column of one of
-    // the two balls and the first row of one of them.
-    std::int64_t tested = 0;
-    std::size_t begin = 0;
-    for (std::size_t s = 0; s < m_slotEnd.size(); ++s) {
-        const std::size_t end = m_slotEnd[s];
-        for (std::size_t p = begin; p + 1 < end; ++p) {
-            const std::uint32_t firstP = m_entry[p].first;
-            for (std::size_t q = p + 1; q < end; ++q) {
-                if (((firstP | m_entry[q].first) & 3u) != 3u)
-                    continue;
-                if (m_hashed && (m_entryCx[q] != m_entryCx[p] || m_entryCy[q] != m_entryCy[p]))
-                    continue; // another cell in the same hash slot
-                ++tested;
-                if (touching(p, q)) {
-                    const int a = m_entry[p].ball, b = m_entry[q].ball;
-                    out.push_back({std::min(a, b), std::max(a, b)});
+    // the two balls and the first row of one of them. Slots [first, last)
+    // append their pairs to `pairs` and return how many pairs they tested.
+    auto pairsIn = [&](std::size_t first, std::size_t last, std::vector<Contact>& pairs) {
+        std::int64_t tested = 0;
+        std::size_t begin = first == 0 ? 0 : m_slotEnd[first - 1];
+        for (std::size_t s = first; s < last; ++s) {
+            const std::size_t end = m_slotEnd[s];
+            for (std::size_t p = begin; p + 1 < end; ++p) {
+                const std::uint32_t firstP = m_entry[p].first;
+                for (std::size_t q = p + 1; q < end; ++q) {
+                    if (((firstP | m_entry[q].first) & 3u) != 3u)
+                        continue;
+                    if (m_hashed && (m_entryCx[q] != m_entryCx[p] || m_entryCy[q] != m_entryCy[p]))
+                        continue; // another cell in the same hash slot
+                    ++tested;
+                    if (touching(p, q)) {
+                        const int a = m_entry[p].ball, b = m_entry[q].ball;
+                        pairs.push_back({std::min(a, b), std::max(a, b)});
+                    }
                 }
             }
+            begin = end;
         }
-        begin = end;
+        return tested;
+    };
+    // Many entries: the slots in kChunks runs of about equal entries, each
+    // run's pairs in a list of its own, on every core, then the lists one
+    // after another. The caller sorts the pairs into (a, b) order, so the
+    // result is the same on any number of threads.
+    std::int64_t tested = 0;
+    if (entries < kParallelEntries) {
+        tested = pairsIn(0, m_slotEnd.size(), out);
+    } else {
+        std::size_t cut[kChunks + 1];
+        cut[0] = 0;
+        for (std::size_t i = 1; i < kChunks; ++i) // the first slot that ends past i/kChunks of the entries
+            cut[i] = static_cast<std::size_t>(
+                std::upper_bound(m_slotEnd.begin(), m_slotEnd.end(), static_cast<std::uint32_t>(entries * i / kChunks)) -
+                m_slotEnd.begin());
+        cut[kChunks] = m_slotEnd.size();
+        m_chunkPairs.resize(kChunks);
+        std::int64_t chunkTested[kChunks] = {};
+        oneapi::tbb::parallel_for(std::size_t{0}, kChunks, [&](std::size_t i) {
+            m_chunkPairs[i].clear();
+            if (cut[i] < cut[i + 1])
+                chunkTested[i] = pairsIn(cut[i], cut[i + 1], m_chunkPairs[i]);
+        });
+        for (std::size_t i = 0; i < kChunks; ++i) {
+            out.insert(out.end(), m_chunkPairs[i].begin(), m_chunkPairs[i].end());
+            tested += chunkTested[i];
+        }
     }
     stats.pairsTested += tested;
     clock.lap(profile.pairs);

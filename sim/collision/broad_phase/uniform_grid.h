@@ -53,6 +53,11 @@ private:
     void sortEntries(const BroadPhaseInput& in);
     bool placeBalls(const BroadPhaseInput& in, double cell, double minX, double minY);
 
+    // The pairs of at least kParallelEntries entries are found in kChunks
+    // runs of slots on every core (uniform_grid.cpp).
+    static constexpr std::size_t kParallelEntries = 16384;
+    static constexpr std::size_t kChunks = 16;
+
     double m_cellScale = 1.5;
     double m_cellSize = 0.0;
     double m_originX = 0.0, m_originY = 0.0;
@@ -76,6 +81,7 @@ private:
     std::vector<Entry> m_entry;
     std::vector<double> m_ex0, m_ey0, m_ex, m_ey, m_er; // continuous mode only
     std::vector<std::int32_t> m_entryCx, m_entryCy; // hashed mode only
+    std::vector<std::vector<Contact>> m_chunkPairs; // per run of slots: its pairs (many entries only)
 };
 
 } // namespace forcelab::sim
