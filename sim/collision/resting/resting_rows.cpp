@@ -7,10 +7,25 @@
 #include "sim/collision/response/positional_correction.h"
 #include "sim/collision/response/response.h"
 
+#include <oneapi/tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace forcelab::sim {
+namespace {
+
+// f(run) for run = 0 .. runs − 1: on this thread for one run, else on every core.
+template <class F>
+void forEachRun(std::size_t runs, F&& f)
+{
+    if (runs == 1)
+        f(std::size_t{0});
+    else
+        oneapi::tbb::parallel_for(std::size_t{0}, runs, f);
+}
+
+} // namespace
 
 void RestingRows::build(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
                         std::vector<Contact>* touching, StageClock& clock, CollisionProfile& profile,
@@ -206,6 +221,17 @@ inline double RestingRows::WarmStarts::of(const Contact& ct)
     return warm;
 }
 
+// Puts the walk at the first of last sub-step's pairs not before `ct`, as if
+// every pair before `ct` had been asked for (a run of pairs starts there).
+inline void RestingRows::WarmStarts::skipTo(const Contact& ct)
+{
+    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
+    const Contact* oldBalls = m_rows.m_rowBalls.data();
+    m_old = static_cast<std::size_t>(std::lower_bound(oldBalls, oldBalls + m_rows.rowCount, ct, before) - oldBalls);
+    const std::vector<Contact>& dormant = m_rows.m_dormantBalls;
+    m_dormant = static_cast<std::size_t>(std::lower_bound(dormant.begin(), dormant.end(), ct, before) - dormant.begin());
+}
+
 // The line of impact and the gap at the start of the sub-step: the
 // integrator moved each ball by v·h before this stage, so the centres were
 // d − (v_b − v_a)·h apart. A fast ball may already sit deep in (or beyond)
@@ -233,57 +259,32 @@ inline RestingRows::PairStart RestingRows::startOf(const double* v, const Contac
     return {nrm.x(), nrm.y(), len - s, approach, warm, wa, wb};
 }
 
-// Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
-// rows, so the impulses of pairs still in contact are found by a merge). The
-// line of impact and the gap come from the centres at the start of the
-// sub-step (startOf). A pair may close that gap and no more: its normal
-// speed may not drop below −allowed (0 for pairs that overlap). The
-// pairs that overlap now are copied to `touching` without a branch: each is
-// written, and the count moves on by the result of the test.
-//
-// In the staged solve, rows are made only for the islands that need the
-// resting solver (contact_islands.h): a first loop over the pairs finds
-// each pair's start geometry and joins the islands, a second makes the
-// rows of the islands that need them and lists the meeting pairs of the
-// free islands for their exact impulses (free_impacts.h).
-void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
-                                  std::vector<Contact>* touching)
+// The first loop of stage 1 over pairs [begin, end): each pair's kind and
+// marks (m_pairKind, m_pairMark), the start geometry of a pair that rests or
+// meets, and the pairs of two sleepers with their impulses, in pair order in
+// `run`'s lists. It writes nothing else, so runs can go side by side.
+void RestingRows::classifyPairs(const BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                                std::size_t begin, std::size_t end, PairRun& run)
 {
     const double* x = balls.position.data();
     const double* v = balls.velocity.data();
     const double* radius = balls.radius.data();
     const double* inverseMass = balls.inverseMass.data();
-    const std::size_t m = pairs.size();
-    // The arrays only grow; the strip sort and its undoing swap some of them
-    // with their spares, so each is checked on its own.
-    if (m_spareRows.size() < m)
-        m_spareRows.resize(m);
-    if (m_spareBalls.size() < m)
-        m_spareBalls.resize(m);
-    for (auto* values : {&m_spareImpulse, &vn0})
-        if (values->size() < m)
-            values->resize(m);
-    if (m_pairKind.size() < m)
-        m_pairKind.resize(m);
-    m_pairStart.clear();
-    std::size_t overlapping = 0;
-    WarmStarts warmStarts(*this);
-    m_spareDormantBalls.clear();
-    m_spareDormantImpulse.clear();
-    freePairs.clear();
-    if (touching && touching->size() < m)
-        touching->resize(m);
-    unsigned char* colliding = balls.colliding.data();
-    // Islands only in the staged solve; the one-stage solve makes every row.
     const bool islands = c.solver.stages > 1;
-    if (islands)
-        m_islands.reset(balls.size());
-    for (std::size_t p = 0; p < m; ++p) {
+    unsigned char* kinds = m_pairKind.data();
+    unsigned char* marks = m_pairMark.data();
+    run.starts.clear();
+    run.dormantBalls.clear();
+    run.dormantImpulse.clear();
+    WarmStarts warmStarts(*this);
+    if (begin < end)
+        warmStarts.skipTo(pairs[begin]);
+    for (std::size_t p = begin; p < end; ++p) {
         const Contact ct = pairs[p];
-        m_pairKind[p] = kNone;
+        kinds[p] = kNone;
         // Ball b of a pair is anywhere in the arrays: its lines are asked
         // for a few pairs ahead, so their misses overlap.
-        if (p + kPrefetchPairs < m) {
+        if (p + kPrefetchPairs < end) {
             const auto ahead = static_cast<std::size_t>(pairs[p + kPrefetchPairs].b);
             __builtin_prefetch(&x[2 * ahead]);
             __builtin_prefetch(&v[2 * ahead]);
@@ -294,12 +295,7 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         const double s = radius[a] + radius[b];
         const double dx = x[2 * b] - x[2 * a], dy = x[2 * b + 1] - x[2 * a + 1];
         const bool overlap = dx * dx + dy * dy < s * s; // circlesOverlap, to the bit
-        if (touching) {
-            (*touching)[overlapping] = ct;
-            overlapping += overlap;
-            colliding[a] |= static_cast<unsigned char>(overlap);
-            colliding[b] |= static_cast<unsigned char>(overlap);
-        }
+        marks[p] = overlap ? kOverlaps : 0;
         double wa = inverseMass[a], wb = inverseMass[b];
         if (!detail::resolvable(wa, wb))
             continue;
@@ -310,8 +306,8 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         if (m_asleep) {
             const bool sa = m_asleep[a], sb = m_asleep[b];
             if (sa && sb) { // two sleepers: no row, the impulse kept
-                m_spareDormantBalls.push_back(ct);
-                m_spareDormantImpulse.push_back(warm);
+                run.dormantBalls.push_back(ct);
+                run.dormantImpulse.push_back(warm);
                 continue;
             }
             sleeper = sa || sb;
@@ -320,8 +316,8 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         }
         const PairStart ps = startOf(v, ct, dx, dy, s, warm, wa, wb, c);
         if (!islands) {
-            m_pairKind[p] = kRow;
-            m_pairStart.push_back(ps);
+            kinds[p] = kRow;
+            run.starts.push_back(ps);
             continue;
         }
         // Its island needs the solver when the pair rests: it pushed in the
@@ -349,22 +345,111 @@ void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const
         const bool needy = c.sameForce ? anchored : rests;
         const bool wallA = nearAWall(x[2 * a], x[2 * a + 1], radius[a], v[2 * a], v[2 * a + 1], c);
         const bool wallB = nearAWall(x[2 * b], x[2 * b + 1], radius[b], v[2 * b], v[2 * b + 1], c);
-        if (meets || rests) {
-            m_pairKind[p] = meets ? kMeets : kRow;
-            m_pairStart.push_back(ps);
-            m_islands.join(ct.a, ct.b);
+        if (meets || rests) { // joins the islands; marks ball a's when its island needs the solver
+            kinds[p] = meets ? kMeets : kRow;
+            run.starts.push_back(ps);
             if (needy || wallA || wallB)
-                m_islands.markNeedy(ct.a);
+                marks[p] |= kNeedyA;
         } else {
-            m_pairKind[p] = kQuiet;
+            kinds[p] = kQuiet;
             if (wallA)
-                m_islands.markNeedy(ct.a);
+                marks[p] |= kNeedyA;
             if (wallB)
-                m_islands.markNeedy(ct.b);
+                marks[p] |= kNeedyB;
         }
+    }
+}
+
+// Stage 1. One row per pair, in contact order ((a, b), like last sub-step's
+// rows, so the impulses of pairs still in contact are found by a merge). The
+// line of impact and the gap come from the centres at the start of the
+// sub-step (startOf). A pair may close that gap and no more: its normal
+// speed may not drop below −allowed (0 for pairs that overlap). The
+// pairs that overlap now are copied to `touching` without a branch: each is
+// written, and the count moves on by the result of the test.
+//
+// In the staged solve, rows are made only for the islands that need the
+// resting solver (contact_islands.h): a first loop over the pairs finds
+// each pair's kind and start geometry (classifyPairs), the islands are
+// joined from the kinds in pair order, and a second loop makes the rows of
+// the islands that need them and lists the meeting pairs of the free
+// islands for their exact impulses (free_impacts.h).
+void RestingRows::buildPairRows(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                                  std::vector<Contact>* touching)
+{
+    const double* x = balls.position.data();
+    const double* v = balls.velocity.data();
+    const double* radius = balls.radius.data();
+    const double* inverseMass = balls.inverseMass.data();
+    const std::size_t m = pairs.size();
+    // The arrays only grow; the strip sort and its undoing swap some of them
+    // with their spares, so each is checked on its own.
+    if (m_spareRows.size() < m)
+        m_spareRows.resize(m);
+    if (m_spareBalls.size() < m)
+        m_spareBalls.resize(m);
+    for (auto* values : {&m_spareImpulse, &vn0})
+        if (values->size() < m)
+            values->resize(m);
+    for (auto* perPair : {&m_pairKind, &m_pairMark})
+        if (perPair->size() < m)
+            perPair->resize(m);
+    m_spareDormantBalls.clear();
+    m_spareDormantImpulse.clear();
+    freePairs.clear();
+    if (touching && touching->size() < m)
+        touching->resize(m);
+    // Islands only in the staged solve; the one-stage solve makes every row.
+    const bool islands = c.solver.stages > 1;
+    if (islands)
+        m_islands.reset(balls.size());
+    // The first loop in runs of pairs, on every core when there are many
+    // (each run writes only its own pairs' kinds and marks and its own
+    // lists); then, on this thread and in pair order, the touching pairs and
+    // the islands from the kinds and marks, and the runs' lists joined.
+    const std::size_t runs = m >= kParallelPairs ? kPairRuns : 1;
+    if (m_pairRuns.size() < runs)
+        m_pairRuns.resize(runs);
+    forEachRun(runs, [&](std::size_t run) {
+        classifyPairs(balls, c, pairs, m * run / runs, m * (run + 1) / runs, m_pairRuns[run]);
+    });
+    std::size_t overlapping = 0;
+    unsigned char* colliding = balls.colliding.data();
+    for (std::size_t p = 0; p < m; ++p) {
+        const Contact ct = pairs[p];
+        const unsigned char mark = m_pairMark[p];
+        if (touching) {
+            const auto overlap = static_cast<unsigned char>(mark & kOverlaps);
+            (*touching)[overlapping] = ct;
+            overlapping += overlap;
+            colliding[ct.a] |= overlap;
+            colliding[ct.b] |= overlap;
+        }
+        if (!islands)
+            continue;
+        const unsigned char kind = m_pairKind[p];
+        if (kind == kRow || kind == kMeets)
+            m_islands.join(ct.a, ct.b);
+        if (mark & kNeedyA)
+            m_islands.markNeedy(ct.a);
+        if (mark & kNeedyB)
+            m_islands.markNeedy(ct.b);
     }
     if (touching)
         touching->resize(overlapping);
+    if (runs == 1) {
+        m_pairStart.swap(m_pairRuns[0].starts);
+        m_spareDormantBalls.swap(m_pairRuns[0].dormantBalls);
+        m_spareDormantImpulse.swap(m_pairRuns[0].dormantImpulse);
+    } else {
+        m_pairStart.clear();
+        for (std::size_t run = 0; run < runs; ++run) {
+            const PairRun& r = m_pairRuns[run];
+            m_pairStart.insert(m_pairStart.end(), r.starts.begin(), r.starts.end());
+            m_spareDormantBalls.insert(m_spareDormantBalls.end(), r.dormantBalls.begin(), r.dormantBalls.end());
+            m_spareDormantImpulse.insert(m_spareDormantImpulse.end(), r.dormantImpulse.begin(), r.dormantImpulse.end());
+        }
+    }
     const unsigned char* kinds = m_pairKind.data();
     // A pair that does not meet, between an island that needs the solver
     // and one that does not, brings the other island into the solve: the

@@ -186,6 +186,7 @@ private:
     public:
         explicit WarmStarts(const RestingRows& rows) : m_rows(rows) {}
         double of(const Contact& ct);
+        void skipTo(const Contact& ct);
 
     private:
         const RestingRows& m_rows;
@@ -194,8 +195,25 @@ private:
     PairStart startOf(const double* v, const Contact& ct, double dx, double dy, double s, double warm, double wa,
                       double wb, const SubStepContext& c) const;
     static constexpr std::size_t kPrefetchPairs = 16; // how far ahead buildPairRows asks for ball b's lines
+    // Marks of a pair from the first loop: its balls overlap; ball a's, ball
+    // b's island needs the solver.
+    enum PairMark : unsigned char { kOverlaps = 1, kNeedyA = 2, kNeedyB = 4 };
+    // The first loop's lists for one run of pairs (classifyPairs).
+    struct PairRun {
+        std::vector<PairStart> starts;     // per pair that rests or meets, in pair order
+        std::vector<Contact> dormantBalls; // the pairs of two sleepers, in pair order
+        std::vector<double> dormantImpulse;
+    };
+    // From kParallelPairs pairs on, the first loop runs in kPairRuns runs on
+    // every core (a fixed cut, so the same work on any thread count).
+    static constexpr std::size_t kParallelPairs = 16384;
+    static constexpr std::size_t kPairRuns = 16;
+    void classifyPairs(const BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
+                       std::size_t begin, std::size_t end, PairRun& run);
     std::vector<unsigned char> m_pairKind; // per pair: its PairKind
+    std::vector<unsigned char> m_pairMark; // per pair: its PairMark bits
     std::vector<PairStart> m_pairStart;    // per pair that rests or meets, in pair order
+    std::vector<PairRun> m_pairRuns;
     ContactIslands m_islands;
     std::vector<int> m_attached; // balls whose islands a pair that does not meet brings into the solve
     std::vector<PairRow> m_spareRows;
