@@ -69,6 +69,7 @@ private slots:
     void everyDetectorSameBits();
     void otherSeedOtherBits();
     void everyThreadCountSameBits();
+    void stripListsKeepToTheirStrips();
 };
 
 void TestReproducible::sameSeedSameBits()
@@ -127,6 +128,54 @@ void TestReproducible::everyThreadCountSameBits()
     }
     QCOMPARE(pileHash[1], pileHash[0]);
     QCOMPARE(showcaseHash[1], showcaseHash[0]);
+}
+
+// RowStrips::runList (a bounce region's passes): a long list, enough for the
+// strips to go to both threads, reaches each listed row exactly once, always
+// from the strip the row belongs to, so the strips of a colour still share no
+// ball; a short list and an empty one too.
+void TestReproducible::stripListsKeepToTheirStrips()
+{
+    // 60,000 rows between neighbours on a line of balls 1 px apart: rows
+    // 1 px wide, cut into the most strips.
+    const int rows = 60000;
+    static_assert(rows / 3 >= static_cast<int>(RowStrips::kParallelRows)); // every third row is shared out
+    std::vector<double> x(rows + 1);
+    for (int i = 0; i <= rows; ++i)
+        x[static_cast<std::size_t>(i)] = static_cast<double>(i);
+    RowStrips strips;
+    strips.build(x.data(), static_cast<std::size_t>(rows), [](std::size_t k) { return k; },
+                 [](std::size_t k) { return k + 1; });
+    QVERIFY2(strips.stripCount() >= 60, qPrintable(QString::number(strips.stripCount())));
+    // Each strip's positions, from the run over every row.
+    std::vector<std::pair<int, int>> range(strips.stripCount(), {0, 0});
+    std::size_t covered = 0;
+    strips.run([&](int strip, int begin, int end) {
+        range[static_cast<std::size_t>(strip)] = {begin, end};
+        covered += static_cast<std::size_t>(end - begin); // one colour at a time: no two strips add at once
+    });
+    QCOMPARE(covered, static_cast<std::size_t>(rows));
+    for (const int every : {1, 3, 50000}) {
+        std::vector<int> list;
+        for (int k = every / 2; k < rows; k += every)
+            list.push_back(k);
+        std::vector<int> seen(list.size(), 0), wrongStrip(list.size(), 0);
+        const ThreadLimit limit(2);
+        strips.runList(list, [&](int strip, int begin, int end) {
+            const auto [first, last] = range[static_cast<std::size_t>(strip)];
+            for (int i = begin; i < end; ++i) { // each strip writes only its own entries
+                ++seen[static_cast<std::size_t>(i)];
+                const int k = list[static_cast<std::size_t>(i)];
+                wrongStrip[static_cast<std::size_t>(i)] = k < first || k >= last;
+            }
+        });
+        QVERIFY2(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }), qPrintable(QString::number(every)));
+        QVERIFY2(std::none_of(wrongStrip.begin(), wrongStrip.end(), [](int w) { return w != 0; }),
+                 qPrintable(QString::number(every)));
+    }
+    bool called = false;
+    strips.runList({}, [&](int, int, int) { called = true; });
+    QVERIFY(!called);
 }
 
 QTEST_GUILESS_MAIN(TestReproducible)

@@ -79,11 +79,19 @@ public:
     template <class F>
     void run(F&& f) const;
 
+    /// The same for some of the rows: `rows` lists row positions in
+    /// ascending order (a bounce region's rows), and f(strip, begin, end)
+    /// gets [begin, end) as indices into `rows`, those of its strip. The
+    /// strips of a colour run at once when the list is long enough.
+    template <class F>
+    void runList(const std::vector<int>& rows, F&& f) const;
+
 private:
     using StripJob = void (*)(void* context, int strip, int begin, int end);
     // The colours and the threads (row_strips.cpp, where oneTBB is included:
-    // its headers and Qt's `emit` macro do not mix).
-    void runStrips(StripJob job, void* context) const;
+    // its headers and Qt's `emit` macro do not mix). `list`: null for every
+    // row, or ascending row positions (perhaps none).
+    void runStrips(StripJob job, void* context, const std::vector<int>* list) const;
 
     std::vector<int> m_start; // per strip, its first entry in m_rows; one more entry at the end
     std::vector<int> m_rows;  // row indices, strip after strip
@@ -143,7 +151,15 @@ void RowStrips::run(F&& f) const
 {
     runStrips([](void* context, int strip, int begin, int end) {
         (*static_cast<std::remove_reference_t<F>*>(context))(strip, begin, end);
-    }, &f);
+    }, &f, nullptr);
+}
+
+template <class F>
+void RowStrips::runList(const std::vector<int>& rows, F&& f) const
+{
+    runStrips([](void* context, int strip, int begin, int end) {
+        (*static_cast<std::remove_reference_t<F>*>(context))(strip, begin, end);
+    }, &f, &rows);
 }
 
 } // namespace forcelab::sim

@@ -28,6 +28,7 @@ RestingCounts StagedSolve::solve(RestingRows& r, const SubStepContext& c)
     step.soft = makeSoft(2.0 * std::numbers::pi * settings.contactStiffness * step.inverseHs, settings.dampingRatio,
                          step.hs);
     m_counts = RestingCounts{};
+    m_rowGraph.clear(); // this solve's rows: built at its first region
     start(r, c);
     for (int stage = 0; stage < stages; ++stage)
         runStage(r, c, step, stage + 1 == stages);
@@ -242,10 +243,13 @@ void StagedSolve::finalPasses(RestingRows& r, const SubStepContext& c, const Sta
 // The bodies within `layers` rows of a bounce, breadth-first over the rows
 // (pair_graph.h; layer 0: the bodies of a bouncing pair or of a ball
 // bouncing off a wall), and the rows that touch a body of a layer below
-// `layers`, in row order. On one thread, so the region is the same whatever
-// the thread count. False (and the region unused) when it would hold half
-// the bodies or half the rows or more: then every row gets every pass, as
-// without a region.
+// `layers`, in row order. The search runs on one thread, over a graph of the
+// rows built at the solve's first region (the rows join the same bodies
+// until the solve ends); the rows are listed strip by strip, on every core
+// when there are many, and joined in strip order, which is row order. The
+// region is the same whatever the thread count. False (and the region
+// unused) when it would hold half the bodies or half the rows or more: then
+// every row gets every pass, as without a region.
 bool StagedSolve::markBounceRegion(const RestingRows& r, int layers, const std::vector<int>* seedRows)
 {
     layers = std::min(layers, static_cast<int>(kFarFromBounce) - 1);
@@ -277,17 +281,28 @@ bool StagedSolve::markBounceRegion(const RestingRows& r, int layers, const std::
     // A region of half the bodies or more has about half the rows or more:
     // the search stops there (in the landing of a pile, where bounces are
     // everywhere).
-    m_rowGraph.build(r.bodyCount, r.rowCount, [&r](std::size_t k) { return r.pairRows[k].a; },
-                     [&r](std::size_t k) { return r.pairRows[k].b; });
+    if (!m_rowGraph.built())
+        m_rowGraph.build(r.bodyCount, r.rowCount, [&r](std::size_t k) { return r.pairRows[k].a; },
+                         [&r](std::size_t k) { return r.pairRows[k].b; });
     if (!m_rowGraph.spread(m_bounceRegion, m_bodyLayer, layers, (bodies + 1) / 2))
         return false;
+    const std::size_t strips = r.strips.stripCount();
+    if (m_stripRegionRows.size() < strips)
+        m_stripRegionRows.resize(strips);
+    for (std::size_t s = 0; s < strips; ++s)
+        m_stripRegionRows[s].clear();
+    const unsigned char* layer = m_bodyLayer.data();
+    r.strips.run([&](int strip, int begin, int end) {
+        std::vector<int>& rows = m_stripRegionRows[static_cast<std::size_t>(strip)];
+        for (int k = begin; k < end; ++k) {
+            const PairRow& row = r.pairRows[static_cast<std::size_t>(k)];
+            if (std::min(layer[row.a], layer[row.b]) < layers)
+                rows.push_back(k);
+        }
+    });
     m_bounceRows.clear();
-    for (std::size_t k = 0; k < r.rowCount; ++k) {
-        const unsigned char la = m_bodyLayer[static_cast<std::size_t>(r.pairRows[k].a)];
-        const unsigned char lb = m_bodyLayer[static_cast<std::size_t>(r.pairRows[k].b)];
-        if (std::min(la, lb) < layers)
-            m_bounceRows.push_back(static_cast<int>(k));
-    }
+    for (std::size_t s = 0; s < strips; ++s)
+        m_bounceRows.insert(m_bounceRows.end(), m_stripRegionRows[s].begin(), m_stripRegionRows[s].end());
     return 2 * m_bounceRows.size() < r.rowCount;
 }
 
@@ -377,12 +392,13 @@ void StagedSolve::stagePass(RestingRows& r, const SubStepContext& c, const Stage
                           (stageVelocity[2 * b + 1] - stageVelocity[2 * a + 1]) * row.ny;
         }
     };
-    // A region's rows are few: on this thread, four quarters of its list
-    // interleaved like a strip's rows.
+    // A region's rows (in row order) go by strip too, each strip's share of
+    // the list in four interleaved quarters.
     if (onlyRows) {
         const int* list = onlyRows->data();
-        forEachInterleaved(0, static_cast<int>(onlyRows->size()),
-                           [&](std::size_t i) { solveRow(static_cast<std::size_t>(list[i])); });
+        r.strips.runList(*onlyRows, [&](int, int begin, int end) {
+            forEachInterleaved(begin, end, [&](std::size_t i) { solveRow(static_cast<std::size_t>(list[i])); });
+        });
     } else {
         r.strips.run([&](int, int begin, int end) { forEachInterleaved(begin, end, solveRow); });
     }

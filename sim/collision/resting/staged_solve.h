@@ -64,6 +64,7 @@ private:
     std::vector<double> m_bodyStart;       // per body: x, y at the start of the sub-step
     std::vector<unsigned char> m_bodyLayer; // per body: rows between it and a bounce (kFarFromBounce: more)
     std::vector<int> m_bounceRows;         // the rows near a bounce, in row order
+    std::vector<std::vector<int>> m_stripRegionRows; // per strip: its rows near a bounce (markBounceRegion)
     std::vector<int> m_stageHits;          // the rows a hard impact first pushed in this stage
     std::vector<int> m_bounceRegion;       // the bodies near a bounce, in the order reached
     PairGraph m_rowGraph;                  // the rows as a graph of bodies, for the region
