@@ -25,6 +25,12 @@ void forEachRun(std::size_t runs, F&& f)
         oneapi::tbb::parallel_for(std::size_t{0}, runs, f);
 }
 
+// (a, b) order, the order of the contacts and of last sub-step's pairs.
+bool before(const Contact& p, const Contact& q)
+{
+    return p.a < q.a || (p.a == q.a && p.b < q.b);
+}
+
 } // namespace
 
 void RestingRows::build(BallState& balls, const SubStepContext& c, const std::vector<Contact>& pairs,
@@ -208,7 +214,6 @@ static bool nearAWall(double px, double py, double r, double vx, double vy, cons
 
 inline double RestingRows::WarmStarts::of(const Contact& ct)
 {
-    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     const std::size_t oldCount = m_rows.rowCount, dormantCount = m_rows.m_dormantBalls.size();
     const Contact* oldBalls = m_rows.m_rowBalls.data();
     while (m_old < oldCount && before(oldBalls[m_old], ct))
@@ -225,7 +230,6 @@ inline double RestingRows::WarmStarts::of(const Contact& ct)
 // every pair before `ct` had been asked for (a run of pairs starts there).
 inline void RestingRows::WarmStarts::skipTo(const Contact& ct)
 {
-    auto before = [](const Contact& p, const Contact& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); };
     const Contact* oldBalls = m_rows.m_rowBalls.data();
     m_old = static_cast<std::size_t>(std::lower_bound(oldBalls, oldBalls + m_rows.rowCount, ct, before) - oldBalls);
     const std::vector<Contact>& dormant = m_rows.m_dormantBalls;
